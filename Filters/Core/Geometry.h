@@ -1,0 +1,48 @@
+// Basic geometry types shared by every part of the OSM core.
+#ifndef osm_Geometry_h
+#define osm_Geometry_h
+
+#include <array>
+#include <cmath>
+
+namespace osm
+{
+
+struct Point
+{
+  double x = 0.0;
+  double y = 0.0;
+};
+
+inline bool operator==(const Point& a, const Point& b)
+{
+  return a.x == b.x && a.y == b.y;
+}
+inline bool operator!=(const Point& a, const Point& b)
+{
+  return !(a == b);
+}
+inline bool operator<(const Point& a, const Point& b)
+{
+  return a.x < b.x || (a.x == b.x && a.y < b.y);
+}
+
+inline double dist2(const Point& a, const Point& b)
+{
+  const double dx = a.x - b.x, dy = a.y - b.y;
+  return dx * dx + dy * dy;
+}
+
+/// Angle at b in triangle (a, b, c), in radians, robust for tiny and near-flat angles.
+inline double angleAt(const Point& a, const Point& b, const Point& c)
+{
+  const double ux = a.x - b.x, uy = a.y - b.y, vx = c.x - b.x, vy = c.y - b.y;
+  return std::atan2(std::fabs(ux * vy - uy * vx), ux * vx + uy * vy);
+}
+
+using Segment = std::array<int, 2>;
+using Triangle = std::array<int, 3>;
+
+} // namespace osm
+
+#endif

@@ -1,0 +1,129 @@
+// The single entry point of Overlay Stitch Meshing: osm::mesh().
+#ifndef osm_Mesher_h
+#define osm_Mesher_h
+
+#include "Pslg.h"
+#include "Statistics.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace osm
+{
+
+/// What part of the plane the returned triangles cover.
+enum class Domain
+{
+  Auto,     ///< Enclosed where segments enclose any region, else Hull.
+  Enclosed, ///< Regions enclosed by segments (the exterior removed, like Triangle's -p).
+  Hull,     ///< The convex hull of the input points.
+  Box       ///< The whole padded bounding box of the overlay.
+};
+
+struct Options
+{
+  /// θ1: the smallest angle of the overlay mesh, in degrees (Γ = 1 / (2 sin θ1)).
+  /// 30° gives Γ = 1 and the bound 180° − θ2 ≈ 169.95°.
+  double minAngleDeg = 30.0;
+  /// If > 0, overlay triangles with a longer edge are refined further.
+  double maxEdgeLength = 0.0;
+  Domain domain = Domain::Auto;
+  /// Split crossing segments at their intersection (true) or refuse them (false).
+  bool resolveCrossings = true;
+  /// Stop with an error when more Steiner points than this would be needed (0: no cap).
+  std::size_t maxSteinerPoints = 0;
+  /// Keep the phase-1 overlay and the classified edges in the result (for inspection).
+  bool keepOverlay = true;
+  bool keepEdges = true;
+};
+
+/// Receives progress and may ask the mesher to stop.
+class Progress
+{
+public:
+  virtual ~Progress() = default;
+  /// fraction in [0, 1] over the whole run; phase names the current phase.
+  virtual void report(double fraction, const char* phase) = 0;
+  /// Polled regularly; returning true makes mesh() stop with the error "aborted".
+  virtual bool aborted() { return false; }
+};
+
+/// Where an output vertex comes from (values match the VertexOrigin array).
+enum class VertexOrigin : std::uint8_t
+{
+  Input = 0,   ///< an input vertex (or a crossing of two input segments, when split)
+  Overlay = 1, ///< a Steiner point of the phase-1 overlay
+  Stitch = 2,  ///< an intersection of an input segment with a kept overlay edge
+  Other = 3
+};
+
+/// Bit flags of an edge in Result::edges.
+enum EdgeFlag : std::uint8_t
+{
+  EdgeOverlay = 1,   ///< an edge of the phase-1 overlay
+  EdgeKept = 2,      ///< an overlay edge that survived stitching
+  EdgeDiscarded = 4, ///< an overlay edge crossed only at bad (small) angles
+  EdgeInput = 8,     ///< an input subsegment
+  EdgeCrossed = 16   ///< an overlay edge crossed by at least one segment
+};
+
+/// Category of an edge, derived from its flags (values of the EdgeClass array).
+enum class EdgeClass : std::uint8_t
+{
+  Uncrossed = 0, ///< overlay edge no segment crosses
+  Kept = 1,      ///< overlay edge crossed at a good angle: split and kept
+  Discarded = 2, ///< overlay edge crossed only at bad angles: removed
+  Input = 3      ///< input subsegment (possibly also an overlay edge)
+};
+
+struct Edge
+{
+  int a = -1;
+  int b = -1;
+  std::uint8_t flags = 0;
+};
+
+EdgeClass edgeClass(std::uint8_t flags);
+
+/// A triangle mesh: vertices and counter-clockwise triangles.
+struct TriMesh
+{
+  std::vector<Point> vertices;
+  std::vector<Triangle> triangles;
+};
+
+struct Result
+{
+  bool ok = false;
+  std::string error;                 ///< why ok is false (names the offending items)
+  std::vector<std::string> warnings; ///< repairs made and input that was ignored
+
+  TriMesh mesh;                           ///< the conforming triangulation
+  std::vector<VertexOrigin> vertexOrigin; ///< per mesh vertex
+  std::vector<int> regionId;              ///< per mesh triangle
+  /// For each input point (by its index in the Pslg), its vertex in mesh, or -1 if
+  /// it lies outside the returned domain (e.g. inside a hole).
+  std::vector<int> inputVertex;
+
+  /// Overlay edges (uncrossed, kept, discarded) and input subsegments; indices
+  /// refer to edgeVertices. Filled when Options::keepEdges.
+  std::vector<Point> edgeVertices;
+  std::vector<Edge> edges;
+
+  /// The phase-1 overlay triangulation. Filled when Options::keepOverlay.
+  TriMesh overlay;
+
+  Statistics stats;
+};
+
+/// Mesh a PSLG with Overlay Stitch Meshing. Never throws for bad input: returns
+/// ok = false with a message instead. Deterministic: same input, same output.
+Result mesh(const Pslg& input, const Options& options = {}, Progress* progress = nullptr);
+
+/// θ2 and the bound 180° − θ2 on every output angle, for an overlay angle θ1 (degrees).
+double predictedMaxAngleDeg(double minAngleDeg);
+
+} // namespace osm
+
+#endif

@@ -1,0 +1,42 @@
+// An independent checker of a mesher's output, used by the tests.
+// It re-derives everything from the input PSLG and the triangles, sharing no
+// code with the mesher but the exact predicates.
+#ifndef osm_Validate_h
+#define osm_Validate_h
+
+#include "Pslg.h"
+
+#include <string>
+#include <vector>
+
+namespace osm
+{
+
+struct ValidationOptions
+{
+  double maxAngleDeg = 170.0; ///< every angle must be at most this
+  /// Require the triangles to cover the whole region enclosed by their boundary
+  /// without overlap. Brute-force pairwise overlap check up to this many triangles.
+  std::size_t bruteForceOverlapLimit = 3000;
+  /// Also check conformity (every input segment is a chain of mesh edges) for
+  /// segments whose endpoints are both mesh vertices.
+  bool checkConformity = true;
+  /// Also check that every input point is a mesh vertex. Off when holes may remove some.
+  bool requireAllInputVertices = true;
+};
+
+struct ValidationReport
+{
+  bool ok = true;
+  std::vector<std::string> errors; ///< at most a few dozen, each naming the element
+  double minAngleDeg = 0.0;
+  double maxAngleDeg = 0.0;
+  std::size_t triangles = 0;
+};
+
+ValidationReport validate(const Pslg& input, const std::vector<Point>& vertices,
+  const std::vector<Triangle>& triangles, const ValidationOptions& options = {});
+
+} // namespace osm
+
+#endif
