@@ -1,18 +1,33 @@
+// osm::mesh: input cleaning, the three phases of Overlay Stitch Meshing, and
+// the choice of domain, with statistics and progress.
 #include "Mesher.h"
+
+#include "Clean.h"
+#include "Complete.h"
+#include "Domain.h"
+#include "Overlay.h"
+#include "Predicates.h"
+#include "RunContext.h"
+#include "Stitch.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <new>
+#include <string>
 
 namespace osm
 {
-// Placeholder until the algorithm lands: says so honestly, never pretends to mesh.
-Result mesh(const Pslg&, const Options&, Progress*)
+
+double predictedMaxAngleDeg(double minAngleDeg)
 {
-  Result r;
-  r.error = "Overlay Stitch Meshing is not implemented yet in this build";
-  return r;
+  const double pi = std::acos(-1.0);
+  const double theta1 = minAngleDeg * pi / 180.0;
+  const double gamma = gammaForMinAngle(minAngleDeg);
+  const double theta2 = std::asin(1.0 / (2.0 * gamma * (2.0 * gamma + std::cos(theta1))));
+  return 180.0 - theta2 * 180.0 / pi;
 }
-double predictedMaxAngleDeg(double)
-{
-  return 180.0;
-}
+
 EdgeClass edgeClass(std::uint8_t flags)
 {
   if (flags & EdgeInput)
@@ -23,4 +38,356 @@ EdgeClass edgeClass(std::uint8_t flags)
     return EdgeClass::Kept;
   return EdgeClass::Uncrossed;
 }
+
+namespace
+{
+
+using Clock = std::chrono::steady_clock;
+
+double since(Clock::time_point t0)
+{
+  return std::chrono::duration<double>(Clock::now() - t0).count();
 }
+
+/// The working PSLG of one meshing round, in scaled coordinates.
+struct Work
+{
+  std::vector<Point> points;
+  std::vector<char> isCrossingPoint;
+  std::vector<Segment> segments;
+  std::vector<int> segmentOrigin; ///< the user's segment index, -1 for hull edges
+  std::vector<Point> holes;
+};
+
+/// Power-of-two scale bringing the largest coordinate into [0.5, 1): exact, so
+/// input vertices come back bit for bit, and the predicates cannot overflow.
+std::string normalise(Work& w, const Pslg& input, const std::vector<int>& pointOf, int& exponent)
+{
+  double maxAbs = 0;
+  for (const Point& p : w.points)
+    maxAbs = std::max({ maxAbs, std::fabs(p.x), std::fabs(p.y) });
+  for (const Point& p : w.holes)
+    maxAbs = std::max({ maxAbs, std::fabs(p.x), std::fabs(p.y) });
+  exponent = 0;
+  if (maxAbs == 0)
+    return {};
+  std::frexp(maxAbs, &exponent);
+  auto scale = [&](Point& p) {
+    p.x = std::ldexp(p.x, -exponent);
+    p.y = std::ldexp(p.y, -exponent);
+  };
+  for (std::size_t i = 0; i < w.points.size(); ++i)
+  {
+    const Point before = w.points[i];
+    scale(w.points[i]);
+    const Point& p = w.points[i];
+    if ((before.x != 0 && std::fabs(p.x) < 1e-280) || (before.y != 0 && std::fabs(p.y) < 1e-280))
+    {
+      const auto user = std::find(pointOf.begin(), pointOf.end(), static_cast<int>(i));
+      return "point " + std::to_string(user - pointOf.begin()) + " at " +
+        formatPoint(input.points[user - pointOf.begin()]) +
+        " is too small next to the largest coordinate (" + std::to_string(maxAbs) +
+        ") for exact arithmetic in double precision";
+    }
+  }
+  for (Point& p : w.holes)
+    scale(p);
+  return {};
+}
+
+/// Split every segment at the points where others cross it.
+void splitCrossings(Work& w, const std::vector<SegmentCrossing>& crossings, Statistics& stats)
+{
+  std::vector<std::vector<std::pair<double, int>>> cuts(w.segments.size());
+  for (const SegmentCrossing& c : crossings)
+  {
+    const int v = static_cast<int>(w.points.size());
+    w.points.push_back(c.p);
+    w.isCrossingPoint.push_back(1);
+    for (int s : { c.a, c.b })
+    {
+      const Point& a = w.points[w.segments[s][0]];
+      const Point& b = w.points[w.segments[s][1]];
+      const double t = (c.p.x - a.x) * (b.x - a.x) + (c.p.y - a.y) * (b.y - a.y);
+      cuts[s].push_back({ t, v });
+    }
+    ++stats.crossingsSplit;
+  }
+  const std::size_t n = w.segments.size();
+  for (std::size_t s = 0; s < n; ++s)
+  {
+    if (cuts[s].empty())
+      continue;
+    std::sort(cuts[s].begin(), cuts[s].end());
+    int prev = w.segments[s][0];
+    const int last = w.segments[s][1];
+    for (std::size_t k = 0; k < cuts[s].size(); ++k)
+    {
+      const int v = cuts[s][k].second;
+      if (k == 0)
+        w.segments[s][1] = v;
+      else
+      {
+        w.segments.push_back({ prev, v });
+        w.segmentOrigin.push_back(w.segmentOrigin[s]);
+      }
+      prev = v;
+    }
+    w.segments.push_back({ prev, last });
+    w.segmentOrigin.push_back(w.segmentOrigin[s]);
+  }
+}
+
+/// Crossing points can coincide after rounding: merge them, drop what degenerates.
+void mergeEqualPoints(Work& w)
+{
+  Pslg p{ w.points, w.segments, {} };
+  CleanPslg c;
+  Statistics ignored;
+  std::vector<std::string> ignoredWarnings;
+  cleanPslg(p, c, ignored, ignoredWarnings);
+  std::vector<char> crossing(c.points.size(), 0);
+  for (std::size_t i = 0; i < w.points.size(); ++i)
+    crossing[c.pointOf[i]] |= w.isCrossingPoint[i];
+  std::vector<int> origin;
+  for (int o : c.segmentOrigin)
+    origin.push_back(w.segmentOrigin[o]);
+  w.points = std::move(c.points);
+  w.isCrossingPoint = std::move(crossing);
+  w.segments = std::move(c.segments);
+  w.segmentOrigin = std::move(origin);
+}
+
+std::string crossingError(const Work& w, const std::vector<SegmentCrossing>& crossings, int exponent)
+{
+  const SegmentCrossing& c = crossings.front();
+  const Point p{ std::ldexp(c.p.x, exponent), std::ldexp(c.p.y, exponent) };
+  std::string msg = "input segments " + std::to_string(w.segmentOrigin[c.a]) + " and " +
+    std::to_string(w.segmentOrigin[c.b]) + " cross near " + formatPoint(p);
+  if (crossings.size() > 1)
+    msg += " (and " + std::to_string(crossings.size() - 1) + " more crossing pair(s))";
+  return msg + "; enable resolving intersections to split them";
+}
+
+class Mesher
+{
+public:
+  Mesher(const Pslg& input, const Options& options, Progress* progress)
+    : input(input)
+    , options(options)
+    , run(progress)
+  {
+  }
+  Result execute();
+
+private:
+  void meshRounds(Work& w, Domain domain);
+  void buildOutput(const Work& w, const PlanarGraph& g, const Completion& c, const Carving& carve,
+    const Overlay& overlay, std::vector<Edge>& edges);
+
+  const Pslg& input;
+  const Options& options;
+  RunContext run;
+  Result res;
+  CleanPslg clean;
+  int exponent = 0;
+};
+
+Result Mesher::execute()
+{
+  const auto t0 = Clock::now();
+  Statistics& st = res.stats;
+  st.inputPoints = input.points.size();
+  st.inputSegments = input.segments.size();
+  st.theta1Deg = options.minAngleDeg;
+  if (!(options.minAngleDeg >= 1.0 && options.minAngleDeg <= 35.0))
+    throw Stop{ "the overlay minimum angle must be between 1 and 35 degrees, not " +
+      std::to_string(options.minAngleDeg) };
+  if (!(options.maxEdgeLength >= 0.0) || !std::isfinite(options.maxEdgeLength))
+    throw Stop{ "the maximum edge length must be finite and at least 0" };
+  st.gamma = gammaForMinAngle(options.minAngleDeg);
+  st.predictedMaxAngleDeg = predictedMaxAngleDeg(options.minAngleDeg);
+
+  run.phase("clean", 0.0, 0.02);
+  if (std::string e = cleanPslg(input, clean, st, res.warnings); !e.empty())
+    throw Stop{ e };
+  Work w;
+  w.points = clean.points;
+  w.isCrossingPoint.assign(w.points.size(), 0);
+  w.segments = clean.segments;
+  w.segmentOrigin = clean.segmentOrigin;
+  w.holes = input.holes;
+  if (std::string e = normalise(w, input, clean.pointOf, exponent); !e.empty())
+    throw Stop{ e };
+  st.secondsClean = since(t0);
+  if (w.points.empty())
+  {
+    res.warnings.push_back("the input has no points: the mesh is empty");
+    res.ok = true;
+    return std::move(res);
+  }
+  Domain domain = options.domain;
+  if (domain == Domain::Auto)
+    domain = segmentsEncloseRegion(w.points.size(), w.segments) ? Domain::Enclosed : Domain::Hull;
+  meshRounds(w, domain);
+  st.secondsTotal = since(t0);
+  res.ok = true;
+  return std::move(res);
+}
+
+void Mesher::meshRounds(Work& w, Domain domain)
+{
+  Statistics& st = res.stats;
+  const double sinTheta1 = std::sin(options.minAngleDeg * std::acos(-1.0) / 180.0);
+  // Crossing points are rounded, so splitting may expose new tiny crossings:
+  // repeat a few times, then give up with a clear error.
+  for (int round = 0;; ++round)
+  {
+    std::vector<Segment> segments = w.segments;
+    if (domain == Domain::Hull)
+    {
+      const std::vector<int> hull = convexHull(w.points);
+      for (std::size_t i = 0; hull.size() >= 2 && i < hull.size(); ++i)
+        segments.push_back({ hull[i], hull[(i + 1) % hull.size()] });
+    }
+    auto t = Clock::now();
+    run.phase("overlay", 0.02, 0.6);
+    OverlayOptions oo;
+    oo.gamma = st.gamma;
+    oo.maxEdgeLength = std::ldexp(options.maxEdgeLength, -exponent);
+    oo.maxSteinerPoints = options.maxSteinerPoints;
+    Overlay overlay = buildOverlay(w.points, oo, run);
+    st.secondsOverlay += since(t);
+
+    t = Clock::now();
+    run.phase("stitch", 0.6, 0.75);
+    const OverlayEdges ov = compactOverlay(overlay.mesh);
+    for (Segment& s : segments)
+      s = { overlay.inputVertex[s[0]], overlay.inputVertex[s[1]] };
+    Walk walk = walkSegments(ov, overlay, segments, sinTheta1, run);
+    st.secondsStitch += since(t);
+    if (!walk.segmentCrossings.empty())
+    {
+      if (!options.resolveCrossings)
+        throw Stop{ crossingError(w, walk.segmentCrossings, exponent) };
+      if (round >= 4)
+        throw Stop{ "could not resolve all crossings after 5 rounds: " +
+          crossingError(w, walk.segmentCrossings, exponent) };
+      splitCrossings(w, walk.segmentCrossings, st);
+      mergeEqualPoints(w);
+      continue;
+    }
+    st.segmentsSplitAtVertices = walk.splitsAtInputVertices + walk.duplicatePieces;
+    st.overlayVertices = overlay.mesh.points.size();
+    st.overlaySteinerPoints = overlay.steinerPoints + 4;
+    st.overlayTriangles = ov.tris.size();
+
+    t = Clock::now();
+    std::vector<Edge> edges;
+    const PlanarGraph g = stitch(ov, overlay, walk, options.keepEdges ? &edges : nullptr, st);
+    st.secondsStitch += since(t);
+
+    t = Clock::now();
+    run.phase("complete", 0.75, 0.9);
+    const Completion c = complete(g, st, run);
+    st.secondsComplete = since(t);
+
+    t = Clock::now();
+    run.phase("domain", 0.9, 1.0);
+    const Carving carve =
+      carveDomain(g.points, c.triangles, c.constrainedEdges, domain != Domain::Box, w.holes);
+    st.secondsDomain = since(t);
+    if (options.keepOverlay)
+    {
+      res.overlay.vertices = overlay.mesh.points;
+      res.overlay.triangles = ov.tris;
+    }
+    buildOutput(w, g, c, carve, overlay, edges);
+    return;
+  }
+}
+
+void Mesher::buildOutput(const Work& w, const PlanarGraph& g, const Completion& c,
+  const Carving& carve, const Overlay& overlay, std::vector<Edge>& edges)
+{
+  Statistics& st = res.stats;
+  auto unscale = [&](Point p) { return Point{ std::ldexp(p.x, exponent), std::ldexp(p.y, exponent) }; };
+  std::vector<int> newIndex(g.points.size(), -1);
+  for (std::size_t t = 0; t < c.triangles.size(); ++t)
+  {
+    if (carve.regionId[t] < 0)
+      continue;
+    Triangle tri = c.triangles[t];
+    for (int& v : tri)
+    {
+      if (newIndex[v] < 0)
+      {
+        newIndex[v] = static_cast<int>(res.mesh.vertices.size());
+        res.mesh.vertices.push_back(unscale(g.points[v]));
+        res.vertexOrigin.push_back(g.origin[v]);
+      }
+      v = newIndex[v];
+    }
+    res.mesh.triangles.push_back(tri);
+    res.regionId.push_back(carve.regionId[t]);
+  }
+  // Points created by splitting crossing segments are neither input nor Steiner.
+  for (std::size_t i = 0; i < w.points.size(); ++i)
+  {
+    const int v = newIndex[overlay.inputVertex[i]];
+    if (w.isCrossingPoint[i] && v >= 0)
+      res.vertexOrigin[v] = VertexOrigin::Other;
+  }
+  res.inputVertex.assign(input.points.size(), -1);
+  for (std::size_t i = 0; i < input.points.size(); ++i)
+    res.inputVertex[i] = newIndex[overlay.inputVertex[clean.pointOf[i]]];
+  st.regions = carve.regions;
+  st.outputVertices = res.mesh.vertices.size();
+  st.outputTriangles = res.mesh.triangles.size();
+  st.minAngleDeg = res.mesh.triangles.empty() ? 0.0 : 180.0;
+  st.maxAngleDeg = 0.0;
+  const double deg = 180.0 / std::acos(-1.0);
+  for (const Triangle& t : res.mesh.triangles)
+    for (int i = 0; i < 3; ++i)
+    {
+      const double a = deg *
+        angleAt(res.mesh.vertices[t[(i + 1) % 3]], res.mesh.vertices[t[i]],
+          res.mesh.vertices[t[(i + 2) % 3]]);
+      st.minAngleDeg = std::min(st.minAngleDeg, a);
+      st.maxAngleDeg = std::max(st.maxAngleDeg, a);
+    }
+  if (options.keepEdges)
+  {
+    res.edgeVertices.reserve(g.points.size());
+    for (const Point& p : g.points)
+      res.edgeVertices.push_back(unscale(p));
+    res.edges = std::move(edges);
+  }
+  for (Point& p : res.overlay.vertices)
+    p = unscale(p);
+}
+
+} // namespace
+
+Result mesh(const Pslg& input, const Options& options, Progress* progress)
+{
+  Mesher mesher(input, options, progress);
+  try
+  {
+    return mesher.execute();
+  }
+  catch (const Stop& stop)
+  {
+    Result r;
+    r.error = stop.reason;
+    return r;
+  }
+  catch (const std::bad_alloc&)
+  {
+    Result r;
+    r.error = "out of memory: the input needs a larger machine, or a Steiner point cap";
+    return r;
+  }
+}
+
+} // namespace osm

@@ -1,0 +1,34 @@
+// Input cleaning: the combinatorial repairs done before meshing.
+// (Geometric repairs — vertices on segments, overlaps, crossings — are found
+// while stitching, by walking the overlay: see Stitch.h.)
+#ifndef osm_Clean_h
+#define osm_Clean_h
+
+#include "Pslg.h"
+#include "Statistics.h"
+
+#include <string>
+#include <vector>
+
+namespace osm
+{
+
+struct CleanPslg
+{
+  std::vector<Point> points;      ///< distinct, finite
+  std::vector<Segment> segments;  ///< distinct, no zero length, (lo, hi) index order
+  std::vector<int> segmentOrigin; ///< per segment: the first input segment it came from
+  std::vector<int> pointOf;       ///< per input point: its index in points
+};
+
+/// Check and clean the input. Returns an empty string, or an error naming the
+/// offending item (a non-finite coordinate, an index out of range).
+std::string cleanPslg(
+  const Pslg& in, CleanPslg& out, Statistics& stats, std::vector<std::string>& warnings);
+
+/// "(x, y)" with enough digits to tell nearby points apart.
+std::string formatPoint(const Point& p);
+
+} // namespace osm
+
+#endif

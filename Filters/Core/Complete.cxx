@@ -1,0 +1,242 @@
+#include "Complete.h"
+
+#include "Predicates.h"
+
+#include <algorithm>
+#include <limits>
+#include <string>
+
+namespace osm
+{
+
+double maxAngle(const Point& a, const Point& b, const Point& c)
+{
+  return std::max({ angleAt(c, a, b), angleAt(a, b, c), angleAt(b, c, a) });
+}
+
+namespace
+{
+
+/// Does the open segment from polygon vertex i to j lie inside the polygon?
+bool isDiagonal(const std::vector<Point>& P, int i, int j)
+{
+  const int k = static_cast<int>(P.size());
+  // Inside the interior cone at each end (a straight angle is a half-plane).
+  for (int end = 0; end < 2; ++end)
+  {
+    const int a = end == 0 ? i : j, b = end == 0 ? j : i;
+    const Point& prev = P[(a + k - 1) % k];
+    const Point& next = P[(a + 1) % k];
+    const int turn = orientSign(prev, P[a], next);
+    const int toNext = orientSign(P[a], next, P[b]);
+    const int fromPrev = orientSign(prev, P[a], P[b]);
+    const bool inside = turn > 0 ? (toNext > 0 && fromPrev > 0)
+      : turn < 0                 ? (toNext > 0 || fromPrev > 0)
+                                 : toNext > 0;
+    if (!inside)
+      return false;
+  }
+  // No vertex on it and no boundary edge across it.
+  for (int m = 0; m < k; ++m)
+  {
+    if (m == i || m == j)
+      continue;
+    const int o = orientSign(P[i], P[j], P[m]);
+    if (o == 0 && std::min(P[i].x, P[j].x) <= P[m].x && P[m].x <= std::max(P[i].x, P[j].x) &&
+      std::min(P[i].y, P[j].y) <= P[m].y && P[m].y <= std::max(P[i].y, P[j].y))
+      return false;
+    const int n = (m + 1) % k;
+    if (n == i || n == j)
+      continue;
+    const int o2 = orientSign(P[i], P[j], P[n]);
+    if (o != 0 && o2 != 0 && o != o2 &&
+      orientSign(P[m], P[n], P[i]) * orientSign(P[m], P[n], P[j]) < 0)
+      return false;
+  }
+  return true;
+}
+
+} // namespace
+
+bool triangulateMinMaxAngle(const std::vector<Point>& P, const std::vector<int>& ids,
+  std::vector<Triangle>& out)
+{
+  const int k = static_cast<int>(P.size());
+  const double inf = std::numeric_limits<double>::infinity();
+  // ok[i][j]: the chord i-j is a polygon edge or an interior diagonal.
+  std::vector<char> ok(k * k, 0);
+  for (int i = 0; i < k; ++i)
+    for (int j = i + 1; j < k; ++j)
+      ok[i * k + j] = (j == i + 1 || (i == 0 && j == k - 1)) ? 1 : isDiagonal(P, i, j);
+  // cost[i][j]: best largest angle triangulating the chain i..j closed by chord i-j.
+  std::vector<double> cost(k * k, inf);
+  std::vector<int> apex(k * k, -1);
+  for (int i = 0; i + 1 < k; ++i)
+    cost[i * k + i + 1] = 0;
+  for (int len = 2; len < k; ++len)
+  {
+    for (int i = 0; i + len < k; ++i)
+    {
+      const int j = i + len;
+      if (!ok[i * k + j])
+        continue;
+      for (int m = i + 1; m < j; ++m)
+      {
+        const double sub = std::max(cost[i * k + m], cost[m * k + j]);
+        if (sub >= cost[i * k + j] || orientSign(P[i], P[m], P[j]) <= 0)
+          continue;
+        const double c = std::max(sub, maxAngle(P[i], P[m], P[j]));
+        if (c < cost[i * k + j])
+        {
+          cost[i * k + j] = c;
+          apex[i * k + j] = m;
+        }
+      }
+    }
+  }
+  if (cost[k - 1] == inf)
+    return false;
+  std::vector<std::pair<int, int>> stack{ { 0, k - 1 } };
+  while (!stack.empty())
+  {
+    const auto [i, j] = stack.back();
+    stack.pop_back();
+    if (j - i < 2)
+      continue;
+    const int m = apex[i * k + j];
+    out.push_back({ ids[i], ids[m], ids[j] });
+    stack.push_back({ i, m });
+    stack.push_back({ m, j });
+  }
+  return true;
+}
+
+namespace
+{
+
+/// Neighbours of each vertex sorted counter-clockwise, in CSR form.
+struct Rotation
+{
+  std::vector<int> start;
+  std::vector<int> to;
+  std::vector<int> twin; ///< half-edge v->u for half-edge u->v
+};
+
+bool upperHalf(const Point& c, const Point& p)
+{
+  return p.y > c.y || (p.y == c.y && p.x > c.x);
+}
+
+Rotation buildRotation(const PlanarGraph& g)
+{
+  const int n = static_cast<int>(g.points.size());
+  Rotation r;
+  r.start.assign(n + 1, 0);
+  for (const Segment& e : g.edges)
+  {
+    ++r.start[e[0] + 1];
+    ++r.start[e[1] + 1];
+  }
+  for (int v = 0; v < n; ++v)
+    r.start[v + 1] += r.start[v];
+  r.to.resize(r.start[n]);
+  std::vector<int> fill(r.start.begin(), r.start.end() - 1);
+  for (const Segment& e : g.edges)
+  {
+    r.to[fill[e[0]]++] = e[1];
+    r.to[fill[e[1]]++] = e[0];
+  }
+  for (int v = 0; v < n; ++v)
+  {
+    const Point& c = g.points[v];
+    std::sort(r.to.begin() + r.start[v], r.to.begin() + r.start[v + 1], [&](int a, int b) {
+      const bool ua = upperHalf(c, g.points[a]), ub = upperHalf(c, g.points[b]);
+      if (ua != ub)
+        return ua;
+      return orientSign(c, g.points[a], g.points[b]) > 0;
+    });
+  }
+  // Pair half-edges by their endpoints.
+  std::vector<std::array<int, 3>> keys(r.to.size());
+  for (int v = 0; v < n; ++v)
+    for (int h = r.start[v]; h < r.start[v + 1]; ++h)
+      keys[h] = { std::min(v, r.to[h]), std::max(v, r.to[h]), h };
+  std::sort(keys.begin(), keys.end());
+  r.twin.assign(r.to.size(), -1);
+  for (std::size_t k = 0; k + 1 < keys.size(); k += 2)
+  {
+    r.twin[keys[k][2]] = keys[k + 1][2];
+    r.twin[keys[k + 1][2]] = keys[k][2];
+  }
+  return r;
+}
+
+/// Vertex at the tail of half-edge h.
+int tailOf(const Rotation& r, int h)
+{
+  return r.to[r.twin[h]];
+}
+
+} // namespace
+
+Completion complete(const PlanarGraph& g, Statistics& stats, RunContext& run)
+{
+  Completion out;
+  const Rotation r = buildRotation(g);
+  const int nh = static_cast<int>(r.to.size());
+  for (std::size_t e = 0; e < g.edges.size(); ++e)
+    if (g.constrained[e])
+      out.constrainedEdges.push_back(
+        { std::min(g.edges[e][0], g.edges[e][1]), std::max(g.edges[e][0], g.edges[e][1]) });
+  // Trace every face: after u->v, turn to the edge clockwise-next from v->u.
+  std::vector<char> seen(nh, 0);
+  std::vector<std::vector<int>> faces;
+  std::vector<double> areas;
+  for (int h0 = 0; h0 < nh; ++h0)
+  {
+    if (seen[h0])
+      continue;
+    std::vector<int> face;
+    double area = 0;
+    for (int h = h0; !seen[h];)
+    {
+      seen[h] = 1;
+      const int u = tailOf(r, h), v = r.to[h];
+      face.push_back(u);
+      area += g.points[u].x * g.points[v].y - g.points[v].x * g.points[u].y;
+      const int back = r.twin[h]; // v->u, inside v's rotation
+      h = back == r.start[v] ? r.start[v + 1] - 1 : back - 1;
+    }
+    faces.push_back(std::move(face));
+    areas.push_back(area);
+    run.tick(double(h0) / double(nh), 65536);
+  }
+  // The outer face runs clockwise around the whole box: the most negative area.
+  const std::size_t outer = std::min_element(areas.begin(), areas.end()) - areas.begin();
+  std::vector<Point> polygon;
+  for (std::size_t f = 0; f < faces.size(); ++f)
+  {
+    if (f == outer)
+      continue;
+    const std::vector<int>& face = faces[f];
+    stats.largestFace = std::max(stats.largestFace, face.size());
+    if (face.size() == 3)
+    {
+      if (orientSign(g.points[face[0]], g.points[face[1]], g.points[face[2]]) <= 0)
+        throw Stop{ "internal error: a stitched face is not positively oriented" };
+      out.triangles.push_back({ face[0], face[1], face[2] });
+      continue;
+    }
+    ++stats.facesCompleted;
+    polygon.clear();
+    for (int v : face)
+      polygon.push_back(g.points[v]);
+    if (!triangulateMinMaxAngle(polygon, face, out.triangles))
+      throw Stop{ "internal error: a face with " + std::to_string(face.size()) +
+        " sides near " + std::to_string(polygon[0].x) + ", " + std::to_string(polygon[0].y) +
+        " could not be triangulated" };
+  }
+  return out;
+}
+
+} // namespace osm

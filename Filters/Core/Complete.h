@@ -1,0 +1,36 @@
+// Phase 3: completing the stitched planar graph into a triangulation.
+// Every bounded face is triangulated to minimise its largest angle, by
+// dynamic programming over its diagonals (exact tests decide which diagonals
+// lie inside, so no zero-area or inverted triangle is ever produced).
+#ifndef osm_Complete_h
+#define osm_Complete_h
+
+#include "RunContext.h"
+#include "Statistics.h"
+#include "Stitch.h"
+
+#include <vector>
+
+namespace osm
+{
+
+struct Completion
+{
+  std::vector<Triangle> triangles;
+  /// Edges of the planar graph that are input subsegments, as vertex pairs (lo, hi).
+  std::vector<Segment> constrainedEdges;
+};
+
+Completion complete(const PlanarGraph& graph, Statistics& stats, RunContext& run);
+
+/// Min-max-angle triangulation of a simple polygon given counter-clockwise.
+/// Appends triangles (indices into ids) and returns false if none exists.
+bool triangulateMinMaxAngle(const std::vector<Point>& polygon, const std::vector<int>& ids,
+  std::vector<Triangle>& out);
+
+/// Largest angle of a triangle, in radians.
+double maxAngle(const Point& a, const Point& b, const Point& c);
+
+} // namespace osm
+
+#endif

@@ -1,0 +1,166 @@
+#include "Domain.h"
+
+#include "Predicates.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace osm
+{
+
+namespace
+{
+
+/// Neighbour across each triangle edge (edge i opposite vertex i), -1 on the boundary.
+std::vector<int> adjacency(const std::vector<Triangle>& tris, std::vector<char>& edgeConstrained,
+  std::vector<Segment>& constrained)
+{
+  std::vector<std::array<int, 3>> keys;
+  keys.reserve(tris.size() * 3);
+  for (int t = 0; t < static_cast<int>(tris.size()); ++t)
+    for (int i = 0; i < 3; ++i)
+    {
+      const int a = tris[t][(i + 1) % 3], b = tris[t][(i + 2) % 3];
+      keys.push_back({ std::min(a, b), std::max(a, b), 3 * t + i });
+    }
+  std::sort(keys.begin(), keys.end());
+  std::sort(constrained.begin(), constrained.end());
+  std::vector<int> nbr(keys.size(), -1);
+  edgeConstrained.assign(keys.size(), 0);
+  for (std::size_t k = 0; k < keys.size(); ++k)
+  {
+    const Segment e{ keys[k][0], keys[k][1] };
+    edgeConstrained[keys[k][2]] = std::binary_search(constrained.begin(), constrained.end(), e);
+    if (k + 1 < keys.size() && keys[k + 1][0] == e[0] && keys[k + 1][1] == e[1])
+    {
+      nbr[keys[k][2]] = keys[k + 1][2] / 3;
+      nbr[keys[k + 1][2]] = keys[k][2] / 3;
+    }
+  }
+  return nbr;
+}
+
+/// Give label to every unlabelled triangle reachable from the seeds without
+/// crossing a constrained edge.
+void flood(std::vector<int> stack, int label, const std::vector<int>& nbr,
+  const std::vector<char>& edgeConstrained, std::vector<int>& labels)
+{
+  for (int t : stack)
+    labels[t] = label;
+  while (!stack.empty())
+  {
+    const int t = stack.back();
+    stack.pop_back();
+    for (int i = 0; i < 3; ++i)
+    {
+      const int u = nbr[3 * t + i];
+      if (u >= 0 && !edgeConstrained[3 * t + i] && labels[u] == -1)
+      {
+        labels[u] = label;
+        stack.push_back(u);
+      }
+    }
+  }
+}
+
+/// The unlabelled triangle whose closure contains q, or -1.
+int findTriangle(const std::vector<Point>& P, const std::vector<Triangle>& tris,
+  const std::vector<int>& labels, const Point& q)
+{
+  // Holes are few: a linear scan with a cheap bounding-box reject is enough.
+  for (int t = 0; t < static_cast<int>(tris.size()); ++t)
+  {
+    if (labels[t] != -1)
+      continue;
+    const Point &a = P[tris[t][0]], &b = P[tris[t][1]], &c = P[tris[t][2]];
+    if (q.x < std::min({ a.x, b.x, c.x }) || q.x > std::max({ a.x, b.x, c.x }) ||
+      q.y < std::min({ a.y, b.y, c.y }) || q.y > std::max({ a.y, b.y, c.y }))
+      continue;
+    if (orient2d(a, b, q) >= 0 && orient2d(b, c, q) >= 0 && orient2d(c, a, q) >= 0)
+      return t;
+  }
+  return -1;
+}
+
+} // namespace
+
+Carving carveDomain(const std::vector<Point>& P, const std::vector<Triangle>& tris,
+  std::vector<Segment> constrained, bool removeExterior, const std::vector<Point>& holes)
+{
+  std::vector<char> edgeConstrained;
+  const std::vector<int> nbr = adjacency(tris, edgeConstrained, constrained);
+  const int removed = -2;
+  std::vector<int> labels(tris.size(), -1);
+  if (removeExterior)
+  {
+    std::vector<int> seeds;
+    for (int t = 0; t < static_cast<int>(tris.size()); ++t)
+      if (nbr[3 * t] < 0 || nbr[3 * t + 1] < 0 || nbr[3 * t + 2] < 0)
+        seeds.push_back(t);
+    flood(seeds, removed, nbr, edgeConstrained, labels);
+  }
+  for (const Point& h : holes)
+  {
+    const int t = findTriangle(P, tris, labels, h);
+    if (t >= 0)
+      flood({ t }, removed, nbr, edgeConstrained, labels);
+  }
+  Carving out;
+  int next = 0;
+  for (int t = 0; t < static_cast<int>(tris.size()); ++t)
+    if (labels[t] == -1)
+      flood({ t }, next++, nbr, edgeConstrained, labels);
+  out.regions = static_cast<std::size_t>(next);
+  out.regionId.resize(tris.size());
+  for (std::size_t t = 0; t < tris.size(); ++t)
+    out.regionId[t] = labels[t] >= 0 ? labels[t] : -1;
+  return out;
+}
+
+std::vector<int> convexHull(const std::vector<Point>& P)
+{
+  std::vector<int> order(P.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return P[a] < P[b]; });
+  if (order.size() < 3)
+    return order;
+  std::vector<int> hull(2 * order.size());
+  std::size_t k = 0;
+  for (int i : order) // lower hull
+  {
+    while (k >= 2 && orient2d(P[hull[k - 2]], P[hull[k - 1]], P[i]) <= 0)
+      --k;
+    hull[k++] = i;
+  }
+  for (std::size_t j = order.size() - 1, lower = k + 1; j-- > 0;) // upper hull
+  {
+    const int i = order[j];
+    while (k >= lower && orient2d(P[hull[k - 2]], P[hull[k - 1]], P[i]) <= 0)
+      --k;
+    hull[k++] = i;
+  }
+  hull.resize(k - 1);
+  return hull;
+}
+
+bool segmentsEncloseRegion(std::size_t pointCount, const std::vector<Segment>& segments)
+{
+  std::vector<int> parent(pointCount);
+  std::iota(parent.begin(), parent.end(), 0);
+  auto root = [&](int v) {
+    while (parent[v] != v)
+      v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for (const Segment& s : segments)
+  {
+    const int a = root(s[0]), b = root(s[1]);
+    if (a == b)
+      return true;
+    parent[a] = b;
+  }
+  return false;
+}
+
+} // namespace osm

@@ -1,0 +1,33 @@
+// Choosing the part of the triangulated box that is returned: the regions
+// enclosed by segments (exterior removed, like Triangle's -p), or everything,
+// minus holes grown from seed points; each remaining triangle gets a region id.
+#ifndef osm_Domain_h
+#define osm_Domain_h
+
+#include "Geometry.h"
+
+#include <vector>
+
+namespace osm
+{
+
+struct Carving
+{
+  std::vector<int> regionId; ///< per input triangle: its region, or -1 if removed
+  std::size_t regions = 0;
+};
+
+/// removeExterior: drop triangles reachable from the box boundary without
+/// crossing a constrained edge. constrained holds (lo, hi) vertex pairs.
+Carving carveDomain(const std::vector<Point>& points, const std::vector<Triangle>& triangles,
+  std::vector<Segment> constrained, bool removeExterior, const std::vector<Point>& holes);
+
+/// Convex hull of the points, counter-clockwise, without collinear vertices.
+std::vector<int> convexHull(const std::vector<Point>& points);
+
+/// True if the segments contain a cycle (so they enclose some region).
+bool segmentsEncloseRegion(std::size_t pointCount, const std::vector<Segment>& segments);
+
+} // namespace osm
+
+#endif

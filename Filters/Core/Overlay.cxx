@@ -1,0 +1,345 @@
+// Sparse Voronoi Refinement of a point set (Hudson, Miller, Phillips 2006),
+// as phase 1 of Overlay Stitch Meshing.
+//
+// Uninserted input points wait in buckets attached to the triangle that
+// contains them. A triangle is refined when it is of poor quality (radius /
+// shortest edge > Γ, or an edge longer than the size bound) or crowded (its
+// bucket is not empty). Refining inserts the circumcenter, unless an
+// uninserted input point lies within kYield·r of it: then that point is
+// inserted instead. Larger triangles are refined first, so the mesh stays a
+// well-graded quality Delaunay mesh throughout, which bounds the work.
+#include "Overlay.h"
+
+#include "Predicates.h"
+
+#include <algorithm>
+#include <cmath>
+#include <queue>
+#include <string>
+
+namespace osm
+{
+
+double gammaForMinAngle(double minAngleDeg)
+{
+  const double pi = std::acos(-1.0);
+  return 1.0 / (2.0 * std::sin(minAngleDeg * pi / 180.0));
+}
+
+namespace
+{
+
+/// Fraction of the circumradius within which an input point is preferred.
+constexpr double kYield = 0.5;
+
+class Refiner
+{
+public:
+  Refiner(const std::vector<Point>& input, const OverlayOptions& options, RunContext& run)
+    : input(input)
+    , run(run)
+    , gamma2(options.gamma * options.gamma * (1.0 + 1e-12))
+    , maxEdge2(options.maxEdgeLength * options.maxEdgeLength)
+    , steinerCap(options.maxSteinerPoints)
+  {
+  }
+
+  Overlay refine();
+
+private:
+  struct Item
+  {
+    double key;
+    int tri;
+    std::uint32_t gen;
+    bool operator<(const Item& o) const { return key < o.key || (key == o.key && tri > o.tri); }
+  };
+
+  void makeBox();
+  void enqueueIfNeeded(int t);
+  bool isPoor(int t) const;
+  void refineTriangle(int t);
+  void splitHullEdge(int edge);
+  bool insertVertex(const Point& p, int start, int inputIndex);
+  void distribute(int v, const std::vector<int>& fan);
+  int findInFan(const Point& q, int v, const std::vector<int>& fan) const;
+  void countSteiner();
+
+  const std::vector<Point>& input;
+  RunContext& run;
+  const double gamma2;
+  const double maxEdge2;
+  const std::size_t steinerCap;
+
+  Overlay out;
+  Triangulation& mesh = out.mesh;
+  std::vector<int> bucketHead;     ///< per triangle slot: first waiting input point
+  std::vector<int> bucketNext;     ///< per input point: next in its bucket
+  std::vector<std::uint32_t> gen;  ///< per triangle slot: bumped on every reuse
+  std::priority_queue<Item> queue;
+  std::size_t inserted = 0;
+  std::size_t hardCap = 0;
+  // Scratch.
+  std::vector<int> cavity;
+  std::vector<int> created;
+  std::vector<int> waiting;
+};
+
+void Refiner::makeBox()
+{
+  double xmin = input[0].x, xmax = xmin, ymin = input[0].y, ymax = ymin;
+  for (const Point& p : input)
+  {
+    xmin = std::min(xmin, p.x);
+    xmax = std::max(xmax, p.x);
+    ymin = std::min(ymin, p.y);
+    ymax = std::max(ymax, p.y);
+  }
+  double size = std::max(xmax - xmin, ymax - ymin);
+  if (size == 0)
+    size = std::max({ std::fabs(xmin), std::fabs(ymin), 1.0 });
+  // A box several times the input keeps the hull's influence away from it.
+  const double cx = 0.5 * (xmin + xmax), cy = 0.5 * (ymin + ymax), h = 2.0 * size;
+  const int c0 = mesh.addPoint({ cx - h, cy - h });
+  const int c1 = mesh.addPoint({ cx + h, cy - h });
+  const int c2 = mesh.addPoint({ cx + h, cy + h });
+  const int c3 = mesh.addPoint({ cx - h, cy + h });
+  out.isInput.assign(4, 0);
+  const int t0 = mesh.newTriangle(c0, c1, c2);
+  const int t1 = mesh.newTriangle(c0, c2, c3);
+  mesh.link(t0, t1);
+  gen.assign(2, 1);
+  bucketHead.assign(2, -1);
+  bucketNext.assign(input.size(), -1);
+  // Walk in reverse so buckets list points in input order.
+  for (int i = static_cast<int>(input.size()) - 1; i >= 0; --i)
+  {
+    const int t = orient2d(mesh.points[c0], mesh.points[c2], input[i]) <= 0 ? t0 : t1;
+    bucketNext[i] = bucketHead[t];
+    bucketHead[t] = i;
+  }
+}
+
+bool Refiner::isPoor(int t) const
+{
+  const Point& a = mesh.vertex(t, 0);
+  const Point& b = mesh.vertex(t, 1);
+  const Point& c = mesh.vertex(t, 2);
+  const double la = dist2(b, c), lb = dist2(c, a), lc = dist2(a, b);
+  const double lmin = std::min({ la, lb, lc });
+  if (maxEdge2 > 0 && std::max({ la, lb, lc }) > maxEdge2)
+    return true;
+  const double cross = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+  // r² = la·lb·lc / (4·area)² with 2·area = cross; compare without dividing.
+  return la * lb * lc > gamma2 * lmin * cross * cross * 4.0 || cross == 0;
+}
+
+void Refiner::enqueueIfNeeded(int t)
+{
+  if (bucketHead[t] < 0 && !isPoor(t))
+    return;
+  const Point& a = mesh.vertex(t, 0);
+  const Point c = circumcenter(a, mesh.vertex(t, 1), mesh.vertex(t, 2));
+  queue.push({ dist2(a, c), t, gen[t] });
+}
+
+Overlay Refiner::refine()
+{
+  makeBox();
+  out.inputVertex.assign(input.size(), -1);
+  // Overlay size is O(n log(L/s)); doubles bound log(L/s), so this cap only
+  // catches a numerical runaway, turning a hang into a clear error.
+  hardCap = 1000 * input.size() + 1000000;
+  enqueueIfNeeded(0);
+  enqueueIfNeeded(1);
+  while (!queue.empty())
+  {
+    const Item item = queue.top();
+    queue.pop();
+    if (!mesh.alive(item.tri) || gen[item.tri] != item.gen)
+      continue;
+    if (bucketHead[item.tri] < 0 && !isPoor(item.tri))
+      continue;
+    const std::size_t before = mesh.points.size();
+    refineTriangle(item.tri);
+    // Yielding or splitting the box may leave this triangle standing: retry it.
+    if (mesh.points.size() > before && mesh.alive(item.tri) && gen[item.tri] == item.gen)
+      enqueueIfNeeded(item.tri);
+    run.tick(input.empty() ? 1.0 : double(inserted) / double(input.size()));
+  }
+  for (std::size_t i = 0; i < input.size(); ++i)
+    if (out.inputVertex[i] < 0)
+      throw Stop{ "internal error: input point " + std::to_string(i) + " was not inserted" };
+  return std::move(out);
+}
+
+void Refiner::countSteiner()
+{
+  ++out.steinerPoints;
+  if (steinerCap > 0 && out.steinerPoints > steinerCap)
+    throw Stop{ "the overlay needs more than the allowed " + std::to_string(steinerCap) +
+      " Steiner points; raise the cap or coarsen the input" };
+  if (out.steinerPoints > hardCap)
+    throw Stop{ "the overlay refinement exceeded " + std::to_string(hardCap) +
+      " Steiner points, which suggests a numerical problem with this input" };
+}
+
+void Refiner::refineTriangle(int t)
+{
+  const Point& a = mesh.vertex(t, 0);
+  const Point c = circumcenter(a, mesh.vertex(t, 1), mesh.vertex(t, 2));
+  const double r2 = dist2(a, c);
+  int exitEdge = -1;
+  const int start = std::isfinite(c.x) && std::isfinite(c.y) ? mesh.locate(c, t, &exitEdge) : -2;
+  if (start == -2)
+  {
+    ++out.refinementsSkipped;
+    return;
+  }
+  if (start < 0)
+  {
+    splitHullEdge(exitEdge);
+    return;
+  }
+  if (!mesh.cavityOf(c, start, cavity))
+  {
+    ++out.refinementsSkipped;
+    return;
+  }
+  // A circumcenter that encroaches the box boundary splits the boundary instead.
+  for (int u : cavity)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      if (mesh.tn[3 * u + i] >= 0)
+        continue;
+      const Point& p = mesh.vertex(u, (i + 1) % 3);
+      const Point& q = mesh.vertex(u, (i + 2) % 3);
+      if ((c.x - p.x) * (c.x - q.x) + (c.y - p.y) * (c.y - q.y) <= 0)
+      {
+        splitHullEdge(3 * u + i);
+        return;
+      }
+    }
+  }
+  // Yield to the nearest waiting input point close to the circumcenter.
+  int best = -1, bestTri = -1;
+  double bestD2 = kYield * kYield * r2;
+  for (int u : cavity)
+  {
+    for (int i = bucketHead[u]; i >= 0; i = bucketNext[i])
+    {
+      const double d2 = dist2(input[i], c);
+      if (d2 < bestD2 || (d2 == bestD2 && (best < 0 || i < best)))
+      {
+        best = i;
+        bestTri = u;
+        bestD2 = d2;
+      }
+    }
+  }
+  if (best >= 0)
+  {
+    if (!insertVertex(input[best], bestTri, best))
+      ++out.refinementsSkipped;
+    return;
+  }
+  countSteiner();
+  if (!insertVertex(c, start, -1))
+    ++out.refinementsSkipped;
+}
+
+void Refiner::splitHullEdge(int edge)
+{
+  const int t = edge / 3, i = edge % 3;
+  const Point& p = mesh.vertex(t, (i + 1) % 3);
+  const Point& q = mesh.vertex(t, (i + 2) % 3);
+  // Box edges are axis-parallel, so the midpoint stays exactly on them.
+  const Point m{ p.x == q.x ? p.x : 0.5 * (p.x + q.x), p.y == q.y ? p.y : 0.5 * (p.y + q.y) };
+  countSteiner();
+  if (!insertVertex(m, t, -1))
+    ++out.refinementsSkipped;
+}
+
+bool Refiner::insertVertex(const Point& p, int start, int inputIndex)
+{
+  if (!mesh.cavityOf(p, start, cavity))
+    return false;
+  // Collect the waiting points of the cavity; they move to the new triangles.
+  waiting.clear();
+  for (int u : cavity)
+  {
+    for (int i = bucketHead[u]; i >= 0; i = bucketNext[i])
+      if (i != inputIndex)
+        waiting.push_back(i);
+  }
+  const int v = mesh.addPoint(p);
+  if (!mesh.insertIntoCavity(v, cavity, created))
+  {
+    mesh.points.pop_back();
+    mesh.vtri.pop_back();
+    return false;
+  }
+  for (int u : cavity)
+    if (!mesh.alive(u))
+      bucketHead[u] = -1;
+  out.isInput.push_back(inputIndex >= 0 ? 1 : 0);
+  if (inputIndex >= 0)
+  {
+    out.inputVertex[inputIndex] = v;
+    ++inserted;
+  }
+  if (gen.size() < static_cast<std::size_t>(mesh.slots()))
+  {
+    gen.resize(mesh.slots(), 0);
+    bucketHead.resize(mesh.slots(), -1);
+  }
+  for (int u : created)
+  {
+    ++gen[u];
+    bucketHead[u] = -1;
+  }
+  distribute(v, created);
+  for (int u : created)
+    enqueueIfNeeded(u);
+  return true;
+}
+
+int Refiner::findInFan(const Point& q, int v, const std::vector<int>& fan) const
+{
+  for (int u : fan)
+  {
+    const Point& a = mesh.vertex(u, 0);
+    const Point& b = mesh.vertex(u, 1);
+    const Point& c = mesh.points[v];
+    if (orient2d(a, b, q) >= 0 && orient2d(b, c, q) >= 0 && orient2d(c, a, q) >= 0)
+      return u;
+  }
+  return mesh.locate(q, fan.front());
+}
+
+void Refiner::distribute(int v, const std::vector<int>& fan)
+{
+  // Reverse order keeps each bucket in increasing point order: deterministic.
+  for (auto it = waiting.rbegin(); it != waiting.rend(); ++it)
+  {
+    const int i = *it;
+    int u = findInFan(input[i], v, fan);
+    if (u < 0)
+      throw Stop{ "internal error: lost input point " + std::to_string(i) + " during refinement" };
+    bucketNext[i] = bucketHead[u];
+    bucketHead[u] = i;
+  }
+}
+
+} // namespace
+
+Overlay buildOverlay(const std::vector<Point>& points, const OverlayOptions& options, RunContext& run)
+{
+  if (points.empty())
+    return {};
+  Refiner refiner(points, options, run);
+  return refiner.refine();
+}
+
+} // namespace osm

@@ -1,0 +1,40 @@
+// Phase 1: the overlay mesh of the input points by Sparse Voronoi Refinement.
+#ifndef osm_Overlay_h
+#define osm_Overlay_h
+
+#include "RunContext.h"
+#include "Triangulation.h"
+
+#include <vector>
+
+namespace osm
+{
+
+struct OverlayOptions
+{
+  double gamma = 1.0;         ///< radius / shortest-edge bound Γ
+  double maxEdgeLength = 0.0; ///< 0: no size bound
+  std::size_t maxSteinerPoints = 0;
+};
+
+struct Overlay
+{
+  /// Delaunay triangulation of a padded box, the input points and Steiner points,
+  /// with every triangle of radius/edge ratio at most Γ. Vertices 0..3 are the
+  /// box corners (counter-clockwise from the lower left).
+  Triangulation mesh;
+  std::vector<int> inputVertex; ///< input point index -> mesh vertex
+  std::vector<char> isInput;    ///< per mesh vertex
+  std::size_t steinerPoints = 0;
+  std::size_t refinementsSkipped = 0; ///< triangles that could not be refined (numerics)
+};
+
+/// Mesh the points (distinct, finite) alone; segments are ignored here.
+Overlay buildOverlay(const std::vector<Point>& points, const OverlayOptions& options, RunContext& run);
+
+/// Gap ratio Γ for an overlay minimum angle θ1 (degrees): sin θ1 = 1 / (2Γ).
+double gammaForMinAngle(double minAngleDeg);
+
+} // namespace osm
+
+#endif

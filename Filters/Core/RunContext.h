@@ -1,0 +1,59 @@
+// Internal: progress reporting and abort polling shared by the phases.
+#ifndef osm_RunContext_h
+#define osm_RunContext_h
+
+#include "Mesher.h"
+
+#include <string>
+
+namespace osm
+{
+
+/// Thrown inside the core only, caught by mesh(): the user aborted or a cap was hit.
+struct Stop
+{
+  std::string reason;
+};
+
+class RunContext
+{
+public:
+  explicit RunContext(Progress* p)
+    : progress(p)
+  {
+  }
+  /// Report progress of the current phase, which spans [begin, end] of the run.
+  void phase(const char* name, double begin, double end)
+  {
+    phaseName = name;
+    phaseBegin = begin;
+    phaseEnd = end;
+    report(0.0);
+  }
+  /// fraction of the current phase; also polls for an abort.
+  void report(double fraction)
+  {
+    if (!progress)
+      return;
+    progress->report(phaseBegin + (phaseEnd - phaseBegin) * fraction, phaseName);
+    if (progress->aborted())
+      throw Stop{ "aborted by the user" };
+  }
+  /// Cheap call for inner loops: reports every 'every' calls.
+  void tick(double fraction, unsigned every = 4096)
+  {
+    if (progress && ++ticks % every == 0)
+      report(fraction);
+  }
+
+private:
+  Progress* progress;
+  const char* phaseName = "";
+  double phaseBegin = 0.0;
+  double phaseEnd = 1.0;
+  unsigned ticks = 0;
+};
+
+} // namespace osm
+
+#endif

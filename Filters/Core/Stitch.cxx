@@ -1,0 +1,435 @@
+#include "Stitch.h"
+
+#include "Predicates.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace osm
+{
+
+OverlayEdges compactOverlay(const Triangulation& mesh)
+{
+  OverlayEdges ov;
+  std::vector<int> index(mesh.slots(), -1);
+  for (int t = 0; t < mesh.slots(); ++t)
+  {
+    if (!mesh.alive(t))
+      continue;
+    index[t] = static_cast<int>(ov.tris.size());
+    ov.tris.push_back({ mesh.tv[3 * t], mesh.tv[3 * t + 1], mesh.tv[3 * t + 2] });
+  }
+  ov.nbr.resize(ov.tris.size());
+  ov.triEdge.resize(ov.tris.size());
+  ov.vtri.assign(mesh.points.size(), -1);
+  for (int t = 0; t < mesh.slots(); ++t)
+  {
+    const int c = index[t];
+    if (c < 0)
+      continue;
+    for (int i = 0; i < 3; ++i)
+    {
+      const int u = mesh.tn[3 * t + i];
+      ov.nbr[c][i] = u < 0 ? -1 : index[u];
+      ov.vtri[ov.tris[c][i]] = c;
+    }
+  }
+  // Each edge gets its id from the triangle with the smaller index.
+  for (int c = 0; c < static_cast<int>(ov.tris.size()); ++c)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      const int u = ov.nbr[c][i];
+      if (u >= 0 && u < c)
+        continue;
+      const int id = static_cast<int>(ov.edges.size());
+      ov.edges.push_back({ ov.tris[c][(i + 1) % 3], ov.tris[c][(i + 2) % 3] });
+      ov.triEdge[c][i] = id;
+      if (u >= 0)
+        for (int j = 0; j < 3; ++j)
+          if (ov.nbr[u][j] == c)
+            ov.triEdge[u][j] = id;
+    }
+  }
+  return ov;
+}
+
+namespace
+{
+
+int localIndex(const Triangle& t, int v)
+{
+  return t[0] == v ? 0 : t[1] == v ? 1 : t[2] == v ? 2 : -1;
+}
+
+/// u lies on the ray from c through b (u, c, b known to be collinear).
+bool ahead(const Point& c, const Point& u, const Point& b)
+{
+  if (b.x != c.x)
+    return (u.x > c.x) == (b.x > c.x) && u.x != c.x;
+  return (u.y > c.y) == (b.y > c.y) && u.y != c.y;
+}
+
+double cross(double ax, double ay, double bx, double by)
+{
+  return ax * by - ay * bx;
+}
+
+class Walker
+{
+public:
+  Walker(const OverlayEdges& ov, const Overlay& overlay, double sinTheta1, Walk& out)
+    : ov(ov)
+    , P(overlay.mesh.points)
+    , isInput(overlay.isInput)
+    , sinTheta1(sinTheta1)
+    , out(out)
+  {
+  }
+
+  void walk(int segment, int a, int b);
+  void findSegmentCrossings(const std::vector<Segment>& segments);
+
+private:
+  int firstStep(int cur, int b, int& l, int& r, int& tri);
+  void addCrossing(int edge, int piece, const Point& A, const Point& B);
+  void markDuplicates();
+
+  const OverlayEdges& ov;
+  const std::vector<Point>& P;
+  const std::vector<char>& isInput;
+  const double sinTheta1;
+  Walk& out;
+  std::vector<std::pair<int, int>> triPiece; ///< (overlay triangle, piece) traversed
+};
+
+/// From vertex cur towards b: returns the next vertex if the segment runs along
+/// an overlay edge (setting tri to that edge's id), or -1 and the triangle it
+/// enters, with l, r the vertices left and right of the segment.
+int Walker::firstStep(int cur, int b, int& l, int& r, int& tri)
+{
+  const Point& C = P[cur];
+  const Point& B = P[b];
+  int t = ov.vtri[cur];
+  for (std::size_t k = 0; k <= ov.tris.size(); ++k)
+  {
+    const int i = localIndex(ov.tris[t], cur);
+    const int u = ov.tris[t][(i + 1) % 3], w = ov.tris[t][(i + 2) % 3];
+    const int ou = orientSign(C, P[u], B);
+    if (ou == 0 && ahead(C, P[u], B))
+    {
+      tri = ov.triEdge[t][(i + 2) % 3];
+      return u;
+    }
+    if (ou > 0 && orientSign(C, P[w], B) < 0)
+    {
+      r = u;
+      l = w;
+      tri = t;
+      return -1;
+    }
+    t = ov.nbr[t][(i + 1) % 3]; // rotate counter-clockwise around cur
+    if (t < 0)
+      break;
+  }
+  throw Stop{ "internal error: cannot leave vertex " + std::to_string(cur) + " while stitching" };
+}
+
+void Walker::addCrossing(int edge, int piece, const Point& A, const Point& B)
+{
+  const Point& p0 = P[ov.edges[edge][0]];
+  const Point& p1 = P[ov.edges[edge][1]];
+  const double dx = B.x - A.x, dy = B.y - A.y, ex = p1.x - p0.x, ey = p1.y - p0.y;
+  const double d0 = cross(dx, dy, p0.x - A.x, p0.y - A.y);
+  const double d1 = cross(dx, dy, p1.x - A.x, p1.y - A.y);
+  double s = d0 / (d0 - d1);
+  s = std::min(1.0, std::max(0.0, std::isfinite(s) ? s : 0.5));
+  Crossing c;
+  c.edge = edge;
+  c.piece = piece;
+  c.s = s;
+  c.p = { p0.x + s * ex, p0.y + s * ey };
+  const double sine = std::fabs(cross(dx, dy, ex, ey)) / (std::hypot(dx, dy) * std::hypot(ex, ey));
+  c.good = sine > sinTheta1;
+  out.crossings.push_back(c);
+}
+
+void Walker::walk(int segment, int a, int b)
+{
+  const Point& A = P[a];
+  const Point& B = P[b];
+  int cur = a;
+  while (cur != b)
+  {
+    const int piece = static_cast<int>(out.pieces.size());
+    out.pieces.push_back({ cur, -1, segment, -1, static_cast<int>(out.crossings.size()), 0 });
+    int l = -1, r = -1, t = -1;
+    int next = firstStep(cur, b, l, r, t);
+    if (next >= 0)
+    {
+      out.pieces[piece].overlayEdge = t;
+    }
+    else
+    {
+      // Cross triangle after triangle until a vertex lies on the segment. The
+      // edge to cross next is the one opposite the vertex it does not touch.
+      int across = localIndex(ov.tris[t], cur);
+      triPiece.push_back({ t, piece });
+      for (std::size_t guard = 0; next < 0; ++guard)
+      {
+        if (guard > ov.tris.size())
+          throw Stop{ "internal error: a stitching walk does not terminate" };
+        addCrossing(ov.triEdge[t][across], piece, A, B);
+        t = ov.nbr[t][across];
+        if (t < 0)
+          throw Stop{ "internal error: a segment left the overlay while stitching" };
+        triPiece.push_back({ t, piece });
+        const int il = localIndex(ov.tris[t], l), ir = localIndex(ov.tris[t], r);
+        const int x = ov.tris[t][3 - il - ir];
+        const int o = orientSign(A, B, P[x]);
+        if (o == 0)
+          next = x;
+        else if (o > 0)
+        {
+          across = il; // the edge (x, r) is opposite l
+          l = x;
+        }
+        else
+        {
+          across = ir;
+          r = x;
+        }
+      }
+    }
+    out.pieces[piece].v1 = next;
+    out.pieces[piece].crossingCount =
+      static_cast<int>(out.crossings.size()) - out.pieces[piece].firstCrossing;
+    if (next != b && isInput[next])
+      ++out.splitsAtInputVertices;
+    cur = next;
+  }
+}
+
+bool properlyCross(const Point& a, const Point& b, const Point& c, const Point& d)
+{
+  const int o1 = orientSign(a, b, c), o2 = orientSign(a, b, d);
+  if (o1 == 0 || o2 == 0 || o1 == o2)
+    return false;
+  const int o3 = orientSign(c, d, a), o4 = orientSign(c, d, b);
+  return o3 != 0 && o4 != 0 && o3 != o4;
+}
+
+Point intersection(const Point& a, const Point& b, const Point& c, const Point& d)
+{
+  const double t = cross(c.x - a.x, c.y - a.y, d.x - c.x, d.y - c.y) /
+    cross(b.x - a.x, b.y - a.y, d.x - c.x, d.y - c.y);
+  return { a.x + t * (b.x - a.x), a.y + t * (b.y - a.y) };
+}
+
+void Walker::markDuplicates()
+{
+  // Overlapping collinear segments were split at each other's endpoints, so
+  // their shared parts are identical pieces: keep the first.
+  std::vector<std::array<int, 3>> keys;
+  keys.reserve(out.pieces.size());
+  for (int i = 0; i < static_cast<int>(out.pieces.size()); ++i)
+  {
+    const Piece& p = out.pieces[i];
+    keys.push_back({ std::min(p.v0, p.v1), std::max(p.v0, p.v1), i });
+  }
+  std::sort(keys.begin(), keys.end());
+  for (std::size_t k = 1; k < keys.size(); ++k)
+  {
+    if (keys[k][0] == keys[k - 1][0] && keys[k][1] == keys[k - 1][1])
+    {
+      out.pieces[keys[k][2]].duplicate = true;
+      ++out.duplicatePieces;
+    }
+  }
+}
+
+void Walker::findSegmentCrossings(const std::vector<Segment>&)
+{
+  markDuplicates();
+  auto record = [&](int pa, int pb, const Point& p) {
+    const int a = out.pieces[pa].segment, b = out.pieces[pb].segment;
+    out.segmentCrossings.push_back({ std::min(a, b), std::max(a, b), p });
+  };
+  // Two segments that cross share an overlay triangle...
+  std::sort(triPiece.begin(), triPiece.end());
+  triPiece.erase(std::unique(triPiece.begin(), triPiece.end()), triPiece.end());
+  for (std::size_t k = 0; k < triPiece.size();)
+  {
+    std::size_t end = k;
+    while (end < triPiece.size() && triPiece[end].first == triPiece[k].first)
+      ++end;
+    for (std::size_t i = k; i < end; ++i)
+    {
+      const Piece& p = out.pieces[triPiece[i].second];
+      for (std::size_t j = i + 1; j < end && !p.duplicate; ++j)
+      {
+        const Piece& q = out.pieces[triPiece[j].second];
+        if (q.duplicate || q.segment == p.segment)
+          continue;
+        if (properlyCross(P[p.v0], P[p.v1], P[q.v0], P[q.v1]))
+          record(triPiece[i].second, triPiece[j].second,
+            intersection(P[p.v0], P[p.v1], P[q.v0], P[q.v1]));
+      }
+    }
+    k = end;
+  }
+  // ...or one crosses an overlay edge along which the other runs.
+  std::vector<int> edgePiece(ov.edges.size(), -1);
+  for (int i = 0; i < static_cast<int>(out.pieces.size()); ++i)
+    if (out.pieces[i].overlayEdge >= 0 && !out.pieces[i].duplicate)
+      edgePiece[out.pieces[i].overlayEdge] = i;
+  for (const Crossing& c : out.crossings)
+    if (edgePiece[c.edge] >= 0 && !out.pieces[c.piece].duplicate)
+      record(c.piece, edgePiece[c.edge], c.p);
+  auto& sc = out.segmentCrossings;
+  std::sort(sc.begin(), sc.end(), [](const SegmentCrossing& x, const SegmentCrossing& y) {
+    return x.a < y.a || (x.a == y.a && x.b < y.b);
+  });
+  sc.erase(std::unique(sc.begin(), sc.end(),
+             [](const SegmentCrossing& x, const SegmentCrossing& y) {
+               return x.a == y.a && x.b == y.b;
+             }),
+    sc.end());
+}
+
+} // namespace
+
+Walk walkSegments(const OverlayEdges& ov, const Overlay& overlay,
+  const std::vector<Segment>& segments, double sinTheta1, RunContext& run)
+{
+  Walk out;
+  Walker walker(ov, overlay, sinTheta1, out);
+  for (std::size_t s = 0; s < segments.size(); ++s)
+  {
+    walker.walk(static_cast<int>(s), segments[s][0], segments[s][1]);
+    run.tick(double(s) / double(segments.size()), 256);
+  }
+  walker.findSegmentCrossings(segments);
+  return out;
+}
+
+namespace
+{
+
+/// Crossings grouped by overlay edge, each group sorted along its edge.
+std::vector<int> crossingsByEdge(const Walk& walk, std::size_t edgeCount, std::vector<int>& start)
+{
+  start.assign(edgeCount + 1, 0);
+  for (const Crossing& c : walk.crossings)
+    ++start[c.edge + 1];
+  for (std::size_t e = 0; e < edgeCount; ++e)
+    start[e + 1] += start[e];
+  std::vector<int> order(walk.crossings.size());
+  std::vector<int> fill(start.begin(), start.end() - 1);
+  for (int i = 0; i < static_cast<int>(walk.crossings.size()); ++i)
+    order[fill[walk.crossings[i].edge]++] = i;
+  for (std::size_t e = 0; e < edgeCount; ++e)
+    std::sort(order.begin() + start[e], order.begin() + start[e + 1], [&](int a, int b) {
+      return walk.crossings[a].s < walk.crossings[b].s ||
+        (walk.crossings[a].s == walk.crossings[b].s && a < b);
+    });
+  return order;
+}
+
+} // namespace
+
+PlanarGraph stitch(const OverlayEdges& ov, const Overlay& overlay, const Walk& walk,
+  std::vector<Edge>* inspect, Statistics& stats)
+{
+  PlanarGraph g;
+  g.points = overlay.mesh.points;
+  g.origin.resize(g.points.size());
+  for (std::size_t v = 0; v < g.points.size(); ++v)
+    g.origin[v] = overlay.isInput[v] ? VertexOrigin::Input : VertexOrigin::Overlay;
+  auto addEdge = [&](int a, int b, bool constrained) {
+    g.edges.push_back({ a, b });
+    g.constrained.push_back(constrained);
+  };
+
+  const std::size_t ne = ov.edges.size();
+  std::vector<char> crossed(ne, 0), kept(ne, 0), alongInput(ne, 0);
+  for (const Crossing& c : walk.crossings)
+  {
+    if (walk.pieces[c.piece].duplicate)
+      continue;
+    crossed[c.edge] = 1;
+    kept[c.edge] |= c.good;
+    ++(c.good ? stats.goodCrossings : stats.badCrossings);
+  }
+  stats.crossings = stats.goodCrossings + stats.badCrossings;
+  for (const Piece& p : walk.pieces)
+    if (p.overlayEdge >= 0 && !p.duplicate)
+      alongInput[p.overlayEdge] = 1;
+
+  // Kept crossed edges: one stitch vertex per crossing, in order along the edge.
+  std::vector<int> start;
+  const std::vector<int> order = crossingsByEdge(walk, ne, start);
+  std::vector<int> stitchVertex(walk.crossings.size(), -1);
+  for (std::size_t e = 0; e < ne; ++e)
+  {
+    std::uint8_t flags = EdgeOverlay;
+    if (!crossed[e])
+    {
+      ++stats.uncrossedEdges;
+      flags |= EdgeKept | (alongInput[e] ? EdgeInput : 0);
+      if (!alongInput[e])
+        addEdge(ov.edges[e][0], ov.edges[e][1], false);
+    }
+    else if (kept[e])
+    {
+      ++stats.keptEdges;
+      flags |= EdgeKept | EdgeCrossed;
+      int prev = ov.edges[e][0];
+      for (int k = start[e]; k < start[e + 1]; ++k)
+      {
+        const Crossing& c = walk.crossings[order[k]];
+        if (walk.pieces[c.piece].duplicate)
+          continue;
+        const int v = static_cast<int>(g.points.size());
+        g.points.push_back(c.p);
+        g.origin.push_back(VertexOrigin::Stitch);
+        stitchVertex[order[k]] = v;
+        addEdge(prev, v, false);
+        prev = v;
+      }
+      addEdge(prev, ov.edges[e][1], false);
+    }
+    else
+    {
+      ++stats.discardedEdges;
+      flags |= EdgeDiscarded | EdgeCrossed;
+    }
+    if (inspect)
+      inspect->push_back({ ov.edges[e][0], ov.edges[e][1], flags });
+  }
+  stats.stitchVertices = g.points.size() - overlay.mesh.points.size();
+
+  // Input subsegments: each piece, split at its kept crossings.
+  for (const Piece& p : walk.pieces)
+  {
+    if (p.duplicate)
+      continue;
+    int prev = p.v0;
+    for (int k = p.firstCrossing; k < p.firstCrossing + p.crossingCount; ++k)
+    {
+      if (stitchVertex[k] < 0)
+        continue;
+      addEdge(prev, stitchVertex[k], true);
+      if (inspect)
+        inspect->push_back({ prev, stitchVertex[k], EdgeInput });
+      prev = stitchVertex[k];
+    }
+    addEdge(prev, p.v1, true);
+    if (inspect && p.overlayEdge < 0)
+      inspect->push_back({ prev, p.v1, EdgeInput });
+  }
+  return g;
+}
+
+} // namespace osm

@@ -1,0 +1,91 @@
+// Phase 2: stitching the input segments into the overlay.
+//
+// Each segment is walked through the overlay from one endpoint to the other,
+// listing the overlay edges it crosses and the vertices it passes through
+// (which split it into pieces). A crossing is good when the segment meets the
+// edge at an angle above θ1. An overlay edge is kept if it is uncrossed or has
+// a good crossing, discarded otherwise; every crossing on a kept edge becomes a
+// stitch vertex splitting both. The walks also find segments that cross each
+// other (they share an overlay triangle) or overlap.
+#ifndef osm_Stitch_h
+#define osm_Stitch_h
+
+#include "Mesher.h"
+#include "Overlay.h"
+#include "RunContext.h"
+
+#include <array>
+#include <vector>
+
+namespace osm
+{
+
+/// The overlay in compact form: live triangles, neighbours and edge ids.
+struct OverlayEdges
+{
+  std::vector<Triangle> tris;
+  std::vector<std::array<int, 3>> nbr;     ///< across the edge opposite vertex i, or -1
+  std::vector<std::array<int, 3>> triEdge; ///< id of the edge opposite vertex i
+  std::vector<Segment> edges;
+  std::vector<int> vtri; ///< one triangle per vertex
+};
+
+OverlayEdges compactOverlay(const Triangulation& mesh);
+
+/// A maximal part of a segment between two overlay vertices.
+struct Piece
+{
+  int v0 = -1, v1 = -1;
+  int segment = -1;     ///< index of the (clean) segment it belongs to
+  int overlayEdge = -1; ///< the overlay edge it runs along, if any
+  int firstCrossing = 0;
+  int crossingCount = 0;
+  bool duplicate = false; ///< the same piece came from an overlapping segment
+};
+
+struct Crossing
+{
+  int edge = -1;
+  int piece = -1;
+  double s = 0; ///< position along the overlay edge, from edges[edge][0] to [1]
+  Point p;
+  bool good = false;
+};
+
+/// Two clean segments that cross at p.
+struct SegmentCrossing
+{
+  int a = -1, b = -1;
+  Point p;
+};
+
+struct Walk
+{
+  std::vector<Piece> pieces;
+  std::vector<Crossing> crossings;
+  std::vector<SegmentCrossing> segmentCrossings;
+  std::size_t splitsAtInputVertices = 0;
+  std::size_t duplicatePieces = 0;
+};
+
+/// Walk every segment (endpoints given as overlay vertices) through the overlay.
+Walk walkSegments(const OverlayEdges& ov, const Overlay& overlay,
+  const std::vector<Segment>& segments, double sinTheta1, RunContext& run);
+
+/// The stitched planar graph: overlay vertices, then stitch vertices.
+struct PlanarGraph
+{
+  std::vector<Point> points;
+  std::vector<VertexOrigin> origin;
+  std::vector<Segment> edges;
+  std::vector<char> constrained; ///< per edge: part of an input segment
+};
+
+/// Keep or discard overlay edges and insert the kept crossings. When inspect is
+/// given, it receives every overlay edge and input subsegment with its flags.
+PlanarGraph stitch(const OverlayEdges& ov, const Overlay& overlay, const Walk& walk,
+  std::vector<Edge>* inspect, Statistics& stats);
+
+} // namespace osm
+
+#endif

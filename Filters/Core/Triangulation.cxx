@@ -1,0 +1,235 @@
+#include "Triangulation.h"
+
+#include "Predicates.h"
+
+namespace osm
+{
+
+int Triangulation::addPoint(const Point& p)
+{
+  points.push_back(p);
+  vtri.push_back(-1);
+  return static_cast<int>(points.size()) - 1;
+}
+
+int Triangulation::newTriangle(int a, int b, int c)
+{
+  int t;
+  if (!freeSlots.empty())
+  {
+    t = freeSlots.back();
+    freeSlots.pop_back();
+  }
+  else
+  {
+    t = slots();
+    tv.resize(tv.size() + 3);
+    tn.resize(tn.size() + 3);
+    mark.push_back(0);
+  }
+  tv[3 * t] = a;
+  tv[3 * t + 1] = b;
+  tv[3 * t + 2] = c;
+  tn[3 * t] = tn[3 * t + 1] = tn[3 * t + 2] = -1;
+  vtri[a] = vtri[b] = vtri[c] = t;
+  return t;
+}
+
+void Triangulation::freeTriangle(int t)
+{
+  tv[3 * t] = tv[3 * t + 1] = tv[3 * t + 2] = -1;
+  freeSlots.push_back(t);
+}
+
+int Triangulation::localIndex(int t, int v) const
+{
+  for (int i = 0; i < 3; ++i)
+    if (tv[3 * t + i] == v)
+      return i;
+  return -1;
+}
+
+void Triangulation::link(int t, int u)
+{
+  // The shared edge is opposite the one vertex of t that u does not have.
+  for (int i = 0; i < 3; ++i)
+  {
+    if (localIndex(u, tv[3 * t + i]) < 0)
+    {
+      tn[3 * t + i] = u;
+      break;
+    }
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    if (localIndex(t, tv[3 * u + i]) < 0)
+    {
+      tn[3 * u + i] = t;
+      break;
+    }
+  }
+}
+
+int Triangulation::locate(const Point& p, int t, int* exitEdge) const
+{
+  // Visibility walk. It terminates on Delaunay triangulations; the step
+  // counter rotates the first edge tried, which keeps it deterministic.
+  for (unsigned step = 0;; ++step)
+  {
+    bool moved = false;
+    for (int k = 0; k < 3; ++k)
+    {
+      const int i = static_cast<int>((k + step) % 3);
+      const Point& a = points[tv[3 * t + (i + 1) % 3]];
+      const Point& b = points[tv[3 * t + (i + 2) % 3]];
+      if (orient2d(a, b, p) < 0)
+      {
+        const int next = tn[3 * t + i];
+        if (next < 0)
+        {
+          if (exitEdge)
+            *exitEdge = 3 * t + i;
+          return -1;
+        }
+        t = next;
+        moved = true;
+        break;
+      }
+    }
+    if (!moved)
+      return t;
+  }
+}
+
+bool Triangulation::cavityOf(const Point& p, int start, std::vector<int>& cavity) const
+{
+  cavity.clear();
+  for (int i = 0; i < 3; ++i)
+    if (vertex(start, i) == p)
+      return false;
+  if (++markStamp == 0)
+  {
+    std::fill(mark.begin(), mark.end(), 0);
+    markStamp = 1;
+  }
+  // p lies in the closure of start, hence strictly inside its circumcircle.
+  cavity.push_back(start);
+  mark[start] = markStamp;
+  for (std::size_t k = 0; k < cavity.size(); ++k)
+  {
+    const int t = cavity[k];
+    for (int i = 0; i < 3; ++i)
+    {
+      const int u = tn[3 * t + i];
+      if (u < 0 || mark[u] == markStamp)
+        continue;
+      mark[u] = markStamp;
+      if (incircle(vertex(u, 0), vertex(u, 1), vertex(u, 2), p) > 0)
+        cavity.push_back(u);
+    }
+  }
+  return true;
+}
+
+bool Triangulation::insertIntoCavity(int v, const std::vector<int>& cavity, std::vector<int>& created)
+{
+  created.clear();
+  const Point& p = points[v];
+  // Boundary edges of the cavity: edges whose neighbour is not in it.
+  ++markStamp;
+  if (markStamp == 0)
+  {
+    std::fill(mark.begin(), mark.end(), 0);
+    markStamp = 1;
+  }
+  for (int t : cavity)
+    mark[t] = markStamp;
+  boundaryEdges.clear();
+  for (int t : cavity)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      const int u = tn[3 * t + i];
+      if (u >= 0 && mark[u] == markStamp)
+        continue;
+      const Point& a = vertex(t, (i + 1) % 3);
+      const Point& b = vertex(t, (i + 2) % 3);
+      const double o = orient2d(a, b, p);
+      if (o < 0 || (o == 0 && u >= 0))
+        return false; // not star-shaped: refuse rather than tangle the mesh
+      if (o == 0)
+        continue; // p splits this hull edge: it stays open
+      boundaryEdges.push_back(3 * t + i);
+    }
+  }
+  // Record the outside neighbours before the cavity slots are recycled.
+  struct NewTri
+  {
+    int a, b, outside;
+  };
+  std::vector<NewTri> fan;
+  fan.reserve(boundaryEdges.size());
+  for (int e : boundaryEdges)
+  {
+    const int t = e / 3, i = e % 3;
+    fan.push_back({ tv[3 * t + (i + 1) % 3], tv[3 * t + (i + 2) % 3], tn[e] });
+  }
+  for (int t : cavity)
+    freeTriangle(t);
+  if (fanByVertex.size() < points.size())
+    fanByVertex.resize(points.size(), -1);
+  for (const NewTri& f : fan)
+  {
+    const int t = newTriangle(f.a, f.b, v);
+    created.push_back(t);
+    // Edge (a, b) is opposite v (local index 2).
+    tn[3 * t + 2] = f.outside;
+    if (f.outside >= 0)
+    {
+      for (int i = 0; i < 3; ++i)
+      {
+        const int a = tv[3 * f.outside + (i + 1) % 3], b = tv[3 * f.outside + (i + 2) % 3];
+        if (a == f.b && b == f.a)
+          tn[3 * f.outside + i] = t;
+      }
+    }
+    fanByVertex[f.a] = t; // triangle whose edge (v, a) ... found via vertex a
+  }
+  // Link fan neighbours: triangle (a, b, v) meets (b, c, v) across edge (b, v).
+  for (int t : created)
+  {
+    const int b = tv[3 * t + 1];
+    const int u = b < static_cast<int>(fanByVertex.size()) ? fanByVertex[b] : -1;
+    if (u >= 0 && tv[3 * u] == b && tv[3 * u + 2] == v)
+    {
+      tn[3 * t] = u;     // opposite a: edge (b, v)
+      tn[3 * u + 1] = t; // opposite b in u=(b, c, v): edge (v, b)
+    }
+  }
+  for (const NewTri& f : fan)
+    fanByVertex[f.a] = -1;
+  // Order the fan counter-clockwise around v (chain a -> b).
+  if (created.size() > 2)
+  {
+    int first = created.front();
+    for (int t : created)
+      if (tn[3 * t + 1] < 0) // no predecessor: the fan is open here (v on the hull)
+        first = t;
+    std::vector<int> ordered;
+    ordered.reserve(created.size());
+    for (int t = first; t >= 0 && ordered.size() < created.size(); t = tn[3 * t])
+      ordered.push_back(t);
+    created.swap(ordered);
+  }
+  return true;
+}
+
+Point circumcenter(const Point& a, const Point& b, const Point& c)
+{
+  const double bx = b.x - a.x, by = b.y - a.y, cx = c.x - a.x, cy = c.y - a.y;
+  const double b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
+  const double d = 2.0 * (bx * cy - by * cx);
+  return { a.x + (cy * b2 - by * c2) / d, a.y + (bx * c2 - cx * b2) / d };
+}
+
+} // namespace osm

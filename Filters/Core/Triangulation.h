@@ -1,0 +1,67 @@
+// An index-based 2D triangulation with Delaunay (Bowyer-Watson) insertion.
+//
+// Triangles live in flat arrays: vertices tv[3t..3t+2] counter-clockwise and
+// neighbours tn[3t+i] across edge i, the edge opposite vertex i, i.e. from
+// tv[3t+i+1] to tv[3t+i+2]. -1 marks the hull. Deleted slots are recycled.
+#ifndef osm_Triangulation_h
+#define osm_Triangulation_h
+
+#include "Geometry.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace osm
+{
+
+class Triangulation
+{
+public:
+  std::vector<Point> points;
+  std::vector<int> tv;   ///< 3 vertices per triangle slot (-1: free slot)
+  std::vector<int> tn;   ///< 3 neighbours per triangle slot
+  std::vector<int> vtri; ///< one live triangle incident to each vertex
+
+  int addPoint(const Point& p);
+  int newTriangle(int a, int b, int c);
+  void freeTriangle(int t);
+  bool alive(int t) const { return tv[3 * t] >= 0; }
+  int slots() const { return static_cast<int>(tv.size() / 3); }
+  int liveTriangles() const { return slots() - static_cast<int>(freeSlots.size()); }
+  const Point& vertex(int t, int i) const { return points[tv[3 * t + i]]; }
+
+  /// Set the neighbour links of two triangles sharing the edge (a, b).
+  void link(int t, int u);
+  /// Local index (0..2) of vertex v in triangle t, or -1.
+  int localIndex(int t, int v) const;
+
+  /// Walk from triangle start towards p. Returns a triangle whose closure
+  /// contains p, or -1 if p is outside the hull; then exitEdge holds the
+  /// triangle and local edge through which the walk left (3t + i).
+  int locate(const Point& p, int start, int* exitEdge = nullptr) const;
+
+  /// Triangles whose circumcircle strictly contains p, found from a triangle
+  /// containing p (Bowyer-Watson cavity). Fills cavity; returns false if p
+  /// coincides with a vertex of the start triangle.
+  bool cavityOf(const Point& p, int containing, std::vector<int>& cavity) const;
+
+  /// Replace the cavity by a fan around the new vertex v (a point already added).
+  /// Returns false, changing nothing, if the cavity is not star-shaped from v.
+  /// created receives the new triangles in counter-clockwise order around v.
+  bool insertIntoCavity(int v, const std::vector<int>& cavity, std::vector<int>& created);
+
+private:
+  std::vector<int> freeSlots;
+  // Scratch state kept between calls so insertion allocates nothing.
+  mutable std::vector<std::uint32_t> mark;
+  mutable std::uint32_t markStamp = 0;
+  std::vector<int> boundaryEdges;
+  std::vector<int> fanByVertex;
+};
+
+/// Circumcenter of triangle (a, b, c), computed relative to a for accuracy.
+Point circumcenter(const Point& a, const Point& b, const Point& c);
+
+} // namespace osm
+
+#endif
