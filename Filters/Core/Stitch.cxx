@@ -102,6 +102,7 @@ private:
   const double sinTheta1;
   Walk& out;
   std::vector<std::pair<int, int>> triPiece; ///< (overlay triangle, piece) traversed
+  std::vector<std::pair<int, int>> steinerHits; ///< (Steiner vertex, segment) passing through it
 };
 
 /// From vertex cur towards b: returns the next vertex if the segment runs along
@@ -207,6 +208,8 @@ void Walker::walk(int segment, int a, int b)
       static_cast<int>(out.crossings.size()) - out.pieces[piece].firstCrossing;
     if (next != b && isInput[next])
       ++out.splitsAtInputVertices;
+    else if (next != b)
+      steinerHits.push_back({ next, segment });
     cur = next;
   }
 }
@@ -287,6 +290,15 @@ void Walker::findSegmentCrossings(const std::vector<Segment>&)
   for (const Crossing& c : out.crossings)
     if (edgePiece[c.edge] >= 0 && !out.pieces[c.piece].duplicate)
       record(c.piece, edgePiece[c.edge], c.p);
+  // ...or both pass exactly through the same Steiner vertex.
+  std::sort(steinerHits.begin(), steinerHits.end());
+  for (std::size_t k = 1; k < steinerHits.size(); ++k)
+  {
+    const auto [v, s] = steinerHits[k];
+    if (v == steinerHits[k - 1].first && s != steinerHits[k - 1].second)
+      out.segmentCrossings.push_back({ std::min(s, steinerHits[k - 1].second),
+        std::max(s, steinerHits[k - 1].second), P[v] });
+  }
   auto& sc = out.segmentCrossings;
   std::sort(sc.begin(), sc.end(), [](const SegmentCrossing& x, const SegmentCrossing& y) {
     return x.a < y.a || (x.a == y.a && x.b < y.b);

@@ -1,0 +1,21 @@
+// Plain Delaunay triangulation of a point set by bulk insertion: Hilbert order,
+// walking point location, Bowyer-Watson insertion. Used by the tests as an
+// independent check of the triangulation layer, and by benchmarks as the
+// "triangulation alone" reference.
+#ifndef osm_Delaunay_h
+#define osm_Delaunay_h
+
+#include "Triangulation.h"
+
+#include <vector>
+
+namespace osm
+{
+
+/// Delaunay triangulation of distinct finite points inside a padded box whose
+/// corners are vertices 0..3; point i becomes vertex vertexOf[i].
+Triangulation delaunayTriangulation(const std::vector<Point>& points, std::vector<int>& vertexOf);
+
+} // namespace osm
+
+#endif

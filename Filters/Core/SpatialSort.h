@@ -1,0 +1,19 @@
+// Ordering points along a Hilbert curve, so that consecutive points are close:
+// bulk insertion then walks only a few triangles per point, and memory is
+// touched locally.
+#ifndef osm_SpatialSort_h
+#define osm_SpatialSort_h
+
+#include "Geometry.h"
+
+#include <vector>
+
+namespace osm
+{
+
+/// Indices of points in Hilbert-curve order (ties keep input order).
+std::vector<int> hilbertOrder(const std::vector<Point>& points);
+
+} // namespace osm
+
+#endif

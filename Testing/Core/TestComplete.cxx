@@ -1,0 +1,118 @@
+// Phase 3: the min-max-angle triangulation of a polygon, checked against an
+// exhaustive search over all triangulations of small polygons.
+#include "Complete.h"
+#include "Predicates.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <numeric>
+#include <random>
+
+using namespace osm;
+
+namespace
+{
+
+double largestAngle(const std::vector<Point>& P, const std::vector<Triangle>& tris)
+{
+  double m = 0;
+  for (const Triangle& t : tris)
+    m = std::max(m, maxAngle(P[t[0]], P[t[1]], P[t[2]]));
+  return m;
+}
+
+/// Smallest largest angle over all triangulations of a convex polygon (Catalan many).
+double bruteForceConvex(const std::vector<Point>& P)
+{
+  const int k = static_cast<int>(P.size());
+  std::function<double(int, int)> best = [&](int i, int j) -> double {
+    if (j - i < 2)
+      return 0;
+    double b = std::numeric_limits<double>::infinity();
+    for (int m = i + 1; m < j; ++m)
+      b = std::min(b, std::max({ best(i, m), best(m, j), maxAngle(P[i], P[m], P[j]) }));
+    return b;
+  };
+  return best(0, k - 1);
+}
+
+std::vector<int> iota(std::size_t n)
+{
+  std::vector<int> ids(n);
+  std::iota(ids.begin(), ids.end(), 0);
+  return ids;
+}
+
+void expectValidTriangulation(const std::vector<Point>& P, const std::vector<Triangle>& tris)
+{
+  ASSERT_EQ(tris.size(), P.size() - 2);
+  double area = 0, polygonArea = 0;
+  for (const Triangle& t : tris)
+  {
+    ASSERT_GT(orient2d(P[t[0]], P[t[1]], P[t[2]]), 0);
+    area += orient2d(P[t[0]], P[t[1]], P[t[2]]);
+  }
+  for (std::size_t i = 0; i < P.size(); ++i)
+  {
+    const Point &a = P[i], &b = P[(i + 1) % P.size()];
+    polygonArea += a.x * b.y - b.x * a.y;
+  }
+  EXPECT_NEAR(area, polygonArea, 1e-9 * std::fabs(polygonArea));
+}
+
+} // namespace
+
+TEST(Complete, ConvexPolygonsMatchExhaustiveSearch)
+{
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> U(0, 2 * std::acos(-1.0));
+  for (int trial = 0; trial < 200; ++trial)
+  {
+    const int k = 4 + trial % 5;
+    std::vector<double> angles(k);
+    for (double& a : angles)
+      a = U(rng);
+    std::sort(angles.begin(), angles.end());
+    std::vector<Point> P;
+    for (double a : angles)
+      P.push_back({ std::cos(a) * (1 + 0.0 * a), std::sin(a) });
+    std::vector<Triangle> tris;
+    ASSERT_TRUE(triangulateMinMaxAngle(P, iota(P.size()), tris));
+    expectValidTriangulation(P, tris);
+    EXPECT_NEAR(largestAngle(P, tris), bruteForceConvex(P), 1e-12) << "trial " << trial;
+  }
+}
+
+TEST(Complete, NonConvexPolygonUsesOnlyInteriorDiagonals)
+{
+  // An arrow-head: vertex 2 is reflex, so diagonal 1-3 lies outside.
+  const std::vector<Point> P{ { 0, 0 }, { 4, 0 }, { 2, 1 }, { 4, 4 }, { 0, 4 } };
+  std::vector<Triangle> tris;
+  ASSERT_TRUE(triangulateMinMaxAngle(P, iota(P.size()), tris));
+  expectValidTriangulation(P, tris);
+  for (const Triangle& t : tris)
+    for (int i = 0; i < 3; ++i)
+      EXPECT_FALSE((t[i] == 1 && t[(i + 1) % 3] == 3) || (t[i] == 3 && t[(i + 1) % 3] == 1));
+}
+
+TEST(Complete, StraightAnglesNeverGiveZeroAreaTriangles)
+{
+  // Stitch vertices make 180° polygon corners: a square with points on its sides.
+  const std::vector<Point> P{ { 0, 0 }, { 1, 0 }, { 2, 0 }, { 2, 1 }, { 2, 2 }, { 1, 2 },
+    { 0, 2 }, { 0, 1 } };
+  std::vector<Triangle> tris;
+  ASSERT_TRUE(triangulateMinMaxAngle(P, iota(P.size()), tris));
+  expectValidTriangulation(P, tris);
+  EXPECT_LE(largestAngle(P, tris) * 180 / std::acos(-1.0), 90.0 + 1e-9);
+}
+
+TEST(Complete, ReportsImpossiblePolygons)
+{
+  // All vertices collinear: no triangle of positive area exists.
+  const std::vector<Point> P{ { 0, 0 }, { 1, 0 }, { 2, 0 }, { 3, 0 } };
+  std::vector<Triangle> tris;
+  EXPECT_FALSE(triangulateMinMaxAngle(P, iota(P.size()), tris));
+}

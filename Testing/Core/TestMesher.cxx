@@ -1,0 +1,333 @@
+// osm::mesh end to end: input cleaning rules, domains, stitching bookkeeping,
+// determinism, caps and abort. The validator is the oracle throughout.
+#include "MeshTestUtils.h"
+
+#include <cmath>
+
+using namespace osm;
+
+namespace
+{
+
+/// A 10x10 square with a 5° wedge and a slit inside it.
+Pslg wedgeInSquare()
+{
+  Pslg p;
+  const double tip = 2 + 6 * std::tan(5 * std::acos(-1.0) / 180);
+  p.points = { { 0, 0 }, { 10, 0 }, { 10, 10 }, { 0, 10 }, { 2, 2 }, { 8, 2 }, { 8, tip },
+    { 3, 7 }, { 7, 8 } };
+  p.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 }, { 4, 5 }, { 4, 6 }, { 7, 8 } };
+  return p;
+}
+
+Pslg square()
+{
+  Pslg p;
+  p.points = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } };
+  p.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 } };
+  return p;
+}
+
+double area(const TriMesh& m)
+{
+  double a = 0;
+  for (const Triangle& t : m.triangles)
+  {
+    const Point &p = m.vertices[t[0]], &q = m.vertices[t[1]], &r = m.vertices[t[2]];
+    a += 0.5 * ((q.x - p.x) * (r.y - p.y) - (q.y - p.y) * (r.x - p.x));
+  }
+  return a;
+}
+
+bool mentions(const std::vector<std::string>& warnings, const std::string& what)
+{
+  for (const std::string& w : warnings)
+    if (w.find(what) != std::string::npos)
+      return true;
+  return false;
+}
+
+} // namespace
+
+TEST(Mesher, MeshesAWedgeWithinTheBound)
+{
+  const Result r = meshAndValidate(wedgeInSquare(), "wedge");
+  EXPECT_GT(r.mesh.triangles.size(), 20u);
+  EXPECT_NEAR(area(r.mesh), 100.0, 1e-9);
+  EXPECT_LE(r.stats.maxAngleDeg, 170.0);
+  EXPECT_NEAR(r.stats.predictedMaxAngleDeg, 169.95, 0.01);
+  EXPECT_LE(r.stats.largestFace, 6u); // the paper's Lemma 1
+  EXPECT_EQ(r.stats.regions, 1u);
+  for (std::size_t i = 0; i < r.inputVertex.size(); ++i)
+  {
+    ASSERT_GE(r.inputVertex[i], 0);
+    EXPECT_EQ(r.mesh.vertices[r.inputVertex[i]], wedgeInSquare().points[i]);
+    EXPECT_EQ(r.vertexOrigin[r.inputVertex[i]], VertexOrigin::Input);
+  }
+}
+
+TEST(Mesher, OverlayIsAQualityMesh)
+{
+  const Result r = meshAndValidate(wedgeInSquare(), "wedge");
+  ASSERT_FALSE(r.overlay.triangles.empty());
+  ValidationOptions vo;
+  vo.checkConformity = false;
+  vo.maxAngleDeg = 180 - 2 * 30 + 1e-6;
+  Pslg points;
+  points.points = wedgeInSquare().points;
+  const ValidationReport rep = validate(points, r.overlay.vertices, r.overlay.triangles, vo);
+  EXPECT_TRUE(rep.ok) << (rep.errors.empty() ? "" : rep.errors.front());
+  EXPECT_GE(rep.minAngleDeg, 30.0 - 1e-6);
+}
+
+TEST(Mesher, EdgeClassesAreConsistent)
+{
+  const Result r = meshAndValidate(wedgeInSquare(), "wedge");
+  std::size_t overlay = 0, discarded = 0, keptCrossed = 0, uncrossed = 0, input = 0;
+  for (const Edge& e : r.edges)
+  {
+    ASSERT_GE(e.a, 0);
+    ASSERT_LT(static_cast<std::size_t>(e.b), r.edgeVertices.size());
+    if (e.flags & EdgeOverlay)
+    {
+      ++overlay;
+      // Kept and discarded are exclusive, and one of them always holds.
+      EXPECT_NE(bool(e.flags & EdgeKept), bool(e.flags & EdgeDiscarded));
+    }
+    discarded += edgeClass(e.flags) == EdgeClass::Discarded;
+    keptCrossed += edgeClass(e.flags) == EdgeClass::Kept;
+    uncrossed += (e.flags & EdgeOverlay) && !(e.flags & EdgeCrossed);
+    input += (e.flags & EdgeInput) != 0;
+  }
+  EXPECT_EQ(overlay, r.stats.uncrossedEdges + r.stats.keptEdges + r.stats.discardedEdges);
+  EXPECT_EQ(discarded, r.stats.discardedEdges);
+  EXPECT_EQ(keptCrossed, r.stats.keptEdges);
+  EXPECT_EQ(uncrossed, r.stats.uncrossedEdges);
+  EXPECT_GT(r.stats.discardedEdges, 0u); // the 5° wedge forces bad crossings
+  EXPECT_GT(input, wedgeInSquare().segments.size());
+  EXPECT_EQ(r.stats.crossings, r.stats.goodCrossings + r.stats.badCrossings);
+}
+
+TEST(Mesher, IsDeterministic)
+{
+  const Result a = mesh(wedgeInSquare());
+  const Result b = mesh(wedgeInSquare());
+  ASSERT_TRUE(a.ok && b.ok);
+  ASSERT_EQ(a.mesh.vertices.size(), b.mesh.vertices.size());
+  for (std::size_t i = 0; i < a.mesh.vertices.size(); ++i)
+    EXPECT_EQ(a.mesh.vertices[i], b.mesh.vertices[i]);
+  EXPECT_EQ(a.mesh.triangles, b.mesh.triangles);
+  EXPECT_EQ(a.regionId, b.regionId);
+}
+
+TEST(Clean, MergesDuplicatePoints)
+{
+  Pslg p = square();
+  p.points.push_back({ 1, 1 }); // same as point 2
+  p.segments.push_back({ 0, 4 });
+  const Result r = meshAndValidate(p, "duplicate");
+  EXPECT_EQ(r.stats.duplicatePointsMerged, 1u);
+  EXPECT_TRUE(mentions(r.warnings, "duplicate point"));
+  EXPECT_EQ(r.inputVertex[4], r.inputVertex[2]);
+}
+
+TEST(Clean, DropsZeroLengthSegments)
+{
+  Pslg p = square();
+  p.points.push_back({ 0, 0 });
+  p.segments.push_back({ 0, 4 });
+  const Result r = meshAndValidate(p, "zero length");
+  EXPECT_EQ(r.stats.zeroLengthSegmentsDropped, 1u);
+  EXPECT_TRUE(mentions(r.warnings, "segment 4"));
+}
+
+TEST(Clean, MergesDuplicateSegments)
+{
+  Pslg p = square();
+  p.segments.push_back({ 1, 0 });
+  const Result r = meshAndValidate(p, "duplicate segment");
+  EXPECT_EQ(r.stats.duplicateSegmentsMerged, 1u);
+}
+
+TEST(Clean, SplitsSegmentsAtVerticesOnThem)
+{
+  Pslg p = square();
+  p.points.push_back({ 0.5, 0 }); // a T-junction on the bottom side
+  p.points.push_back({ 0.5, 0.5 });
+  p.segments.push_back({ 4, 5 });
+  const Result r = meshAndValidate(p, "T-junction");
+  EXPECT_GE(r.stats.segmentsSplitAtVertices, 1u);
+}
+
+TEST(Clean, MergesCollinearOverlaps)
+{
+  Pslg p;
+  p.points = { { 0, 0 }, { 2, 0 }, { 1, 0 }, { 3, 0 }, { 1.5, 1 } };
+  p.segments = { { 0, 1 }, { 2, 3 }, { 0, 4 }, { 4, 3 } };
+  const Result r = meshAndValidate(p, "overlap");
+  EXPECT_GE(r.stats.segmentsSplitAtVertices, 2u);
+}
+
+TEST(Clean, SplitsCrossingSegments)
+{
+  Pslg p = square();
+  p.segments.push_back({ 0, 2 });
+  p.segments.push_back({ 1, 3 });
+  Pslg withCentre = p; // the validator checks the split halves
+  const Result r = meshAndValidate(p, "cross");
+  EXPECT_EQ(r.stats.crossingsSplit, 1u);
+  std::size_t other = 0;
+  for (VertexOrigin o : r.vertexOrigin)
+    other += o == VertexOrigin::Other;
+  EXPECT_EQ(other, 1u);
+  EXPECT_EQ(r.stats.regions, 4u);
+}
+
+TEST(Clean, RefusesCrossingsWhenAskedTo)
+{
+  Pslg p = square();
+  p.segments.push_back({ 0, 2 });
+  p.segments.push_back({ 1, 3 });
+  Options o;
+  o.resolveCrossings = false;
+  const Result r = mesh(p, o);
+  EXPECT_FALSE(r.ok);
+  EXPECT_NE(r.error.find("segments 4 and 5 cross"), std::string::npos) << r.error;
+  EXPECT_TRUE(r.mesh.triangles.empty());
+}
+
+TEST(Clean, RefusesNonFiniteCoordinatesNamingThePoint)
+{
+  Pslg p = square();
+  p.points[2].y = std::nan("");
+  Result r = mesh(p);
+  EXPECT_FALSE(r.ok);
+  EXPECT_NE(r.error.find("point 2"), std::string::npos) << r.error;
+  p.points[2].y = INFINITY;
+  r = mesh(p);
+  EXPECT_NE(r.error.find("point 2"), std::string::npos) << r.error;
+}
+
+TEST(Clean, RefusesSegmentIndicesOutOfRange)
+{
+  Pslg p = square();
+  p.segments.push_back({ 0, 9 });
+  const Result r = mesh(p);
+  EXPECT_FALSE(r.ok);
+  EXPECT_NE(r.error.find("segment 4 refers to point 9"), std::string::npos) << r.error;
+}
+
+TEST(Clean, EmptyInputGivesAnEmptyMeshAndAWarning)
+{
+  const Result r = mesh(Pslg{});
+  EXPECT_TRUE(r.ok);
+  EXPECT_TRUE(r.mesh.triangles.empty());
+  EXPECT_TRUE(mentions(r.warnings, "no points"));
+}
+
+TEST(Domain, BoxHullAndEnclosed)
+{
+  Pslg p = wedgeInSquare();
+  Options o;
+  o.domain = Domain::Box;
+  const Result box = meshAndValidate(p, "box", o);
+  EXPECT_GT(area(box.mesh), 100.0 * 4); // the padded box is several times the input
+  o.domain = Domain::Enclosed;
+  const Result enclosed = meshAndValidate(p, "enclosed", o);
+  EXPECT_NEAR(area(enclosed.mesh), 100.0, 1e-9);
+  // Without the square's sides, Auto falls back to the convex hull.
+  p.segments.erase(p.segments.begin(), p.segments.begin() + 4);
+  const Result hull = meshAndValidate(p, "auto hull");
+  EXPECT_NEAR(area(hull.mesh), 100.0, 1e-9);
+}
+
+TEST(Domain, HolesRemoveTheirRegion)
+{
+  Pslg p = square();
+  p.points.insert(p.points.end(), { { 0.25, 0.25 }, { 0.75, 0.25 }, { 0.75, 0.75 }, { 0.25, 0.75 } });
+  p.segments.insert(p.segments.end(), { { 4, 5 }, { 5, 6 }, { 6, 7 }, { 7, 4 } });
+  const Result noHole = meshAndValidate(p, "no hole");
+  EXPECT_EQ(noHole.stats.regions, 2u);
+  p.holes.push_back({ 0.5, 0.5 });
+  const Result r = meshAndValidate(p, "hole");
+  EXPECT_NEAR(area(r.mesh), 1.0 - 0.25, 1e-12);
+  EXPECT_EQ(r.stats.regions, 1u);
+}
+
+TEST(Mesher, SteinerCapGivesAClearError)
+{
+  Options o;
+  o.maxSteinerPoints = 10;
+  const Result r = mesh(wedgeInSquare(), o);
+  EXPECT_FALSE(r.ok);
+  EXPECT_NE(r.error.find("Steiner"), std::string::npos) << r.error;
+  EXPECT_TRUE(r.mesh.triangles.empty());
+}
+
+TEST(Mesher, MaxEdgeLengthRefines)
+{
+  Options o;
+  o.maxEdgeLength = 0.5;
+  const Result fine = meshAndValidate(wedgeInSquare(), "fine", o);
+  const Result coarse = meshAndValidate(wedgeInSquare(), "coarse");
+  EXPECT_GT(fine.mesh.triangles.size(), 2 * coarse.mesh.triangles.size());
+  for (const Edge& e : fine.edges)
+    if ((e.flags & EdgeOverlay) && (e.flags & EdgeKept))
+    {
+      const Point &a = fine.edgeVertices[e.a], &b = fine.edgeVertices[e.b];
+      const bool inside = std::min(a.x, b.x) >= 0 && std::max(a.x, b.x) <= 10 &&
+        std::min(a.y, b.y) >= 0 && std::max(a.y, b.y) <= 10;
+      if (inside)
+        EXPECT_LE(std::sqrt(dist2(a, b)), 0.5 * (1 + 1e-12));
+    }
+}
+
+TEST(Mesher, RejectsBadOptions)
+{
+  Options o;
+  o.minAngleDeg = 50;
+  EXPECT_FALSE(mesh(square(), o).ok);
+  o = {};
+  o.maxEdgeLength = -1;
+  EXPECT_FALSE(mesh(square(), o).ok);
+}
+
+namespace
+{
+struct CountingProgress : Progress
+{
+  int reports = 0;
+  int abortAfter = -1;
+  double last = -1;
+  bool monotone = true;
+  void report(double f, const char*) override
+  {
+    monotone = monotone && f >= last - 1e-12;
+    last = f;
+    ++reports;
+  }
+  bool aborted() override { return abortAfter >= 0 && reports > abortAfter; }
+};
+
+Pslg manyPoints(int n)
+{
+  Pslg p;
+  for (int i = 0; i < n; ++i)
+    p.points.push_back({ std::fmod(i * 0.618033988749895, 1.0), std::fmod(i * 0.41421356, 1.0) });
+  return p;
+}
+} // namespace
+
+TEST(Mesher, ReportsProgressAndHonoursAbort)
+{
+  CountingProgress progress;
+  Result r = mesh(manyPoints(20000), {}, &progress);
+  EXPECT_TRUE(r.ok) << r.error;
+  EXPECT_GT(progress.reports, 5);
+  EXPECT_TRUE(progress.monotone);
+  CountingProgress stopper;
+  stopper.abortAfter = 3;
+  r = mesh(manyPoints(20000), {}, &stopper);
+  EXPECT_FALSE(r.ok);
+  EXPECT_NE(r.error.find("aborted"), std::string::npos);
+}

@@ -1,0 +1,195 @@
+// Property tests: generated inputs of the kinds that break meshers (tiny
+// angles, near-parallel segments, spirals, clusters of huge spread, far from
+// the origin), many seeds each, with the independent validator as oracle.
+#include "MeshTestUtils.h"
+#include "Predicates.h"
+
+#include <cmath>
+#include <random>
+
+using namespace osm;
+
+namespace
+{
+
+const double kPi = std::acos(-1.0);
+
+/// Spokes from a hub, consecutive ones `step` degrees apart, plus a random one.
+Pslg fan(std::mt19937_64& rng, double stepDeg)
+{
+  std::uniform_real_distribution<double> U(0.2, 1.0);
+  Pslg p;
+  p.points.push_back({ 0, 0 });
+  const int spokes = 2 + static_cast<int>(rng() % 6);
+  const double base = U(rng) * 2 * kPi;
+  for (int i = 0; i < spokes; ++i)
+  {
+    const double a = base + i * stepDeg * kPi / 180, r = U(rng);
+    p.points.push_back({ r * std::cos(a), r * std::sin(a) });
+    p.segments.push_back({ 0, i + 1 });
+  }
+  const double a = base + 180 * kPi / 180;
+  p.points.push_back({ std::cos(a), std::sin(a) });
+  p.segments.push_back({ 0, spokes + 1 });
+  return p;
+}
+
+/// Two long segments `gap` apart (relative to their length), at a random angle.
+Pslg nearParallel(std::mt19937_64& rng, double gap)
+{
+  std::uniform_real_distribution<double> U(0, 1);
+  const double a = U(rng) * kPi, c = std::cos(a), s = std::sin(a), shift = U(rng) * 0.5;
+  auto at = [&](double x, double y) { return Point{ x * c - y * s, x * s + y * c }; };
+  Pslg p;
+  p.points = { at(0, 0), at(1, 0), at(shift, gap), at(shift + 1, gap) };
+  p.segments = { { 0, 1 }, { 2, 3 } };
+  return p;
+}
+
+/// A polyline spiralling inwards with geometrically shrinking radius.
+Pslg spiral(std::mt19937_64& rng)
+{
+  std::uniform_real_distribution<double> U(0, 1);
+  const double ratio = 0.9 + 0.08 * U(rng), step = 0.3 + 0.5 * U(rng);
+  Pslg p;
+  double r = 1;
+  for (int i = 0; i < 150; ++i, r *= ratio)
+  {
+    p.points.push_back({ r * std::cos(i * step), r * std::sin(i * step) });
+    if (i > 0)
+      p.segments.push_back({ i - 1, i });
+  }
+  return p;
+}
+
+bool crossesAny(const Pslg& p, const Point& a, const Point& b)
+{
+  for (const Segment& s : p.segments)
+  {
+    const Point &c = p.points[s[0]], &d = p.points[s[1]];
+    const int o1 = orientSign(a, b, c), o2 = orientSign(a, b, d);
+    const int o3 = orientSign(c, d, a), o4 = orientSign(c, d, b);
+    if (o1 * o2 <= 0 && o3 * o4 <= 0)
+      return true; // crossing or touching: keep the generated input clean
+  }
+  return false;
+}
+
+/// Random segments in the unit square, each kept only if it touches no other.
+Pslg randomSegments(std::mt19937_64& rng, int count)
+{
+  std::uniform_real_distribution<double> U(0, 1), L(-0.15, 0.15);
+  Pslg p;
+  for (int tries = 0; tries < 20 * count && static_cast<int>(p.segments.size()) < count; ++tries)
+  {
+    const Point a{ U(rng), U(rng) };
+    const Point b{ a.x + L(rng), a.y + L(rng) };
+    if (crossesAny(p, a, b))
+      continue;
+    const int i = static_cast<int>(p.points.size());
+    p.points.push_back(a);
+    p.points.push_back(b);
+    p.segments.push_back({ i, i + 1 });
+  }
+  return p;
+}
+
+/// Clusters of points and short segments whose size is 1e-8 of their spacing.
+Pslg clusters(std::mt19937_64& rng)
+{
+  std::uniform_real_distribution<double> U(0, 1);
+  Pslg p;
+  for (int c = 0; c < 4; ++c)
+  {
+    const Point centre{ U(rng), U(rng) };
+    const int first = static_cast<int>(p.points.size());
+    for (int i = 0; i < 6; ++i)
+      p.points.push_back({ centre.x + 1e-8 * U(rng), centre.y + 1e-8 * U(rng) });
+    p.segments.push_back({ first, first + 1 });
+  }
+  return p;
+}
+
+Pslg translated(Pslg p, double offset)
+{
+  for (Point& q : p.points)
+    q = { q.x + offset, q.y + offset * 0.5 };
+  return p;
+}
+
+constexpr int kSeeds = 25;
+
+} // namespace
+
+TEST(Properties, FansDownToAHundredthOfADegree)
+{
+  for (double step : { 10.0, 1.0, 0.1, 0.01 })
+    for (int seed = 0; seed < kSeeds; ++seed)
+    {
+      std::mt19937_64 rng(seed);
+      meshAndValidate(fan(rng, step), "fan " + std::to_string(step) + " seed " + std::to_string(seed));
+    }
+}
+
+TEST(Properties, NearParallelSegmentsDownToGapsOf1e9)
+{
+  for (double gap : { 1e-3, 1e-5, 1e-7, 1e-9 })
+    for (int seed = 0; seed < kSeeds; ++seed)
+    {
+      std::mt19937_64 rng(seed);
+      meshAndValidate(
+        nearParallel(rng, gap), "gap " + std::to_string(gap) + " seed " + std::to_string(seed));
+    }
+}
+
+TEST(Properties, GeometricSpirals)
+{
+  for (int seed = 0; seed < kSeeds; ++seed)
+  {
+    std::mt19937_64 rng(seed);
+    meshAndValidate(spiral(rng), "spiral seed " + std::to_string(seed));
+  }
+}
+
+TEST(Properties, RandomNonCrossingSegments)
+{
+  for (int seed = 0; seed < kSeeds; ++seed)
+  {
+    std::mt19937_64 rng(seed);
+    meshAndValidate(randomSegments(rng, 60), "random seed " + std::to_string(seed));
+  }
+}
+
+TEST(Properties, ClustersWithSpread1e8)
+{
+  for (int seed = 0; seed < kSeeds; ++seed)
+  {
+    std::mt19937_64 rng(seed);
+    meshAndValidate(clusters(rng), "clusters seed " + std::to_string(seed));
+  }
+}
+
+TEST(Properties, TranslatedFarFromTheOrigin)
+{
+  for (int seed = 0; seed < kSeeds; ++seed)
+  {
+    std::mt19937_64 rng(seed);
+    const std::string s = std::to_string(seed);
+    meshAndValidate(translated(fan(rng, 1.0), 1e7), "far fan seed " + s);
+    meshAndValidate(translated(spiral(rng), 1e7), "far spiral seed " + s);
+    meshAndValidate(translated(randomSegments(rng, 30), 1e7), "far random seed " + s);
+    meshAndValidate(translated(nearParallel(rng, 1e-6), 1e7), "far parallel seed " + s);
+  }
+}
+
+TEST(Properties, SameInputSameOutput)
+{
+  std::mt19937_64 rng(3);
+  const Pslg p = randomSegments(rng, 40);
+  const Result a = mesh(p), b = mesh(p);
+  ASSERT_TRUE(a.ok && b.ok);
+  EXPECT_EQ(a.mesh.triangles, b.mesh.triangles);
+  ASSERT_EQ(a.mesh.vertices.size(), b.mesh.vertices.size());
+  for (std::size_t i = 0; i < a.mesh.vertices.size(); ++i)
+    ASSERT_EQ(a.mesh.vertices[i], b.mesh.vertices[i]);
+}

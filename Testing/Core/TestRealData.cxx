@@ -1,0 +1,38 @@
+// Every .poly input in ../shared/data/pslg: mesh, validate, report a table.
+// Skips cleanly where the folder is absent (a user's clone has no ../shared).
+#include "MeshTestUtils.h"
+#include "PolyReader.h"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+
+using namespace osm;
+namespace fs = std::filesystem;
+
+TEST(RealData, EveryPolyFileMeshesWithinTheBound)
+{
+  const fs::path dir(OSM_SHARED_DATA_DIR);
+  if (!fs::is_directory(dir))
+    GTEST_SKIP() << "no shared data folder at " << dir;
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::directory_iterator(dir))
+    if (entry.path().extension() == ".poly")
+      files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  ASSERT_FALSE(files.empty());
+  std::printf("%-26s %9s %9s %9s %9s %8s %5s %8s\n", "input", "in.verts", "verts", "triangles",
+    "min.angle", "max.angle", "face", "seconds");
+  for (const fs::path& f : files)
+  {
+    const PolyFile poly = readPolyFile(f.string());
+    ASSERT_TRUE(poly.ok) << poly.error;
+    const auto t0 = std::chrono::steady_clock::now();
+    const Result r = meshAndValidate(poly.pslg, f.filename().string());
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    EXPECT_LE(r.stats.maxAngleDeg, 170.0) << f;
+    std::printf("%-26s %9zu %9zu %9zu %9.4f %9.4f %5zu %8.3f\n", f.filename().c_str(),
+      poly.pslg.points.size(), r.mesh.vertices.size(), r.mesh.triangles.size(),
+      r.stats.minAngleDeg, r.stats.maxAngleDeg, r.stats.largestFace, s);
+  }
+}

@@ -1,0 +1,129 @@
+// The triangulation layer: bulk Delaunay insertion and the SVR overlay, checked
+// for the empty-circle property, quality, and that every point is a vertex.
+#include "Delaunay.h"
+#include "Overlay.h"
+#include "Predicates.h"
+#include "SpatialSort.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <set>
+
+using namespace osm;
+
+namespace
+{
+
+/// Every live triangle is CCW, neighbours agree, and no neighbour's far vertex
+/// lies strictly inside its circumcircle (local Delaunay = Delaunay).
+void expectDelaunay(const Triangulation& T)
+{
+  for (int t = 0; t < T.slots(); ++t)
+  {
+    if (!T.alive(t))
+      continue;
+    ASSERT_GT(orient2d(T.vertex(t, 0), T.vertex(t, 1), T.vertex(t, 2)), 0) << "triangle " << t;
+    for (int i = 0; i < 3; ++i)
+    {
+      const int u = T.tn[3 * t + i];
+      if (u < 0)
+        continue;
+      ASSERT_TRUE(T.alive(u));
+      int far = -1;
+      for (int j = 0; j < 3; ++j)
+        if (T.localIndex(t, T.tv[3 * u + j]) < 0)
+          far = T.tv[3 * u + j];
+      ASSERT_GE(far, 0);
+      EXPECT_LE(incircle(T.vertex(t, 0), T.vertex(t, 1), T.vertex(t, 2), T.points[far]), 0)
+        << "triangle " << t << " is not Delaunay";
+    }
+  }
+}
+
+std::vector<Point> randomPoints(int n, unsigned seed)
+{
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> U(0, 1);
+  std::vector<Point> pts(n);
+  for (Point& p : pts)
+    p = { U(rng), U(rng) };
+  return pts;
+}
+
+} // namespace
+
+TEST(Triangulation, BulkDelaunayOfRandomAndGridPoints)
+{
+  std::vector<int> vertexOf;
+  Triangulation T = delaunayTriangulation(randomPoints(3000, 1), vertexOf);
+  expectDelaunay(T);
+  EXPECT_EQ(T.liveTriangles(), 2 * 3000 + 2); // 2n + 2 for n points inside a 4-corner box
+  for (int v : vertexOf)
+    EXPECT_GE(v, 0);
+  // A grid is full of cocircular quadruples: the exact incircle must cope.
+  std::vector<Point> grid;
+  for (int i = 0; i < 40; ++i)
+    for (int j = 0; j < 40; ++j)
+      grid.push_back({ i * 0.1, j * 0.1 });
+  T = delaunayTriangulation(grid, vertexOf);
+  expectDelaunay(T);
+  EXPECT_EQ(T.liveTriangles(), 2 * 1600 + 2);
+}
+
+TEST(Triangulation, HilbertOrderIsAPermutation)
+{
+  const std::vector<Point> pts = randomPoints(1000, 2);
+  std::vector<int> order = hilbertOrder(pts);
+  EXPECT_EQ(std::set<int>(order.begin(), order.end()).size(), pts.size());
+  // Consecutive points are close on average: far less than random pairs (~0.52).
+  double total = 0;
+  for (std::size_t i = 1; i < order.size(); ++i)
+    total += std::sqrt(dist2(pts[order[i]], pts[order[i - 1]]));
+  EXPECT_LT(total / (order.size() - 1), 0.1);
+}
+
+TEST(Overlay, IsADelaunayQualityMeshOfThePoints)
+{
+  for (double angle : { 20.0, 25.0, 30.0 })
+  {
+    RunContext run(nullptr);
+    OverlayOptions o;
+    o.gamma = gammaForMinAngle(angle);
+    const std::vector<Point> pts = randomPoints(500, 3);
+    const Overlay ov = buildOverlay(pts, o, run);
+    expectDelaunay(ov.mesh);
+    for (std::size_t i = 0; i < pts.size(); ++i)
+    {
+      ASSERT_GE(ov.inputVertex[i], 0);
+      EXPECT_EQ(ov.mesh.points[ov.inputVertex[i]], pts[i]);
+      EXPECT_TRUE(ov.isInput[ov.inputVertex[i]]);
+    }
+    for (int t = 0; t < ov.mesh.slots(); ++t)
+      if (ov.mesh.alive(t))
+        for (int i = 0; i < 3; ++i)
+          EXPECT_GE(angleAt(ov.mesh.vertex(t, (i + 1) % 3), ov.mesh.vertex(t, i),
+                      ov.mesh.vertex(t, (i + 2) % 3)) * 180 / std::acos(-1.0),
+            angle - 1e-9);
+    EXPECT_EQ(ov.refinementsSkipped, 0u);
+  }
+}
+
+TEST(Overlay, GradesToTinyFeatures)
+{
+  // Two points 1e-8 apart in a unit square: size grows only logarithmically.
+  std::vector<Point> pts{ { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 }, { 0.5, 0.5 }, { 0.5 + 1e-8, 0.5 } };
+  RunContext run(nullptr);
+  const Overlay ov = buildOverlay(pts, {}, run);
+  expectDelaunay(ov.mesh);
+  EXPECT_LT(ov.mesh.points.size(), 3000u); // a uniform mesh would need ~1e16
+}
+
+TEST(Overlay, SteinerCapStops)
+{
+  RunContext run(nullptr);
+  OverlayOptions o;
+  o.maxSteinerPoints = 5;
+  EXPECT_THROW(buildOverlay(randomPoints(100, 4), o, run), Stop);
+}
