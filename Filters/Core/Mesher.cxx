@@ -339,8 +339,20 @@ void Mesher::buildOutput(const Work& w, const PlanarGraph& g, const Completion& 
       res.vertexOrigin[v] = VertexOrigin::Other;
   }
   res.inputVertex.assign(input.points.size(), -1);
+  std::size_t outside = 0;
+  int example = -1;
   for (std::size_t i = 0; i < input.points.size(); ++i)
+  {
     res.inputVertex[i] = newIndex[overlay.inputVertex[clean.pointOf[i]]];
+    if (res.inputVertex[i] < 0 && ++outside == 1)
+      example = static_cast<int>(i);
+  }
+  // Say so when the domain leaves input out: nothing disappears silently.
+  if (outside > 0)
+    res.warnings.push_back(std::to_string(outside) +
+      " input point(s) lie outside the meshed domain (outside every enclosed region or in a "
+      "hole) and are not in the mesh, e.g. point " + std::to_string(example) + " at " +
+      formatPoint(input.points[example]) + "; the hull or box domain keeps them");
   st.regions = carve.regions;
   st.outputVertices = res.mesh.vertices.size();
   st.outputTriangles = res.mesh.triangles.size();

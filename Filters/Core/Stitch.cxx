@@ -1,9 +1,11 @@
 #include "Stitch.h"
 
+#include "Clean.h"
 #include "Predicates.h"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 namespace osm
@@ -63,14 +65,6 @@ int localIndex(const Triangle& t, int v)
   return t[0] == v ? 0 : t[1] == v ? 1 : t[2] == v ? 2 : -1;
 }
 
-/// u lies on the ray from c through b (u, c, b known to be collinear).
-bool ahead(const Point& c, const Point& u, const Point& b)
-{
-  if (b.x != c.x)
-    return (u.x > c.x) == (b.x > c.x) && u.x != c.x;
-  return (u.y > c.y) == (b.y > c.y) && u.y != c.y;
-}
-
 double cross(double ax, double ay, double bx, double by)
 {
   return ax * by - ay * bx;
@@ -86,6 +80,10 @@ public:
     , sinTheta1(sinTheta1)
     , out(out)
   {
+    double m = 0;
+    for (const Point& p : P)
+      m = std::max({ m, std::fabs(p.x), std::fabs(p.y) });
+    nearTolerance = 8 * std::numeric_limits<double>::epsilon() * m;
   }
 
   void walk(int segment, int a, int b);
@@ -93,6 +91,7 @@ public:
 
 private:
   int firstStep(int cur, int b, int& l, int& r, int& tri);
+  bool onSegment(const Point& A, const Point& B, const Point& x, int orientation) const;
   void addCrossing(int edge, int piece, const Point& A, const Point& B);
   void markDuplicates();
 
@@ -100,10 +99,24 @@ private:
   const std::vector<Point>& P;
   const std::vector<char>& isInput;
   const double sinTheta1;
+  /// Vertices closer than this to a segment count as on it: crossings that
+  /// close would round onto the vertex. A few ulps of the largest coordinate.
+  double nearTolerance = 0;
   Walk& out;
   std::vector<std::pair<int, int>> triPiece; ///< (overlay triangle, piece) traversed
   std::vector<std::pair<int, int>> steinerHits; ///< (Steiner vertex, segment) passing through it
 };
+
+/// x lies on segment AB exactly, or so close that a crossing beside it would
+/// round onto it. Such a vertex splits the segment (a repair within rounding).
+bool Walker::onSegment(const Point& A, const Point& B, const Point& x, int orientation) const
+{
+  if (orientation == 0)
+    return true;
+  const double dx = B.x - A.x, dy = B.y - A.y;
+  const double len = std::hypot(dx, dy);
+  return std::fabs(cross(dx, dy, x.x - A.x, x.y - A.y)) <= nearTolerance * len;
+}
 
 /// From vertex cur towards b: returns the next vertex if the segment runs along
 /// an overlay edge (setting tri to that edge's id), or -1 and the triangle it
@@ -112,25 +125,37 @@ int Walker::firstStep(int cur, int b, int& l, int& r, int& tri)
 {
   const Point& C = P[cur];
   const Point& B = P[b];
+  const double bx = B.x - C.x, by = B.y - C.y, len2 = bx * bx + by * by;
+  // First look for a neighbour on the way to b (within rounding): go there.
   int t = ov.vtri[cur];
   for (std::size_t k = 0; k <= ov.tris.size(); ++k)
   {
     const int i = localIndex(ov.tris[t], cur);
-    const int u = ov.tris[t][(i + 1) % 3], w = ov.tris[t][(i + 2) % 3];
-    const int ou = orientSign(C, P[u], B);
-    if (ou == 0 && ahead(C, P[u], B))
+    const int u = ov.tris[t][(i + 1) % 3];
+    const double along = (P[u].x - C.x) * bx + (P[u].y - C.y) * by;
+    if (along > 0 && along <= len2 && onSegment(C, B, P[u], orientSign(C, P[u], B)))
     {
       tri = ov.triEdge[t][(i + 2) % 3];
       return u;
     }
-    if (ou > 0 && orientSign(C, P[w], B) < 0)
+    t = ov.nbr[t][(i + 1) % 3]; // rotate counter-clockwise around cur
+    if (t < 0 || t == ov.vtri[cur])
+      break;
+  }
+  // Otherwise b lies strictly inside the angle of one incident triangle.
+  t = ov.vtri[cur];
+  for (std::size_t k = 0; k <= ov.tris.size(); ++k)
+  {
+    const int i = localIndex(ov.tris[t], cur);
+    const int u = ov.tris[t][(i + 1) % 3], w = ov.tris[t][(i + 2) % 3];
+    if (orientSign(C, P[u], B) > 0 && orientSign(C, P[w], B) < 0)
     {
       r = u;
       l = w;
       tri = t;
       return -1;
     }
-    t = ov.nbr[t][(i + 1) % 3]; // rotate counter-clockwise around cur
+    t = ov.nbr[t][(i + 1) % 3];
     if (t < 0)
       break;
   }
@@ -189,7 +214,7 @@ void Walker::walk(int segment, int a, int b)
         const int il = localIndex(ov.tris[t], l), ir = localIndex(ov.tris[t], r);
         const int x = ov.tris[t][3 - il - ir];
         const int o = orientSign(A, B, P[x]);
-        if (o == 0)
+        if (onSegment(A, B, P[x], o))
           next = x;
         else if (o > 0)
         {
@@ -403,6 +428,10 @@ PlanarGraph stitch(const OverlayEdges& ov, const Overlay& overlay, const Walk& w
         const Crossing& c = walk.crossings[order[k]];
         if (walk.pieces[c.piece].duplicate)
           continue;
+        // Distinct crossings that round to one point cannot be told apart.
+        if (c.p == g.points[prev] || c.p == g.points[ov.edges[e][1]])
+          throw Stop{ "input segments come closer to each other than double precision can "
+                      "separate, near " + formatPoint(c.p) };
         const int v = static_cast<int>(g.points.size());
         g.points.push_back(c.p);
         g.origin.push_back(VertexOrigin::Stitch);
