@@ -33,11 +33,13 @@ struct PolyFile
 };
 
 /// Read a .poly file (with a .node beside it when the .poly lists zero vertices)
-/// or a .node file (points only). Never throws.
+/// or a .node file (points only). Never throws. The extension (.poly or .node, any case)
+/// selects the format; other extensions and unreadable files give an error naming the path.
 PolyFile readPolyFile(const std::string& path);
 
 /// Parse .poly text from a stream; name is used in error messages. If the text lists
 /// zero vertices, nodeText (the .node content) supplies them; without it that is an error.
+/// Errors in nodeText are reported under name with its extension replaced by ".node".
 PolyFile parsePoly(std::istream& in, const std::string& name, std::istream* nodeText = nullptr);
 
 /// Parse .node text (points, attributes, markers).
