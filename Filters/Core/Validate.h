@@ -23,17 +23,25 @@ struct ValidationOptions
   bool checkConformity = true;
   /// Also check that every input point is a mesh vertex. Off when holes may remove some.
   bool requireAllInputVertices = true;
+  /// Keep at most this many messages in ValidationReport::errors (all are still counted).
+  std::size_t maxErrorMessages = 50;
 };
 
 struct ValidationReport
 {
   bool ok = true;
   std::vector<std::string> errors; ///< at most a few dozen, each naming the element
+  std::size_t errorCount = 0;      ///< every failure found, kept in errors or not
   double minAngleDeg = 0.0;
   double maxAngleDeg = 0.0;
   std::size_t triangles = 0;
 };
 
+/// Checks, strictly and independently of the mesher: index validity, exact positive
+/// orientation, manifold and consistently oriented edges, a non-overlapping cover (vertex fans,
+/// boundary edges, vertices inside triangles, pairwise overlap for small meshes), no coincident
+/// mesh vertices, input points present, input segments conforming, and the angle bound.
+/// O(n log n) beyond the brute-force limit; ok is false iff errorCount > 0.
 ValidationReport validate(const Pslg& input, const std::vector<Point>& vertices,
   const std::vector<Triangle>& triangles, const ValidationOptions& options = {});
 
