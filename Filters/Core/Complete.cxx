@@ -189,36 +189,39 @@ Completion complete(const PlanarGraph& g, Statistics& stats, RunContext& run)
       out.constrainedEdges.push_back(
         { std::min(g.edges[e][0], g.edges[e][1]), std::max(g.edges[e][0], g.edges[e][1]) });
   // Trace every face: after u->v, turn to the edge clockwise-next from v->u.
+  // Faces are stored flat (faceStart, faceVertices) to avoid an allocation each.
   std::vector<char> seen(nh, 0);
-  std::vector<std::vector<int>> faces;
+  std::vector<int> faceStart{ 0 }, faceVertices;
   std::vector<double> areas;
+  faceVertices.reserve(nh);
   for (int h0 = 0; h0 < nh; ++h0)
   {
     if (seen[h0])
       continue;
-    std::vector<int> face;
     double area = 0;
     for (int h = h0; !seen[h];)
     {
       seen[h] = 1;
       const int u = tailOf(r, h), v = r.to[h];
-      face.push_back(u);
+      faceVertices.push_back(u);
       area += g.points[u].x * g.points[v].y - g.points[v].x * g.points[u].y;
       const int back = r.twin[h]; // v->u, inside v's rotation
       h = back == r.start[v] ? r.start[v + 1] - 1 : back - 1;
     }
-    faces.push_back(std::move(face));
+    faceStart.push_back(static_cast<int>(faceVertices.size()));
     areas.push_back(area);
     run.tick(double(h0) / double(nh), 65536);
   }
   // The outer face runs clockwise around the whole box: the most negative area.
   const std::size_t outer = std::min_element(areas.begin(), areas.end()) - areas.begin();
+  out.triangles.reserve(nh / 3);
   std::vector<Point> polygon;
-  for (std::size_t f = 0; f < faces.size(); ++f)
+  std::vector<int> face;
+  for (std::size_t f = 0; f + 1 < faceStart.size(); ++f)
   {
     if (f == outer)
       continue;
-    const std::vector<int>& face = faces[f];
+    face.assign(faceVertices.begin() + faceStart[f], faceVertices.begin() + faceStart[f + 1]);
     stats.largestFace = std::max(stats.largestFace, face.size());
     if (face.size() == 3)
     {
