@@ -676,7 +676,8 @@ TEST_F(PolyReaderData, DerivedFilesParse)
   }
 }
 
-TEST_F(PolyReaderData, ReadingAustIsFast)
+// Reports the read time; speed is measured by the benchmarks, never asserted here.
+TEST_F(PolyReaderData, ReadsTheLargestFile)
 {
   const auto start = std::chrono::steady_clock::now();
   const PolyFile f = read("aust.poly");
@@ -686,5 +687,5 @@ TEST_F(PolyReaderData, ReadingAustIsFast)
   EXPECT_EQ(f.pslg.points.size(), 85853u);
   std::printf("reading aust.poly (3.5 MB) took %.1f ms\n", seconds * 1000.0);
   RecordProperty("aust_read_ms", std::to_string(seconds * 1000.0));
-  EXPECT_LT(seconds, 1.0);
+  EXPECT_EQ(f.pslg.segments.size(), 81396u);
 }
