@@ -33,10 +33,21 @@ inline double dist2(const Point& a, const Point& b)
   return dx * dx + dy * dy;
 }
 
-/// Angle at b in triangle (a, b, c), in radians, robust for tiny and near-flat angles.
+/// Angle at b in triangle (a, b, c), in radians, robust for tiny and near-flat
+/// angles; the edge vectors are rescaled first so that products cannot overflow
+/// (coordinates up to the double range) or underflow.
 inline double angleAt(const Point& a, const Point& b, const Point& c)
 {
-  const double ux = a.x - b.x, uy = a.y - b.y, vx = c.x - b.x, vy = c.y - b.y;
+  double ux = a.x - b.x, uy = a.y - b.y, vx = c.x - b.x, vy = c.y - b.y;
+  const double su = std::fmax(std::fabs(ux), std::fabs(uy));
+  const double sv = std::fmax(std::fabs(vx), std::fabs(vy));
+  if (su > 0 && sv > 0)
+  {
+    ux /= su;
+    uy /= su;
+    vx /= sv;
+    vy /= sv;
+  }
   return std::atan2(std::fabs(ux * vy - uy * vx), ux * vx + uy * vy);
 }
 

@@ -229,6 +229,12 @@ Result Mesher::execute()
   Domain domain = options.domain;
   if (domain == Domain::Auto)
     domain = segmentsEncloseRegion(w.points.size(), w.segments) ? Domain::Enclosed : Domain::Hull;
+  if (domain == Domain::Hull && convexHull(w.points).size() < 3)
+  {
+    res.warnings.push_back("the input points are collinear, so their convex hull has no area: "
+                           "meshing the padded bounding box instead");
+    domain = Domain::Box;
+  }
   meshRounds(w, domain);
   st.secondsTotal = since(t0);
   res.ok = true;

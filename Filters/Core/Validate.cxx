@@ -941,9 +941,48 @@ void checkConformity(const Pslg& input, const Mesh& m, const VertexMap& map, Err
 
 } // namespace
 
+namespace
+{
+
+/// Power-of-two exponent that brings coordinates near 1 when they are so large
+/// or small that the predicates' products would overflow or underflow; 0 otherwise.
+int rescaleExponent(const Pslg& input, const std::vector<Point>& vertices)
+{
+  double m = 0;
+  for (const std::vector<Point>* pts : { &input.points, &vertices })
+    for (const Point& p : *pts)
+      if (std::isfinite(p.x) && std::isfinite(p.y))
+        m = std::max({ m, std::fabs(p.x), std::fabs(p.y) });
+  int e = 0;
+  if (m > 0x1p100 || (m > 0 && m < 0x1p-100))
+    std::frexp(m, &e);
+  return e;
+}
+
+std::vector<Point> scaled(const std::vector<Point>& pts, int e)
+{
+  std::vector<Point> out(pts);
+  for (Point& p : out)
+    p = { std::ldexp(p.x, -e), std::ldexp(p.y, -e) };
+  return out;
+}
+
+} // namespace
+
 ValidationReport validate(const Pslg& input, const std::vector<Point>& vertices,
   const std::vector<Triangle>& triangles, const ValidationOptions& options)
 {
+  // Scaling by a power of two is exact and changes no predicate or angle.
+  if (const int e = rescaleExponent(input, vertices); e != 0)
+  {
+    Pslg in = input;
+    in.points = scaled(input.points, e);
+    ValidationReport r = validate(in, scaled(vertices, e), triangles, options);
+    if (!r.ok)
+      r.errors.push_back("(coordinates in these messages are scaled by 2^" +
+        std::to_string(-e) + " for exact arithmetic)");
+    return r;
+  }
   ValidationReport report;
   report.triangles = triangles.size();
   Errors errors(report, options.maxErrorMessages);

@@ -331,3 +331,35 @@ TEST(Mesher, ReportsProgressAndHonoursAbort)
   EXPECT_FALSE(r.ok);
   EXPECT_NE(r.error.find("aborted"), std::string::npos);
 }
+
+TEST(Mesher, DegenerateHullsFallBackToTheBox)
+{
+  Pslg p;
+  p.points = { { 1, 2 } };
+  Result r = meshAndValidate(p, "one point");
+  EXPECT_GT(r.mesh.triangles.size(), 0u);
+  EXPECT_TRUE(mentions(r.warnings, "collinear"));
+  p.points = { { 0, 0 }, { 1, 2 }, { 2, 4 }, { 3, 6 } };
+  p.segments = { { 0, 3 } };
+  r = meshAndValidate(p, "collinear");
+  EXPECT_GE(r.stats.segmentsSplitAtVertices, 2u);
+  EXPECT_TRUE(mentions(r.warnings, "collinear"));
+}
+
+TEST(Mesher, ExtremeMagnitudesAreMeshedOrRefusedClearly)
+{
+  for (double s : { 1e-300, 1e-150, 1e150, 1e300 })
+  {
+    Pslg p;
+    p.points = { { s, s }, { -s, s }, { 0, -s }, { 0, 0 } };
+    p.segments = { { 0, 1 }, { 1, 2 }, { 2, 0 } };
+    const Result r = meshAndValidate(p, "scale " + std::to_string(s));
+    EXPECT_GT(r.stats.minAngleDeg, 0.0);
+  }
+  // A spread of 1e-300 cannot be represented exactly in the predicates.
+  Pslg p;
+  p.points = { { 0, 0 }, { 1, 0 }, { 1e-300, 1e-300 }, { 0, 1 } };
+  const Result r = mesh(p);
+  EXPECT_FALSE(r.ok);
+  EXPECT_NE(r.error.find("point 2"), std::string::npos) << r.error;
+}
