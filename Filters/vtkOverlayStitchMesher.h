@@ -1,0 +1,177 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026, the Overlay Stitch Meshing authors
+/**
+ * @class   vtkOverlayStitchMesher
+ * @brief   triangulate planar line data so that no angle exceeds about 170 degrees
+ *
+ * vtkOverlayStitchMesher meshes a Planar Straight Line Graph given as
+ * vtkPolyData with Overlay Stitch Meshing (OSM). The input points must lie in
+ * a plane of constant z. Line and polyline cells become segments between
+ * consecutive points, polygon cells contribute their closed edge loops, vertex
+ * cells (and every other input point) are meshed as isolated points. Triangle
+ * strips are ignored with a warning.
+ *
+ * The mesher runs in three phases: an overlay Delaunay mesh of the input
+ * points whose angles are at least MinimumAngle (θ1); stitching, which keeps
+ * the overlay edges that input segments cross at good angles and discards the
+ * others; completion, which triangulates the remaining faces minimizing their
+ * largest angle. Every output angle is at most 180° − θ2 (about 170° at the
+ * default θ1 = 30°).
+ *
+ * The filter has three output ports:
+ * - port 0 (Mesh): the conforming triangulation. Point data `VertexOrigin`
+ *   (0 input vertex, 1 overlay Steiner point, 2 stitch point on a segment,
+ *   3 other); cell data `MinAngle`, `MaxAngle` (degrees) and `RegionId`;
+ *   field data: one single-value array per run statistic.
+ * - port 1 (Edges): every overlay edge and every input subsegment as line
+ *   cells, with cell data `Overlay`, `Kept`, `Discarded`, `Input` (0/1) and
+ *   the categorical `EdgeClass` (0 uncrossed, 1 kept, 2 discarded, 3 input;
+ *   the names are in the field data string array `EdgeClassNames`).
+ * - port 2 (Overlay): the phase-1 overlay triangulation, for inspection.
+ *
+ * Bad input (NaN coordinates, crossing segments when ResolveIntersections is
+ * off, a varying z, ...) is reported through vtkErrorMacro with the reason,
+ * and all outputs are left empty.
+ *
+ * The class uses only API that VTK 9.1 also has.
+ *
+ * @sa
+ * vtkDelaunay2D
+ */
+
+#ifndef vtkOverlayStitchMesher_h
+#define vtkOverlayStitchMesher_h
+
+#include "OverlayStitchFiltersModule.h" // For export macro
+#include "vtkPolyDataAlgorithm.h"
+
+#include <vector> // For HolePoints
+
+class OVERLAYSTITCHFILTERS_EXPORT vtkOverlayStitchMesher : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkOverlayStitchMesher* New();
+  vtkTypeMacro(vtkOverlayStitchMesher, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * What part of the plane the output triangles cover.
+   */
+  enum DomainTypes
+  {
+    DOMAIN_AUTO = 0,     ///< DOMAIN_ENCLOSED if segments enclose a region, else DOMAIN_HULL
+    DOMAIN_ENCLOSED = 1, ///< regions enclosed by segments, minus holes
+    DOMAIN_HULL = 2,     ///< the convex hull of the input points
+    DOMAIN_BOX = 3       ///< the padded bounding box of the overlay mesh
+  };
+
+  ///@{
+  /**
+   * θ1, the smallest angle of the phase-1 overlay mesh, in degrees (1 to 35,
+   * default 30). The output's largest angle is bounded by 180° − θ2, where θ2
+   * shrinks with θ1: 30° gives about 170°.
+   */
+  vtkSetClampMacro(MinimumAngle, double, 1.0, 35.0);
+  vtkGetMacro(MinimumAngle, double);
+  ///@}
+
+  ///@{
+  /**
+   * If greater than 0, overlay triangles with a longer edge are refined
+   * further. 0 (the default) means no limit.
+   */
+  vtkSetClampMacro(MaximumEdgeLength, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(MaximumEdgeLength, double);
+  ///@}
+
+  ///@{
+  /**
+   * The part of the plane to mesh (see DomainTypes). Default DOMAIN_AUTO.
+   */
+  vtkSetClampMacro(Domain, int, DOMAIN_AUTO, DOMAIN_BOX);
+  vtkGetMacro(Domain, int);
+  void SetDomainToAuto() { this->SetDomain(DOMAIN_AUTO); }
+  void SetDomainToEnclosed() { this->SetDomain(DOMAIN_ENCLOSED); }
+  void SetDomainToHull() { this->SetDomain(DOMAIN_HULL); }
+  void SetDomainToBox() { this->SetDomain(DOMAIN_BOX); }
+  ///@}
+
+  ///@{
+  /**
+   * If on (the default), input segments that cross are split at their
+   * intersection; if off, crossing segments are an error naming them.
+   */
+  vtkSetMacro(ResolveIntersections, vtkTypeBool);
+  vtkGetMacro(ResolveIntersections, vtkTypeBool);
+  vtkBooleanMacro(ResolveIntersections, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
+   * Stop with an error when more Steiner points than this would be needed.
+   * 0 (the default) means no cap.
+   */
+  vtkSetClampMacro(MaximumSteinerPoints, vtkIdType, 0, VTK_ID_MAX);
+  vtkGetMacro(MaximumSteinerPoints, vtkIdType);
+  ///@}
+
+  ///@{
+  /**
+   * Whether to fill output port 1 (Edges). Default on.
+   */
+  vtkSetMacro(GenerateEdges, vtkTypeBool);
+  vtkGetMacro(GenerateEdges, vtkTypeBool);
+  vtkBooleanMacro(GenerateEdges, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
+   * Whether to fill output port 2 (Overlay). Default on.
+   */
+  vtkSetMacro(GenerateOverlay, vtkTypeBool);
+  vtkGetMacro(GenerateOverlay, vtkTypeBool);
+  vtkBooleanMacro(GenerateOverlay, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
+   * Hole seed points (x, y): the region bounded by segments that contains a
+   * seed is removed from the output, like the holes of Triangle's .poly files.
+   */
+  void AddHolePoint(double x, double y);
+  void RemoveAllHolePoints();
+  int GetNumberOfHolePoints() const;
+  void GetHolePoint(int i, double point[2]) const;
+  ///@}
+
+  ///@{
+  /**
+   * Convenience accessors for the outputs: port 0 is GetOutput().
+   */
+  vtkPolyData* GetEdgesOutput();
+  vtkPolyData* GetOverlayOutput();
+  ///@}
+
+protected:
+  vtkOverlayStitchMesher();
+  ~vtkOverlayStitchMesher() override;
+
+  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+
+  double MinimumAngle;
+  double MaximumEdgeLength;
+  int Domain;
+  vtkTypeBool ResolveIntersections;
+  vtkIdType MaximumSteinerPoints;
+  vtkTypeBool GenerateEdges;
+  vtkTypeBool GenerateOverlay;
+  std::vector<double> HolePoints; // x0, y0, x1, y1, ...
+
+private:
+  vtkOverlayStitchMesher(const vtkOverlayStitchMesher&) = delete;
+  void operator=(const vtkOverlayStitchMesher&) = delete;
+};
+
+#endif
