@@ -1,0 +1,309 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026, the Overlay Stitch Meshing authors
+//
+// VTK C++ tests of vtkOverlayStitchMesher, run as
+//   TestOverlayStitchMesher contract    the output contract on a small PSLG
+//   TestOverlayStitchMesher bad-input   bad input gives an error and empty outputs
+#include "vtkOverlayStitchMesher.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkCellType.h"
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+#include "vtkStringArray.h"
+
+#include <cmath>
+#include <cstring>
+#include <iostream>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace
+{
+
+int Failures = 0;
+
+void Check(bool condition, const std::string& what)
+{
+  if (!condition)
+  {
+    std::cerr << "FAILED: " << what << "\n";
+    ++Failures;
+  }
+}
+
+/// Counts error and warning events and keeps the last messages.
+class MessageObserver : public vtkCommand
+{
+public:
+  static MessageObserver* New() { return new MessageObserver; }
+  void Execute(vtkObject*, unsigned long event, void* data) override
+  {
+    const char* text = data ? static_cast<const char*>(data) : "";
+    if (event == vtkCommand::ErrorEvent)
+    {
+      ++this->Errors;
+      this->LastError = text;
+    }
+    else if (event == vtkCommand::WarningEvent)
+    {
+      ++this->Warnings;
+      this->LastWarning = text;
+    }
+  }
+  int Errors = 0;
+  int Warnings = 0;
+  std::string LastError;
+  std::string LastWarning;
+};
+
+/// A square [0,10]^2 (closed polyline) with an interior slit and a 3-degree
+/// wedge (two segments from one point), all in the plane z = 2.5.
+vtkSmartPointer<vtkPolyData> MakeInput(double z)
+{
+  const double t = std::tan(3.0 * std::acos(-1.0) / 180.0);
+  const double xy[][2] = { { 0, 0 }, { 10, 0 }, { 10, 10 }, { 0, 10 }, // square
+    { 2, 6 }, { 7, 6 },                                                // slit
+    { 1, 1 }, { 9, 1 }, { 9, 1 + 8 * t } };                            // wedge
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  for (const auto& p : xy)
+  {
+    points->InsertNextPoint(p[0], p[1], z);
+  }
+  vtkNew<vtkCellArray> lines;
+  const vtkIdType square[] = { 0, 1, 2, 3, 0 };
+  lines->InsertNextCell(5, square);
+  const vtkIdType slit[] = { 4, 5 };
+  lines->InsertNextCell(2, slit);
+  const vtkIdType wedge[] = { 7, 6, 8 };
+  lines->InsertNextCell(3, wedge);
+  auto input = vtkSmartPointer<vtkPolyData>::New();
+  input->SetPoints(points);
+  input->SetLines(lines);
+  return input;
+}
+
+vtkDataArray* ArrayOf(vtkFieldData* data, const char* name, vtkIdType tuples)
+{
+  vtkDataArray* array = data->GetArray(name);
+  Check(array != nullptr, std::string("array ") + name + " exists");
+  if (array)
+  {
+    Check(array->GetNumberOfTuples() == tuples,
+      std::string("array ") + name + " has " + std::to_string(tuples) + " tuples (it has " +
+        std::to_string(array->GetNumberOfTuples()) + ")");
+  }
+  return array;
+}
+
+bool AllCellsOfType(vtkPolyData* data, int type)
+{
+  for (vtkIdType c = 0; c < data->GetNumberOfCells(); ++c)
+  {
+    if (data->GetCellType(c) != type)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+int TestContract()
+{
+  const double z = 2.5;
+  vtkSmartPointer<vtkPolyData> input = MakeInput(z);
+  vtkNew<vtkOverlayStitchMesher> mesher;
+  vtkNew<MessageObserver> messages;
+  mesher->AddObserver(vtkCommand::ErrorEvent, messages);
+  mesher->AddObserver(vtkCommand::WarningEvent, messages);
+  Check(mesher->GetNumberOfOutputPorts() == 3, "three output ports");
+  Check(mesher->GetMinimumAngle() == 30.0, "MinimumAngle defaults to 30");
+  mesher->SetInputData(input);
+  mesher->Update();
+  Check(messages->Errors == 0, "no error (got: " + messages->LastError + ")");
+
+  // Port 0, Mesh.
+  vtkPolyData* mesh = mesher->GetOutput();
+  const vtkIdType triangles = mesh->GetNumberOfCells();
+  std::cout << "Mesh: " << mesh->GetNumberOfPoints() << " points, " << triangles << " triangles\n";
+  Check(triangles > 0, "the mesh has triangles");
+  Check(mesh->GetNumberOfPolys() == triangles, "the mesh has only polygon cells");
+  Check(AllCellsOfType(mesh, VTK_TRIANGLE), "every mesh cell is a triangle");
+  vtkDataArray* origin = ArrayOf(mesh->GetPointData(), "VertexOrigin", mesh->GetNumberOfPoints());
+  vtkDataArray* minAngle = ArrayOf(mesh->GetCellData(), "MinAngle", triangles);
+  vtkDataArray* maxAngle = ArrayOf(mesh->GetCellData(), "MaxAngle", triangles);
+  ArrayOf(mesh->GetCellData(), "RegionId", triangles);
+  if (origin)
+  {
+    vtkIdType inputVertices = 0;
+    for (vtkIdType i = 0; i < origin->GetNumberOfTuples(); ++i)
+    {
+      inputVertices += origin->GetTuple1(i) == 0 ? 1 : 0;
+    }
+    Check(inputVertices == input->GetNumberOfPoints(),
+      "every input point is an output vertex with VertexOrigin 0 (" +
+        std::to_string(inputVertices) + " of " + std::to_string(input->GetNumberOfPoints()) + ")");
+  }
+  if (minAngle && maxAngle && triangles > 0)
+  {
+    double range[2];
+    maxAngle->GetRange(range, 0);
+    std::cout << "MaxAngle range: " << range[0] << " .. " << range[1] << "\n";
+    Check(
+      range[1] <= 170.0, "no angle above 170 degrees (largest " + std::to_string(range[1]) + ")");
+    minAngle->GetRange(range, 0);
+    Check(range[0] > 0.0, "no zero angle");
+  }
+  double bounds[6];
+  mesh->GetBounds(bounds);
+  Check(bounds[4] == z && bounds[5] == z, "the mesh lies in the input plane z = 2.5");
+  Check(mesh->GetFieldData()->GetArray("OutputTriangles") != nullptr,
+    "run statistics in the field data");
+  if (vtkDataArray* count = mesh->GetFieldData()->GetArray("OutputTriangles"))
+  {
+    Check(count->GetTuple1(0) == static_cast<double>(triangles),
+      "statistic OutputTriangles matches the mesh");
+  }
+
+  // Port 1, Edges.
+  vtkPolyData* edges = mesher->GetEdgesOutput();
+  std::cout << "Edges: " << edges->GetNumberOfCells() << " lines\n";
+  Check(edges->GetNumberOfLines() > 0, "the edges output has lines");
+  Check(AllCellsOfType(edges, VTK_LINE), "every edge is a line cell");
+  for (const char* name : { "Overlay", "Kept", "Discarded", "Input" })
+  {
+    ArrayOf(edges->GetCellData(), name, edges->GetNumberOfCells());
+  }
+  if (vtkDataArray* edgeClass =
+        ArrayOf(edges->GetCellData(), "EdgeClass", edges->GetNumberOfCells()))
+  {
+    bool inRange = true;
+    bool hasInput = false;
+    for (vtkIdType e = 0; e < edgeClass->GetNumberOfTuples(); ++e)
+    {
+      const double c = edgeClass->GetTuple1(e);
+      inRange = inRange && c >= 0 && c <= 3;
+      hasInput = hasInput || c == 3;
+    }
+    Check(inRange, "EdgeClass values are 0..3");
+    Check(hasInput, "some edges are input subsegments (EdgeClass 3)");
+  }
+  auto* names =
+    vtkStringArray::SafeDownCast(edges->GetFieldData()->GetAbstractArray("EdgeClassNames"));
+  Check(names && names->GetNumberOfValues() == 4 && names->GetValue(2) == "Discarded",
+    "EdgeClassNames names the four classes");
+
+  // Port 2, Overlay.
+  vtkPolyData* overlay = mesher->GetOverlayOutput();
+  std::cout << "Overlay: " << overlay->GetNumberOfCells() << " triangles\n";
+  Check(overlay->GetNumberOfPolys() > 0, "the overlay output has triangles");
+  Check(AllCellsOfType(overlay, VTK_TRIANGLE), "every overlay cell is a triangle");
+
+  // The optional outputs can be switched off.
+  mesher->GenerateEdgesOff();
+  mesher->GenerateOverlayOff();
+  mesher->Update();
+  Check(mesher->GetOutput()->GetNumberOfCells() == triangles, "same mesh without edges/overlay");
+  Check(mesher->GetEdgesOutput()->GetNumberOfCells() == 0, "GenerateEdges off empties port 1");
+  Check(mesher->GetOverlayOutput()->GetNumberOfCells() == 0, "GenerateOverlay off empties port 2");
+  return Failures == 0 ? 0 : 1;
+}
+
+bool AllOutputsEmpty(vtkOverlayStitchMesher* mesher)
+{
+  for (int port = 0; port < 3; ++port)
+  {
+    auto* out = vtkPolyData::SafeDownCast(mesher->GetOutputDataObject(port));
+    if (!out || out->GetNumberOfPoints() != 0 || out->GetNumberOfCells() != 0)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+int TestBadInput()
+{
+  vtkNew<vtkOverlayStitchMesher> mesher;
+  vtkNew<MessageObserver> messages;
+  mesher->AddObserver(vtkCommand::ErrorEvent, messages);
+  mesher->AddObserver(vtkCommand::WarningEvent, messages);
+
+  // A NaN coordinate.
+  vtkSmartPointer<vtkPolyData> input = MakeInput(0.0);
+  input->GetPoints()->SetPoint(4, std::numeric_limits<double>::quiet_NaN(), 6.0, 0.0);
+  mesher->SetInputData(input);
+  mesher->Update();
+  std::cout << "NaN input: " << messages->Errors << " error(s): " << messages->LastError << "\n";
+  Check(messages->Errors >= 1, "a NaN coordinate is reported as an error");
+  Check(AllOutputsEmpty(mesher), "a NaN coordinate leaves all outputs empty");
+
+  // z varies: not a planar input.
+  messages->Errors = 0;
+  input = MakeInput(0.0);
+  input->GetPoints()->SetPoint(2, 10.0, 10.0, 1.0);
+  mesher->SetInputData(input);
+  mesher->Update();
+  std::cout << "Non-planar input: " << messages->LastError << "\n";
+  Check(messages->Errors >= 1 && messages->LastError.find("not planar") != std::string::npos,
+    "a varying z is reported as 'not planar'");
+  Check(AllOutputsEmpty(mesher), "a varying z leaves all outputs empty");
+
+  // Crossing segments with ResolveIntersections off.
+  messages->Errors = 0;
+  input = MakeInput(0.0);
+  vtkNew<vtkCellArray> lines;
+  lines->DeepCopy(input->GetLines());
+  const vtkIdType crossing[] = { 0, 2 };
+  lines->InsertNextCell(2, crossing);
+  const vtkIdType other[] = { 1, 3 };
+  lines->InsertNextCell(2, other);
+  input->SetLines(lines);
+  mesher->ResolveIntersectionsOff();
+  mesher->SetInputData(input);
+  mesher->Update();
+  std::cout << "Crossing segments: " << messages->LastError << "\n";
+  Check(messages->Errors >= 1, "crossing segments without ResolveIntersections are an error");
+  Check(AllOutputsEmpty(mesher), "crossing segments leave all outputs empty");
+
+  // An empty input is not an error.
+  messages->Errors = 0;
+  vtkNew<vtkPolyData> empty;
+  mesher->SetInputData(empty);
+  mesher->Update();
+  Check(messages->Errors == 0, "an empty input is not an error (got: " + messages->LastError + ")");
+  Check(AllOutputsEmpty(mesher), "an empty input gives empty outputs");
+  return Failures == 0 ? 0 : 1;
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  const std::string test = argc > 1 ? argv[1] : "";
+  int status = 1;
+  if (test == "contract")
+  {
+    status = TestContract();
+  }
+  else if (test == "bad-input")
+  {
+    status = TestBadInput();
+  }
+  else
+  {
+    std::cerr << "usage: " << argv[0] << " contract|bad-input\n";
+    return 2;
+  }
+  std::cout << (status == 0 ? "PASSED" : "FAILED") << "\n";
+  return status;
+}
