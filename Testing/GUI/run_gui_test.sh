@@ -1,0 +1,50 @@
+#!/bin/bash
+# The GUI test: start the real `paraview` under a virtual X server with the
+# plugin on PV_PLUGIN_PATH, run gui_script.py in it, then check its report
+# and that its screenshot is not blank.
+#
+# usage: run_gui_test.sh <paraview> <pvpython> <plugin-dir> <data-file> <output-dir>
+set -euo pipefail
+paraview=$1
+pvpython=$2
+plugin_dir=$3
+data=$4
+output_dir=$5
+here=$(cd "$(dirname "$0")" && pwd)
+
+mkdir -p "$output_dir"
+export PV_PLUGIN_PATH=$plugin_dir
+export OSM_GUI_DATA=$data
+export OSM_GUI_SCREENSHOT=$output_dir/gui-screenshot.png
+export OSM_GUI_REPORT=$output_dir/gui-report.txt
+rm -f "$OSM_GUI_SCREENSHOT" "$OSM_GUI_REPORT"
+
+# --dr: ignore the user's settings, so the run is the same on every machine.
+status=0
+timeout 240 xvfb-run -a -s "-screen 0 1280x1024x24" \
+  "$paraview" --dr --script="$here/gui_script.py" --exit || status=$?
+echo "paraview exited with status $status"
+
+if [ ! -s "$OSM_GUI_REPORT" ]; then
+  echo "FAILED: the GUI script did not run (no $OSM_GUI_REPORT)"
+  exit 1
+fi
+cat "$OSM_GUI_REPORT"
+triangles=$(awk '$1 == "triangles" { print $2 }' "$OSM_GUI_REPORT")
+if [ -z "$triangles" ]; then
+  echo "FAILED: the GUI script stopped before the end (see the Python error above)"
+  exit 1
+fi
+if [ "$triangles" -le 0 ]; then
+  echo "FAILED: the filter produced no triangles in the GUI"
+  exit 1
+fi
+if [ ! -s "$OSM_GUI_SCREENSHOT" ]; then
+  echo "FAILED: no screenshot"
+  exit 1
+fi
+"$pvpython" "$here/check_screenshot.py" "$OSM_GUI_SCREENSHOT"
+if [ "$status" -ne 0 ]; then
+  echo "FAILED: paraview exited with status $status"
+  exit 1
+fi

@@ -1,0 +1,132 @@
+"""pvpython test of the OverlayStitchMesher plugin.
+
+Usage: pvpython test_plugin.py <path/to/OverlayStitchMesher.so> <Testing/Data>
+
+Loads the plugin the way DESIGN.md section 6 measured to work
+(LoadPlugin(path, remote=False, ns=globals())), meshes the bundled wedge.vtk
+with paraview.simple.OverlayStitchMesher and checks the output contract
+(DESIGN.md section 4) and that the properties reach the filter.
+"""
+import math
+import os
+import sys
+
+from paraview import servermanager
+from paraview.simple import *  # noqa: F401,F403 (LoadPlugin, LegacyVTKReader, ...)
+
+failures = []
+
+
+def check(condition, what):
+    print(("ok      " if condition else "FAILED  ") + what)
+    if not condition:
+        failures.append(what)
+
+
+def triangle_area(poly):
+    """Sum of the triangle areas of a vtkPolyData."""
+    points = poly.GetPoints()
+    total = 0.0
+    for c in range(poly.GetNumberOfCells()):
+        ids = poly.GetCell(c).GetPointIds()
+        a, b, p = (points.GetPoint(ids.GetId(k)) for k in range(3))
+        total += 0.5 * abs((b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]))
+    return total
+
+
+def fetch(proxy, port):
+    proxy.UpdatePipeline()
+    return servermanager.Fetch(proxy, idx=port)
+
+
+def main(plugin, data_dir):
+    check(os.path.isfile(plugin), "the plugin exists: " + plugin)
+    LoadPlugin(plugin, remote=False, ns=globals())
+    check("OverlayStitchMesher" in globals(), "LoadPlugin defines OverlayStitchMesher")
+    if failures:
+        return 1
+
+    reader = LegacyVTKReader(FileNames=[os.path.join(data_dir, "wedge.vtk")])
+    mesher = OverlayStitchMesher(Input=reader)
+
+    # The properties and their defaults.
+    defaults = {
+        "MinimumAngle": 30.0,
+        "MaximumEdgeLength": 0.0,
+        "Domain": "Auto",
+        "ResolveIntersections": 1,
+        "MaximumSteinerPoints": 0,
+        "GenerateEdges": 1,
+        "GenerateOverlay": 1,
+    }
+    names = mesher.ListProperties()
+    for name, value in defaults.items():
+        check(name in names, "property %s exists" % name)
+        if name in names:
+            check(mesher.GetPropertyValue(name) == value,
+                  "%s defaults to %r (got %r)" % (name, value, mesher.GetPropertyValue(name)))
+    check("HolePoints" in names and len(mesher.HolePoints) == 0, "HolePoints exists, empty")
+    ports = [mesher.SMProxy.GetOutputPortName(i) for i in range(mesher.SMProxy.GetNumberOfOutputPorts())]
+    check(ports == ["Mesh", "Edges", "Overlay"], "output ports Mesh, Edges, Overlay (got %r)" % ports)
+    hints = mesher.SMProxy.GetHints()
+    menu = hints.FindNestedElementByName("ShowInMenu") if hints else None
+    check(menu is not None and menu.GetAttribute("category") == "Meshing",
+          "shown in the Filters > Meshing menu")
+    check(mesher.SMProxy.GetXMLLabel() == "Overlay Stitch Mesher", "labelled Overlay Stitch Mesher")
+
+    # Port 0: the mesh and its arrays.
+    mesh = fetch(mesher, 0)
+    triangles = mesh.GetNumberOfCells()
+    print("Mesh: %d points, %d triangles" % (mesh.GetNumberOfPoints(), triangles))
+    check(triangles > 0, "the mesh has triangles")
+    check(all(mesh.GetCellType(c) == 5 for c in range(triangles)), "every mesh cell is a triangle")
+    origin = mesh.GetPointData().GetArray("VertexOrigin")
+    check(origin is not None and origin.GetNumberOfTuples() == mesh.GetNumberOfPoints(),
+          "VertexOrigin per point")
+    for name in ("MinAngle", "MaxAngle", "RegionId"):
+        array = mesh.GetCellData().GetArray(name)
+        check(array is not None and array.GetNumberOfTuples() == triangles, name + " per triangle")
+    max_angle = mesh.GetCellData().GetArray("MaxAngle")
+    if max_angle is not None and triangles > 0:
+        largest = max_angle.GetRange()[1]
+        check(largest <= 170.0, "no angle above 170 degrees (largest %.3f)" % largest)
+    check(mesh.GetFieldData().GetArray("OutputTriangles") is not None, "statistics in field data")
+
+    # The Enclosed domain (Auto here) is the square plus the 5-degree spike.
+    spike = 0.5 * (2 * 0.436609429) * 10
+    area = triangle_area(mesh)
+    check(math.isclose(area, 100 + spike, rel_tol=1e-6),
+          "the mesh covers the enclosed region (area %.6f, expected %.6f)" % (area, 100 + spike))
+
+    # Port 1: the classified edges.
+    edges = fetch(mesher, 1)
+    print("Edges: %d lines" % edges.GetNumberOfCells())
+    check(edges.GetNumberOfCells() > 0, "the Edges output has lines")
+    for name in ("Overlay", "Kept", "Discarded", "Input", "EdgeClass"):
+        array = edges.GetCellData().GetArray(name)
+        check(array is not None and array.GetNumberOfTuples() == edges.GetNumberOfCells(),
+              name + " per edge")
+
+    # Port 2: the overlay.
+    overlay = fetch(mesher, 2)
+    print("Overlay: %d triangles" % overlay.GetNumberOfCells())
+    check(overlay.GetNumberOfCells() > 0, "the Overlay output has triangles")
+
+    # Properties reach the filter: the Hull domain is the convex hull.
+    mesher.Domain = "Hull"
+    area = triangle_area(fetch(mesher, 0))
+    check(math.isclose(area, 150.0, rel_tol=1e-6), "Domain=Hull covers the hull (area %.6f)" % area)
+    mesher.Domain = "Auto"
+    mesher.HolePoints = [5.0, 2.0]
+    area = triangle_area(fetch(mesher, 0))
+    check(area < 1e-9, "a hole seed inside the only region removes it (area %.6f)" % area)
+
+    print("%d failure(s)" % len(failures))
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 3:
+        print(__doc__)
+        sys.exit(2)
+    sys.exit(main(sys.argv[1], sys.argv[2]))
