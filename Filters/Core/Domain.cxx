@@ -64,24 +64,87 @@ void flood(std::vector<int> stack, int label, const std::vector<int>& nbr,
   }
 }
 
-/// The unlabelled triangle whose closure contains q, or -1.
-int findTriangle(const std::vector<Point>& P, const std::vector<Triangle>& tris,
-  const std::vector<int>& labels, const Point& q)
+/// Finds the triangle under a point: a uniform grid of triangle bounding boxes,
+/// about one cell per triangle, so locating many hole seeds stays linear.
+class TriangleGrid
 {
-  // Holes are few: a linear scan with a cheap bounding-box reject is enough.
-  for (int t = 0; t < static_cast<int>(tris.size()); ++t)
+public:
+  TriangleGrid(const std::vector<Point>& P, const std::vector<Triangle>& tris)
+    : P(P)
+    , tris(tris)
   {
-    if (labels[t] != -1)
-      continue;
-    const Point &a = P[tris[t][0]], &b = P[tris[t][1]], &c = P[tris[t][2]];
-    if (q.x < std::min({ a.x, b.x, c.x }) || q.x > std::max({ a.x, b.x, c.x }) ||
-      q.y < std::min({ a.y, b.y, c.y }) || q.y > std::max({ a.y, b.y, c.y }))
-      continue;
-    if (orient2d(a, b, q) >= 0 && orient2d(b, c, q) >= 0 && orient2d(c, a, q) >= 0)
-      return t;
+    lo = hi = tris.empty() ? Point{} : P[tris[0][0]];
+    for (const Triangle& t : tris)
+      for (int v : t)
+      {
+        lo = { std::min(lo.x, P[v].x), std::min(lo.y, P[v].y) };
+        hi = { std::max(hi.x, P[v].x), std::max(hi.y, P[v].y) };
+      }
+    n = std::max(1, static_cast<int>(std::sqrt(static_cast<double>(tris.size()))));
+    start.assign(static_cast<std::size_t>(n) * n + 1, 0);
+    for (int pass = 0; pass < 2; ++pass)
+    {
+      std::vector<int> fill(start.begin(), start.end() - 1);
+      for (int t = 0; t < static_cast<int>(tris.size()); ++t)
+        forCells(t, [&](std::size_t c) {
+          if (pass == 0)
+            ++start[c + 1];
+          else
+            items[fill[c]++] = t;
+        });
+      if (pass == 0)
+      {
+        for (std::size_t c = 0; c + 1 < start.size(); ++c)
+          start[c + 1] += start[c];
+        items.resize(start.back());
+      }
+    }
   }
-  return -1;
-}
+
+  /// A triangle with the given label whose closure contains q, or -1.
+  int find(const Point& q, const std::vector<int>& labels, int label) const
+  {
+    if (q.x < lo.x || q.x > hi.x || q.y < lo.y || q.y > hi.y)
+      return -1;
+    const std::size_t c = static_cast<std::size_t>(cell(q.y, lo.y, hi.y)) * n + cell(q.x, lo.x, hi.x);
+    for (int k = start[c]; k < start[c + 1]; ++k)
+    {
+      const int t = items[k];
+      const Point &a = P[tris[t][0]], &b = P[tris[t][1]], &d = P[tris[t][2]];
+      if (labels[t] == label && orient2d(a, b, q) >= 0 && orient2d(b, d, q) >= 0 &&
+        orient2d(d, a, q) >= 0)
+        return t;
+    }
+    return -1;
+  }
+
+private:
+  int cell(double v, double a, double b) const
+  {
+    const double f = b > a ? (v - a) / (b - a) : 0.0;
+    return std::min(n - 1, std::max(0, static_cast<int>(f * n)));
+  }
+
+  template <typename F>
+  void forCells(int t, F&& f) const
+  {
+    const Point &a = P[tris[t][0]], &b = P[tris[t][1]], &c = P[tris[t][2]];
+    const int x0 = cell(std::min({ a.x, b.x, c.x }), lo.x, hi.x);
+    const int x1 = cell(std::max({ a.x, b.x, c.x }), lo.x, hi.x);
+    const int y0 = cell(std::min({ a.y, b.y, c.y }), lo.y, hi.y);
+    const int y1 = cell(std::max({ a.y, b.y, c.y }), lo.y, hi.y);
+    for (int y = y0; y <= y1; ++y)
+      for (int x = x0; x <= x1; ++x)
+        f(static_cast<std::size_t>(y) * n + x);
+  }
+
+  const std::vector<Point>& P;
+  const std::vector<Triangle>& tris;
+  Point lo, hi;
+  int n = 1;
+  std::vector<int> start;
+  std::vector<int> items;
+};
 
 } // namespace
 
@@ -100,13 +163,19 @@ Carving carveDomain(const std::vector<Point>& P, const std::vector<Triangle>& tr
         seeds.push_back(t);
     flood(seeds, removed, nbr, edgeConstrained, labels);
   }
-  for (const Point& h : holes)
-  {
-    const int t = findTriangle(P, tris, labels, h);
-    if (t >= 0)
-      flood({ t }, removed, nbr, edgeConstrained, labels);
-  }
   Carving out;
+  if (!holes.empty())
+  {
+    const TriangleGrid grid(P, tris);
+    for (std::size_t h = 0; h < holes.size(); ++h)
+    {
+      const int t = grid.find(holes[h], labels, -1);
+      if (t >= 0)
+        flood({ t }, removed, nbr, edgeConstrained, labels);
+      else
+        out.unusedHoles.push_back(static_cast<int>(h));
+    }
+  }
   int next = 0;
   for (int t = 0; t < static_cast<int>(tris.size()); ++t)
     if (labels[t] == -1)

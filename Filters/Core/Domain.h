@@ -15,6 +15,7 @@ struct Carving
 {
   std::vector<int> regionId; ///< per input triangle: its region, or -1 if removed
   std::size_t regions = 0;
+  std::vector<int> unusedHoles; ///< hole seeds outside the remaining triangles
 };
 
 /// removeExterior: drop triangles reachable from the box boundary without

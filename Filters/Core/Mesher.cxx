@@ -303,6 +303,11 @@ void Mesher::meshRounds(Work& w, Domain domain)
     const Carving carve =
       carveDomain(g.points, c.triangles, c.constrainedEdges, domain != Domain::Box, w.holes);
     st.secondsDomain = since(t);
+    if (!carve.unusedHoles.empty())
+      res.warnings.push_back(std::to_string(carve.unusedHoles.size()) +
+        " hole point(s) lie outside the meshed domain or in a region already removed, e.g. "
+        "hole " + std::to_string(carve.unusedHoles.front()) + " at " +
+        formatPoint(input.holes[carve.unusedHoles.front()]));
     if (options.keepOverlay)
     {
       res.overlay.vertices = overlay.mesh.points;

@@ -363,3 +363,25 @@ TEST(Mesher, ExtremeMagnitudesAreMeshedOrRefusedClearly)
   EXPECT_FALSE(r.ok);
   EXPECT_NE(r.error.find("point 2"), std::string::npos) << r.error;
 }
+
+TEST(Domain, ManyHolesAndAStraySeed)
+{
+  // A 20 x 20 grid of small squares inside a big one, each with its hole seed.
+  Pslg p;
+  p.points = { { 0, 0 }, { 20, 0 }, { 20, 20 }, { 0, 20 } };
+  p.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 } };
+  for (int i = 0; i < 20; ++i)
+    for (int j = 0; j < 20; ++j)
+    {
+      const int b = static_cast<int>(p.points.size());
+      p.points.insert(p.points.end(),
+        { { i + 0.25, j + 0.25 }, { i + 0.75, j + 0.25 }, { i + 0.75, j + 0.75 }, { i + 0.25, j + 0.75 } });
+      p.segments.insert(p.segments.end(), { { b, b + 1 }, { b + 1, b + 2 }, { b + 2, b + 3 }, { b + 3, b } });
+      p.holes.push_back({ i + 0.5, j + 0.5 });
+    }
+  p.holes.push_back({ 50, 50 }); // outside everything
+  const Result r = meshAndValidate(p, "many holes");
+  EXPECT_NEAR(area(r.mesh), 400.0 - 400 * 0.25, 1e-9);
+  EXPECT_EQ(r.stats.regions, 1u);
+  EXPECT_TRUE(mentions(r.warnings, "hole 400"));
+}
