@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <numeric>
+#include <unordered_map>
 
 namespace osm
 {
@@ -27,29 +29,73 @@ std::string checkFinite(const std::vector<Point>& pts, const char* what)
   return {};
 }
 
-/// Merge exactly equal points; the first occurrence represents them.
-void mergeDuplicates(const Pslg& in, CleanPslg& out, Statistics& stats,
-  std::vector<std::string>& warnings)
+/// For each point, the first point (in input order) equal to it.
+std::vector<int> exactRepresentatives(const std::vector<Point>& pts)
 {
-  const std::size_t n = in.points.size();
+  const std::size_t n = pts.size();
   std::vector<int> order(n);
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(), [&](int a, int b) {
-    return in.points[a] < in.points[b] || (in.points[a] == in.points[b] && a < b);
+    return pts[a] < pts[b] || (pts[a] == pts[b] && a < b);
   });
   std::vector<int> representative(n);
-  int example = -1;
   for (std::size_t k = 0; k < n; ++k)
   {
-    const bool same = k > 0 && in.points[order[k]] == in.points[order[k - 1]];
+    const bool same = k > 0 && pts[order[k]] == pts[order[k - 1]];
     representative[order[k]] = same ? representative[order[k - 1]] : order[k];
-    if (same)
+  }
+  return representative;
+}
+
+/// For each point, the first earlier kept point within tol, or itself. A hash
+/// grid of cell size tol finds the candidates in the 3 x 3 cells around it.
+std::vector<int> nearRepresentatives(const std::vector<Point>& pts, double tol)
+{
+  std::unordered_map<std::uint64_t, std::vector<int>> grid;
+  auto key = [](std::int64_t x, std::int64_t y) {
+    return (static_cast<std::uint64_t>(x) << 32) ^ static_cast<std::uint64_t>(y & 0xffffffff);
+  };
+  std::vector<int> representative(pts.size());
+  for (std::size_t i = 0; i < pts.size(); ++i)
+  {
+    const auto cx = static_cast<std::int64_t>(std::floor(pts[i].x / tol));
+    const auto cy = static_cast<std::int64_t>(std::floor(pts[i].y / tol));
+    int found = -1;
+    for (std::int64_t dx = -1; dx <= 1 && found < 0; ++dx)
+      for (std::int64_t dy = -1; dy <= 1 && found < 0; ++dy)
+      {
+        const auto it = grid.find(key(cx + dx, cy + dy));
+        if (it == grid.end())
+          continue;
+        for (int j : it->second)
+          if (dist2(pts[i], pts[j]) <= tol * tol)
+          {
+            found = j;
+            break;
+          }
+      }
+    representative[i] = found >= 0 ? found : static_cast<int>(i);
+    if (found < 0)
+      grid[key(cx, cy)].push_back(static_cast<int>(i));
+  }
+  return representative;
+}
+
+/// Merge equal (or, with a tolerance, close) points into their representative.
+void mergeDuplicates(const Pslg& in, CleanPslg& out, Statistics& stats,
+  std::vector<std::string>& warnings, double tol)
+{
+  const std::size_t n = in.points.size();
+  const std::vector<int> representative =
+    tol > 0 ? nearRepresentatives(in.points, tol) : exactRepresentatives(in.points);
+  int example = -1;
+  for (std::size_t i = 0; i < n; ++i)
+    if (representative[i] != static_cast<int>(i))
     {
       ++stats.duplicatePointsMerged;
       if (example < 0)
-        example = order[k];
+        example = static_cast<int>(i);
     }
-  }
   out.pointOf.assign(n, -1);
   for (std::size_t i = 0; i < n; ++i)
   {
@@ -116,15 +162,15 @@ std::string mapSegments(const Pslg& in, CleanPslg& out, Statistics& stats,
 
 } // namespace
 
-std::string cleanPslg(
-  const Pslg& in, CleanPslg& out, Statistics& stats, std::vector<std::string>& warnings)
+std::string cleanPslg(const Pslg& in, CleanPslg& out, Statistics& stats,
+  std::vector<std::string>& warnings, double mergeTolerance)
 {
   out = CleanPslg{};
   if (std::string e = checkFinite(in.points, "point"); !e.empty())
     return e;
   if (std::string e = checkFinite(in.holes, "hole point"); !e.empty())
     return e;
-  mergeDuplicates(in, out, stats, warnings);
+  mergeDuplicates(in, out, stats, warnings, mergeTolerance);
   return mapSegments(in, out, stats, warnings);
 }
 

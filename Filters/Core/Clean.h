@@ -23,8 +23,9 @@ struct CleanPslg
 
 /// Check and clean the input. Returns an empty string, or an error naming the
 /// offending item (a non-finite coordinate, an index out of range).
-std::string cleanPslg(
-  const Pslg& in, CleanPslg& out, Statistics& stats, std::vector<std::string>& warnings);
+/// Points within mergeTolerance of an earlier point are merged into it.
+std::string cleanPslg(const Pslg& in, CleanPslg& out, Statistics& stats,
+  std::vector<std::string>& warnings, double mergeTolerance = 0.0);
 
 /// "(x, y)" with enough digits to tell nearby points apart.
 std::string formatPoint(const Point& p);

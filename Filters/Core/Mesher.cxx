@@ -208,8 +208,11 @@ Result Mesher::execute()
   st.gamma = gammaForMinAngle(options.minAngleDeg);
   st.predictedMaxAngleDeg = predictedMaxAngleDeg(options.minAngleDeg);
 
+  if (!(options.mergeTolerance >= 0.0) || !std::isfinite(options.mergeTolerance))
+    throw Stop{ "the merge tolerance must be finite and at least 0" };
   run.phase("clean", 0.0, 0.02);
-  if (std::string e = cleanPslg(input, clean, st, res.warnings); !e.empty())
+  if (std::string e = cleanPslg(input, clean, st, res.warnings, options.mergeTolerance);
+      !e.empty())
     throw Stop{ e };
   Work w;
   w.points = clean.points;

@@ -31,6 +31,9 @@ struct Options
   Domain domain = Domain::Auto;
   /// Split crossing segments at their intersection (true) or refuse them (false).
   bool resolveCrossings = true;
+  /// Points closer than this (absolute distance) are merged into the first of
+  /// them; 0 merges only exact duplicates.
+  double mergeTolerance = 0.0;
   /// Stop with an error when more Steiner points than this would be needed (0: no cap).
   std::size_t maxSteinerPoints = 0;
   /// Keep the phase-1 overlay and the classified edges in the result (for inspection).

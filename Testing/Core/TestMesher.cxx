@@ -385,3 +385,22 @@ TEST(Domain, ManyHolesAndAStraySeed)
   EXPECT_EQ(r.stats.regions, 1u);
   EXPECT_TRUE(mentions(r.warnings, "hole 400"));
 }
+
+TEST(Clean, MergesNearDuplicatesWithinTheTolerance)
+{
+  Pslg p = square();
+  p.points.push_back({ 1 + 1e-9, 1 - 1e-9 }); // next to point 2
+  p.points.push_back({ 0.5, 0.5 });
+  p.segments.push_back({ 4, 5 });
+  Result r = meshAndValidate(p, "near duplicate kept apart");
+  EXPECT_EQ(r.stats.duplicatePointsMerged, 0u);
+  EXPECT_NE(r.inputVertex[4], r.inputVertex[2]);
+  Options o;
+  o.mergeTolerance = 1e-6;
+  r = mesh(p, o);
+  ASSERT_TRUE(r.ok) << r.error;
+  EXPECT_EQ(r.stats.duplicatePointsMerged, 1u);
+  EXPECT_EQ(r.inputVertex[4], r.inputVertex[2]);
+  o.mergeTolerance = -1;
+  EXPECT_FALSE(mesh(p, o).ok);
+}
