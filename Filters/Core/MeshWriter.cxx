@@ -1,0 +1,169 @@
+#include "MeshWriter.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <vector>
+
+namespace osm
+{
+
+namespace
+{
+
+/// Mesh edges as sorted (lo, hi) pairs, each once, with an input flag.
+std::vector<std::array<int, 3>> meshEdges(const Result& r)
+{
+  std::vector<std::array<int, 3>> edges;
+  for (const Triangle& t : r.mesh.triangles)
+    for (int i = 0; i < 3; ++i)
+    {
+      const int a = t[i], b = t[(i + 1) % 3];
+      edges.push_back({ std::min(a, b), std::max(a, b), 0 });
+    }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  // Input subsegments are recorded against the edge vertices: map by coordinates.
+  std::vector<std::pair<Point, int>> byPoint;
+  for (std::size_t v = 0; v < r.mesh.vertices.size(); ++v)
+    byPoint.push_back({ r.mesh.vertices[v], static_cast<int>(v) });
+  std::sort(byPoint.begin(), byPoint.end(),
+    [](const auto& a, const auto& b) { return a.first < b.first; });
+  auto find = [&](const Point& p) {
+    auto it = std::lower_bound(byPoint.begin(), byPoint.end(), p,
+      [](const auto& a, const Point& q) { return a.first < q; });
+    return it != byPoint.end() && it->first == p ? it->second : -1;
+  };
+  for (const Edge& e : r.edges)
+  {
+    if (!(e.flags & EdgeInput))
+      continue;
+    const int a = find(r.edgeVertices[e.a]), b = find(r.edgeVertices[e.b]);
+    if (a < 0 || b < 0)
+      continue;
+    const std::array<int, 3> key{ std::min(a, b), std::max(a, b), 0 };
+    auto it = std::lower_bound(edges.begin(), edges.end(), key);
+    if (it != edges.end() && (*it)[0] == key[0] && (*it)[1] == key[1])
+      (*it)[2] = 1;
+  }
+  return edges;
+}
+
+} // namespace
+
+std::string writeTriangleFiles(const std::string& base, const Result& r)
+{
+  std::ofstream node(base + ".node"), ele(base + ".ele"), edge(base + ".edge");
+  if (!node || !ele || !edge)
+    return "cannot write " + base + ".node/.ele/.edge";
+  char buf[128];
+  node << r.mesh.vertices.size() << " 2 0 1\n";
+  for (std::size_t v = 0; v < r.mesh.vertices.size(); ++v)
+  {
+    // %.17g round-trips every double exactly.
+    std::snprintf(buf, sizeof buf, "%zu %.17g %.17g %d\n", v + 1, r.mesh.vertices[v].x,
+      r.mesh.vertices[v].y, r.vertexOrigin[v] == VertexOrigin::Input ? 1 : 0);
+    node << buf;
+  }
+  ele << r.mesh.triangles.size() << " 3 1\n";
+  for (std::size_t t = 0; t < r.mesh.triangles.size(); ++t)
+    ele << t + 1 << ' ' << r.mesh.triangles[t][0] + 1 << ' ' << r.mesh.triangles[t][1] + 1 << ' '
+        << r.mesh.triangles[t][2] + 1 << ' ' << r.regionId[t] << '\n';
+  const std::vector<std::array<int, 3>> edges = meshEdges(r);
+  edge << edges.size() << " 1\n";
+  for (std::size_t e = 0; e < edges.size(); ++e)
+    edge << e + 1 << ' ' << edges[e][0] + 1 << ' ' << edges[e][1] + 1 << ' ' << edges[e][2] << '\n';
+  return node && ele && edge ? std::string() : "error while writing " + base + ".node/.ele/.edge";
+}
+
+void writeSvg(std::ostream& out, const Result& r)
+{
+  double x0 = 0, y0 = 0, x1 = 1, y1 = 1;
+  if (!r.mesh.vertices.empty())
+  {
+    x0 = x1 = r.mesh.vertices[0].x;
+    y0 = y1 = r.mesh.vertices[0].y;
+  }
+  for (const Point& p : r.mesh.vertices)
+  {
+    x0 = std::min(x0, p.x);
+    x1 = std::max(x1, p.x);
+    y0 = std::min(y0, p.y);
+    y1 = std::max(y1, p.y);
+  }
+  // Map to an 1000-unit-wide picture, y up.
+  const double size = std::max({ x1 - x0, y1 - y0, 1e-300 }), scale = 1000.0 / size;
+  const double w = (x1 - x0) * scale + 20, h = (y1 - y0) * scale + 20;
+  auto X = [&](const Point& p) { return 10 + (p.x - x0) * scale; };
+  auto Y = [&](const Point& p) { return 10 + (y1 - p.y) * scale; };
+  char buf[256];
+  std::snprintf(buf, sizeof buf,
+    "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" "
+    "viewBox=\"0 0 %.3f %.3f\">\n<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n",
+    w, h, w, h);
+  out << buf;
+  auto line = [&](const Point& a, const Point& b, const char* style) {
+    std::snprintf(buf, sizeof buf, "<line x1=\"%.3f\" y1=\"%.3f\" x2=\"%.3f\" y2=\"%.3f\" %s/>\n",
+      X(a), Y(a), X(b), Y(b), style);
+    out << buf;
+  };
+  out << "<g id=\"mesh\">\n";
+  for (const std::array<int, 3>& e : meshEdges(r))
+    if (!e[2])
+      line(r.mesh.vertices[e[0]], r.mesh.vertices[e[1]], "stroke=\"#4a6fa5\" stroke-width=\"0.4\"");
+  out << "</g>\n<g id=\"discarded\">\n";
+  for (const Edge& e : r.edges)
+    if (e.flags & EdgeDiscarded)
+      line(r.edgeVertices[e.a], r.edgeVertices[e.b],
+        "stroke=\"#d62728\" stroke-width=\"0.6\" stroke-dasharray=\"3,2\"");
+  out << "</g>\n<g id=\"input\">\n";
+  for (const Edge& e : r.edges)
+    if (e.flags & EdgeInput)
+      line(r.edgeVertices[e.a], r.edgeVertices[e.b], "stroke=\"black\" stroke-width=\"2\"");
+  out << "</g>\n</svg>\n";
+}
+
+namespace
+{
+
+std::string jsonString(const std::string& s)
+{
+  std::string out = "\"";
+  for (char c : s)
+  {
+    if (c == '"' || c == '\\')
+      out += '\\';
+    if (static_cast<unsigned char>(c) < 0x20)
+    {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\u%04x", c);
+      out += buf;
+      continue;
+    }
+    out += c;
+  }
+  return out + "\"";
+}
+
+} // namespace
+
+void writeStatisticsJson(std::ostream& out, const Result& r)
+{
+  out << "{\n  \"ok\": " << (r.ok ? "true" : "false") << ",\n";
+  if (!r.ok)
+    out << "  \"error\": " << jsonString(r.error) << ",\n";
+  char buf[64];
+  for (const auto& [name, value] : r.stats.items())
+  {
+    std::snprintf(buf, sizeof buf, "%.17g", std::isfinite(value) ? value : 0.0);
+    out << "  " << jsonString(name) << ": " << buf << ",\n";
+  }
+  out << "  \"Warnings\": [";
+  for (std::size_t i = 0; i < r.warnings.size(); ++i)
+    out << (i ? ", " : "") << jsonString(r.warnings[i]);
+  out << "]\n}\n";
+}
+
+} // namespace osm

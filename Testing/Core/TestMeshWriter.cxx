@@ -1,0 +1,81 @@
+// Writing results: Triangle files read back exactly, SVG and JSON content.
+#include "MeshWriter.h"
+#include "PolyReader.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+using namespace osm;
+namespace fs = std::filesystem;
+
+namespace
+{
+Result squareWithSlit()
+{
+  Pslg p;
+  p.points = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 }, { 0.2, 0.3 }, { 0.7, 0.35 } };
+  p.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 }, { 4, 5 } };
+  return mesh(p);
+}
+} // namespace
+
+TEST(MeshWriter, TriangleFilesReadBackExactly)
+{
+  const Result r = squareWithSlit();
+  ASSERT_TRUE(r.ok) << r.error;
+  const fs::path dir = fs::temp_directory_path() / "osm-writer-test";
+  fs::create_directories(dir);
+  const std::string base = (dir / "out").string();
+  ASSERT_EQ(writeTriangleFiles(base, r), "");
+  const PolyFile node = readPolyFile(base + ".node");
+  ASSERT_TRUE(node.ok) << node.error;
+  EXPECT_EQ(node.firstIndex, 1);
+  ASSERT_EQ(node.pslg.points.size(), r.mesh.vertices.size());
+  for (std::size_t i = 0; i < r.mesh.vertices.size(); ++i)
+    EXPECT_EQ(node.pslg.points[i], r.mesh.vertices[i]);
+  std::ifstream ele(base + ".ele");
+  std::size_t count = 0, corners = 0;
+  ele >> count >> corners;
+  EXPECT_EQ(count, r.mesh.triangles.size());
+  EXPECT_EQ(corners, 3u);
+  std::size_t id, a, b, c;
+  int region;
+  ASSERT_TRUE(ele >> id >> a >> b >> c >> region);
+  EXPECT_EQ(id, 1u);
+  EXPECT_EQ(a, static_cast<std::size_t>(r.mesh.triangles[0][0] + 1));
+  std::ifstream edge(base + ".edge");
+  std::size_t edges = 0, markers = 0, inputEdges = 0;
+  edge >> edges >> markers;
+  for (std::size_t e = 0; e < edges; ++e)
+  {
+    int m;
+    ASSERT_TRUE(edge >> id >> a >> b >> m);
+    inputEdges += m;
+  }
+  // Euler: E = V + F - 1 for a disc; the slit's pieces and the sides are marked.
+  EXPECT_EQ(edges, r.mesh.vertices.size() + r.mesh.triangles.size() - 1);
+  EXPECT_GE(inputEdges, 5u);
+  fs::remove_all(dir);
+}
+
+TEST(MeshWriter, UnwritablePathGivesAReason)
+{
+  EXPECT_NE(writeTriangleFiles("/nonexistent-dir/x", squareWithSlit()), "");
+}
+
+TEST(MeshWriter, SvgAndJson)
+{
+  const Result r = squareWithSlit();
+  std::ostringstream svg, json;
+  writeSvg(svg, r);
+  EXPECT_EQ(svg.str().rfind("<svg", 0), 0u);
+  EXPECT_NE(svg.str().find("<g id=\"input\">"), std::string::npos);
+  EXPECT_NE(svg.str().find("</svg>"), std::string::npos);
+  writeStatisticsJson(json, r);
+  EXPECT_NE(json.str().find("\"ok\": true"), std::string::npos);
+  EXPECT_NE(json.str().find("\"OutputTriangles\": " + std::to_string(r.mesh.triangles.size())),
+    std::string::npos);
+}
