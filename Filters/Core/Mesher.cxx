@@ -81,7 +81,8 @@ std::string normalise(Work& w, const Pslg& input, const std::vector<int>& pointO
     const Point before = w.points[i];
     scale(w.points[i]);
     const Point& p = w.points[i];
-    if ((before.x != 0 && std::fabs(p.x) < 1e-280) || (before.y != 0 && std::fabs(p.y) < 1e-280))
+    // The exact incircle needs every nonzero coordinate above ~2^-216 of the largest.
+    if ((before.x != 0 && std::fabs(p.x) < 0x1p-200) || (before.y != 0 && std::fabs(p.y) < 0x1p-200))
     {
       const auto user = std::find(pointOf.begin(), pointOf.end(), static_cast<int>(i));
       return "point " + std::to_string(user - pointOf.begin()) + " at " +
