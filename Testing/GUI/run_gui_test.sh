@@ -21,7 +21,7 @@ rm -f "$OSM_GUI_SCREENSHOT" "$OSM_GUI_REPORT"
 
 # --dr: ignore the user's settings, so the run is the same on every machine.
 status=0
-timeout 240 xvfb-run -a -s "-screen 0 1280x1024x24" \
+timeout --kill-after=10 240 bash "$here/xvfb_run.sh" \
   "$paraview" --dr --script="$here/gui_script.py" --exit || status=$?
 echo "paraview exited with status $status"
 
