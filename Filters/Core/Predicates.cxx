@@ -11,12 +11,13 @@
 // Range of exactness. The filters are rigorous for all finite inputs, including underflow
 // (absolute slack terms) and overflow (an infinite or NaN intermediate never certifies). The exact
 // fallback first rescales the coordinates by a power of two so the largest magnitude lies in
-// [1, 2); the core normalises coordinates upstream, so this is normally a no-op. After that no
-// intermediate can overflow, and the result is exact as long as no product loses bits below the
-// smallest subnormal 2^-1074, which holds when every scaled coordinate is a multiple of 2^-537
-// (orient2d, degree 2) or 2^-268 (incircle, degree 4). Sufficient condition: every nonzero
-// coordinate is at least 2^-485 (orient2d) or 2^-216 (incircle) times the largest one, and no
-// coordinate underflows when scaled down. Inputs must be finite (NaN is returned otherwise).
+// [1, 2) (exact, and cheap; the core already normalises coordinates by a power of two upstream, so
+// this only matters for callers with extreme magnitudes). After that no intermediate can overflow,
+// and the result is exact as long as no product loses bits below the smallest subnormal 2^-1074,
+// which holds when every scaled coordinate is a multiple of 2^-537 (orient2d, degree 2) or 2^-268
+// (incircle, degree 4). Sufficient condition: every nonzero coordinate is at least 2^-485
+// (orient2d) or 2^-216 (incircle) times the largest one, and no coordinate underflows when scaled
+// down. Inputs must be finite (NaN is returned otherwise).
 #include "Predicates.h"
 
 #include <algorithm>
@@ -34,11 +35,18 @@
 #error "Predicates.cxx needs double arithmetic without extended precision (SSE2, not x87)."
 #endif
 
+// The exact fallbacks stay out of line so the filtered fast paths remain small, and are entered
+// through cold wrappers so the fast paths are laid out for the common case. The exact code itself
+// is not cold: GCC optimises cold code for size and would stop inlining the error-free
+// transformations.
 #if defined(__GNUC__)
+#define OSM_NOINLINE __attribute__((noinline))
 #define OSM_COLD __attribute__((noinline, cold))
 #elif defined(_MSC_VER)
+#define OSM_NOINLINE __declspec(noinline)
 #define OSM_COLD __declspec(noinline)
 #else
+#define OSM_NOINLINE
 #define OSM_COLD
 #endif
 
@@ -142,14 +150,6 @@ struct Expansion
   double top() const { return n > 0 ? c[n - 1] : 0.0; }
 };
 
-inline Expansion<2> toExpansion(TwoTerm t)
-{
-  Expansion<2> e;
-  e.push(t.lo);
-  e.push(t.hi);
-  return e;
-}
-
 // h = e + fSign * f for raw arrays of lengths n and m (fSign = +-1, so the scaling is exact); h
 // must have room for n + m and not alias e or f. Shewchuk's fast expansion sum, which needs
 // round-to-even and strongly nonoverlapping inputs, and keeps that property: merge both inputs by
@@ -243,7 +243,13 @@ Expansion<2 * N * M> operator*(const Expansion<N>& e, const Expansion<M>& f)
   for (int j = 0; j < f.n; ++j)
   {
     const Expansion<2 * N> part = scale(e, f.c[j]);
-    len = mergeSum(acc, len, part.c.data(), part.n, dst, 1.0);
+    if (j == 0) // nothing to add to yet
+    {
+      std::copy_n(part.c.data(), part.n, dst);
+      len = part.n;
+    }
+    else
+      len = mergeSum(acc, len, part.c.data(), part.n, dst, 1.0);
     std::swap(acc, dst);
   }
   out.n = len;
@@ -251,7 +257,10 @@ Expansion<2 * N * M> operator*(const Expansion<N>& e, const Expansion<M>& f)
 }
 
 // ---------------------------------------------------------------------------------------------
-// Exact fallbacks.
+// Exact fallbacks. Stages, cheapest first: the exact determinant of the rounded differences (the
+// answer when no difference was rounded), then for incircle a first-order correction for their
+// rounding errors with its own error bound, and finally the full expansion of the exact
+// differences (orient2d goes there directly when a difference was rounded).
 
 // Rescale the coordinates by 2^-shift so the largest magnitude lies in [1, 2). Multiplying by a
 // power of two is exact barring underflow, and the sign of a homogeneous polynomial is unchanged.
@@ -334,21 +343,23 @@ auto incircleDeterminant(const Differences<6>& d)
   const auto bc = bdx * cdy - cdx * bdy;
   const auto ca = cdx * ady - adx * cdy;
   const auto ab = adx * bdy - bdx * ady;
-  const auto alift = adx * adx + ady * ady;
-  const auto blift = bdx * bdx + bdy * bdy;
-  const auto clift = cdx * cdx + cdy * cdy;
-  return alift * bc + blift * ca + clift * ab;
+  // lift * cross as cross * dx * dx + cross * dy * dy: for single-component differences these are
+  // chains of linear-time scalings instead of a quadratic expansion product.
+  const auto lifted = [](const auto& cross, const auto& dx, const auto& dy) {
+    return (cross * dx) * dx + (cross * dy) * dy;
+  };
+  return lifted(bc, adx, ady) + lifted(ca, bdx, bdy) + lifted(ab, cdx, cdy);
 }
 
 // Between the exact determinant of the rounded differences h and the fully exact one: with t the
 // tails (|t| <= u |h|), det(h + t) = det(h) + F + R, where F is linear in the tails and R holds
 // the terms with two or more. det(h) is known exactly (head); F is evaluated in floating point.
 // Bounds, with P the permanent of h (sum of |monomials|, estimated by the computed one to within
-// gamma_7): |R| <= ((1 + u)^4 - 1 - 4u) P <= 7u^2 P; |F - F~| <= gamma_9 * 4u P; summing the n <= 96
-// head components costs gamma_95 times their absolute sum. The constants round these up, and
-// the absolute slack covers underflow (all magnitudes are bounded after scaling). This resolves
-// nearly every case whose differences are inexact (e.g. points on a circular arc) at a small
-// fraction of the cost of the full expansion. Returns nothing if it cannot decide.
+// gamma_7): |R| <= ((1 + u)^4 - 1 - 4u) P <= 7u^2 P; |F - F~| <= gamma_9 * 4u P; summing the n <=
+// 96 head components costs gamma_95 times their absolute sum. The constants round these up, and the
+// absolute slack covers underflow (all magnitudes are bounded after scaling). This resolves nearly
+// every case whose differences are inexact (e.g. points on a circular arc) at a small fraction of
+// the cost of the full expansion. Returns nothing if it cannot decide.
 std::optional<double> incircleFirstOrder(const Expansion<96>& head, const Differences<6>& d)
 {
   const double adx = d[0].hi, ady = d[1].hi, bdx = d[2].hi, bdy = d[3].hi;
@@ -386,7 +397,7 @@ std::optional<double> incircleFirstOrder(const Expansion<96>& head, const Differ
   return std::nullopt;
 }
 
-OSM_COLD double orient2dExact(const Point& a, const Point& b, const Point& c)
+OSM_NOINLINE double orient2dExact(const Point& a, const Point& b, const Point& c)
 {
   std::array<double, 6> v{ a.x, a.y, b.x, b.y, c.x, c.y };
   int shift = 0;
@@ -399,7 +410,7 @@ OSM_COLD double orient2dExact(const Point& a, const Point& b, const Point& c)
   return restore(det, shift, 2);
 }
 
-OSM_COLD double incircleExact(const Point& a, const Point& b, const Point& c, const Point& d)
+OSM_NOINLINE double incircleExact(const Point& a, const Point& b, const Point& c, const Point& d)
 {
   std::array<double, 8> v{ a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y };
   int shift = 0;
@@ -413,6 +424,16 @@ OSM_COLD double incircleExact(const Point& a, const Point& b, const Point& c, co
   if (const std::optional<double> det = incircleFirstOrder(head, diff))
     return restore(*det, shift, 4);
   return restore(incircleDeterminant<2>(diff).top(), shift, 4);
+}
+
+OSM_COLD double orient2dFallback(const Point& a, const Point& b, const Point& c)
+{
+  return orient2dExact(a, b, c);
+}
+
+OSM_COLD double incircleFallback(const Point& a, const Point& b, const Point& c, const Point& d)
+{
+  return incircleExact(a, b, c, d);
 }
 
 } // namespace
@@ -432,7 +453,7 @@ double orient2d(const Point& a, const Point& b, const Point& c)
   const double bound = kOrientBound * (std::fabs(left) + std::fabs(right)) + kOrientSlack;
   if (std::fabs(det) > bound) // false for NaN, and for inf since the bound is then inf too
     return det;
-  return orient2dExact(a, b, c);
+  return orient2dFallback(a, b, c);
 }
 
 double incircle(const Point& a, const Point& b, const Point& c, const Point& d)
@@ -456,7 +477,7 @@ double incircle(const Point& a, const Point& b, const Point& c, const Point& d)
   const double bound = kIncircleBound * permanent + slack;
   if (std::fabs(det) > bound)
     return det;
-  return incircleExact(a, b, c, d);
+  return incircleFallback(a, b, c, d);
 }
 
 } // namespace osm

@@ -75,8 +75,7 @@ class Rng
 public:
   explicit Rng(std::uint64_t seed)
     : engine(seed)
-  {
-  }
+  {}
   double unit() { return static_cast<double>(engine() >> 11) * 0x1p-53; } // [0, 1)
   double uniform(double lo, double hi) { return lo + (hi - lo) * unit(); }
   int integer(int lo, int hi) // [lo, hi]
@@ -158,8 +157,8 @@ struct Tally
       return;
     if (++wrong <= 5)
     {
-      std::string msg = what + ": exact sign " + std::to_string(exact) + ", got " +
-        std::to_string(got) + " for";
+      std::string msg =
+        what + ": exact sign " + std::to_string(exact) + ", got " + std::to_string(got) + " for";
       for (const Point& p : pts)
         msg += " " + str(p);
       ADD_FAILURE() << msg;
