@@ -28,12 +28,7 @@
 #include <optional>
 #include <utility>
 
-#if defined(__FAST_MATH__)
-#error "Predicates.cxx must not be compiled with -ffast-math: it needs exact IEEE-754 rounding."
-#endif
-#if defined(FLT_EVAL_METHOD) && FLT_EVAL_METHOD != 0
-#error "Predicates.cxx needs double arithmetic without extended precision (SSE2, not x87)."
-#endif
+// (The header refuses -ffast-math and x87 arithmetic at compile time.)
 
 // The exact fallbacks stay out of line so the filtered fast paths remain small, and are entered
 // through cold wrappers so the fast paths are laid out for the common case. The exact code itself
@@ -67,10 +62,7 @@ namespace
 //   orient2d: k = 3 (difference, difference, product), k' = 4:  need 3u + 30u^2 + O(u^3).
 //   incircle: k = 10 (e.g. adx, adx, square, lift sum, bdx, cdy, product, cross difference,
 //             lift * cross, first of the two final sums), k' = 11: need 10u + 240u^2 + O(u^3).
-// The constants below round those up generously; the margin costs nothing measurable.
-constexpr double kU = 0x1p-53;
-constexpr double kOrientBound = (3.0 + 64.0 * kU) * kU;
-constexpr double kIncircleBound = (10.0 + 512.0 * kU) * kU;
+// The constants (in Predicates.h) round those up generously; the margin costs nothing measurable.
 
 // Products that underflow have an absolute (not relative) error of at most 2^-1075 each, and
 // additions that underflow are exact. For orient2d that adds at most ~2^-1073 to the error, far
@@ -78,8 +70,11 @@ constexpr double kIncircleBound = (10.0 + 512.0 * kU) * kU;
 // the lifts and cross terms; since |bdx*cdy| + |cdx*bdy| <= (blift + clift) / 2, all of it is
 // bounded by a few 2^-1074 * (1 + alift + blift + clift). Both slacks are normal numbers (no slow
 // subnormal arithmetic on the hot path) and far too small to matter for ordinary inputs.
-constexpr double kOrientSlack = DBL_MIN;     // 2^-1022
-constexpr double kIncircleSlack = 0x1p-1018; // times (1 + alift + blift + clift)
+using detail::kIncircleBound;
+using detail::kIncircleSlack;
+using detail::kOrientBound;
+using detail::kOrientSlack;
+using detail::kU;
 
 // ---------------------------------------------------------------------------------------------
 // Error-free transformations: hi is the rounded result and hi + lo the exact one.
@@ -426,6 +421,15 @@ OSM_NOINLINE double incircleExact(const Point& a, const Point& b, const Point& c
   return restore(incircleDeterminant<2>(diff).top(), shift, 4);
 }
 
+} // namespace
+
+// ---------------------------------------------------------------------------------------------
+// The exact fallbacks of the inline filtered predicates in Predicates.h: reached only when the
+// filter cannot certify the sign (near-degenerate input, exact degeneracy, overflow).
+
+namespace detail
+{
+
 OSM_COLD double orient2dFallback(const Point& a, const Point& b, const Point& c)
 {
   return orient2dExact(a, b, c);
@@ -436,48 +440,6 @@ OSM_COLD double incircleFallback(const Point& a, const Point& b, const Point& c,
   return incircleExact(a, b, c, d);
 }
 
-} // namespace
-
-// ---------------------------------------------------------------------------------------------
-// Public predicates: the filtered evaluation is the common case and stays tiny; anything it cannot
-// certify (near-degenerate input, exact degeneracy, overflow producing inf/NaN) goes to the exact
-// code, which is kept out of line.
-
-double orient2d(const Point& a, const Point& b, const Point& c)
-{
-  const double acx = a.x - c.x, bcx = b.x - c.x;
-  const double acy = a.y - c.y, bcy = b.y - c.y;
-  const double left = acx * bcy;
-  const double right = acy * bcx;
-  const double det = left - right;
-  const double bound = kOrientBound * (std::fabs(left) + std::fabs(right)) + kOrientSlack;
-  if (std::fabs(det) > bound) // false for NaN, and for inf since the bound is then inf too
-    return det;
-  return orient2dFallback(a, b, c);
-}
-
-double incircle(const Point& a, const Point& b, const Point& c, const Point& d)
-{
-  const double adx = a.x - d.x, bdx = b.x - d.x, cdx = c.x - d.x;
-  const double ady = a.y - d.y, bdy = b.y - d.y, cdy = c.y - d.y;
-
-  const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
-  const double cdxady = cdx * ady, adxcdy = adx * cdy;
-  const double adxbdy = adx * bdy, bdxady = bdx * ady;
-  const double alift = adx * adx + ady * ady;
-  const double blift = bdx * bdx + bdy * bdy;
-  const double clift = cdx * cdx + cdy * cdy;
-
-  const double det =
-    alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady);
-  const double permanent = alift * (std::fabs(bdxcdy) + std::fabs(cdxbdy)) +
-    blift * (std::fabs(cdxady) + std::fabs(adxcdy)) +
-    clift * (std::fabs(adxbdy) + std::fabs(bdxady));
-  const double slack = (1.0 + alift + blift + clift) * kIncircleSlack;
-  const double bound = kIncircleBound * permanent + slack;
-  if (std::fabs(det) > bound)
-    return det;
-  return incircleFallback(a, b, c, d);
-}
+} // namespace detail
 
 } // namespace osm

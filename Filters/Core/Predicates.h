@@ -5,15 +5,71 @@
 
 #include "Geometry.h"
 
+#include <cfloat>
+#include <cmath>
+
+// The error bounds below rely on IEEE round-to-nearest double arithmetic.
+#if defined(__FAST_MATH__)
+#error "The OSM predicates must not be compiled with -ffast-math: they need exact IEEE rounding."
+#endif
+#if defined(FLT_EVAL_METHOD) && FLT_EVAL_METHOD != 0
+#error "The OSM predicates need double arithmetic without extended precision (SSE2, not x87)."
+#endif
+
 namespace osm
 {
 
+namespace detail
+{
+// Forward error bounds of the filtered evaluations; Predicates.cxx derives them.
+constexpr double kU = 0x1p-53;
+constexpr double kOrientBound = (3.0 + 64.0 * kU) * kU;
+constexpr double kIncircleBound = (10.0 + 512.0 * kU) * kU;
+constexpr double kOrientSlack = DBL_MIN;     // covers underflowing products
+constexpr double kIncircleSlack = 0x1p-1018; // times (1 + alift + blift + clift)
+
+double orient2dFallback(const Point& a, const Point& b, const Point& c);
+double incircleFallback(const Point& a, const Point& b, const Point& c, const Point& d);
+} // namespace detail
+
 /// > 0 if a, b, c turn counter-clockwise, < 0 if clockwise, 0 if collinear.
-double orient2d(const Point& a, const Point& b, const Point& c);
+/// Inline filtered evaluation; the rare uncertain case goes to the exact fallback.
+inline double orient2d(const Point& a, const Point& b, const Point& c)
+{
+  const double acx = a.x - c.x, bcx = b.x - c.x;
+  const double acy = a.y - c.y, bcy = b.y - c.y;
+  const double left = acx * bcy;
+  const double right = acy * bcx;
+  const double det = left - right;
+  const double bound =
+    detail::kOrientBound * (std::fabs(left) + std::fabs(right)) + detail::kOrientSlack;
+  if (std::fabs(det) > bound) // false for NaN, and for inf since the bound is then inf too
+    return det;
+  return detail::orient2dFallback(a, b, c);
+}
 
 /// For a, b, c counter-clockwise: > 0 if d lies strictly inside their circumcircle,
 /// < 0 if strictly outside, 0 if on it. (Sign flips if a, b, c are clockwise.)
-double incircle(const Point& a, const Point& b, const Point& c, const Point& d);
+inline double incircle(const Point& a, const Point& b, const Point& c, const Point& d)
+{
+  const double adx = a.x - d.x, bdx = b.x - d.x, cdx = c.x - d.x;
+  const double ady = a.y - d.y, bdy = b.y - d.y, cdy = c.y - d.y;
+  const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
+  const double cdxady = cdx * ady, adxcdy = adx * cdy;
+  const double adxbdy = adx * bdy, bdxady = bdx * ady;
+  const double alift = adx * adx + ady * ady;
+  const double blift = bdx * bdx + bdy * bdy;
+  const double clift = cdx * cdx + cdy * cdy;
+  const double det =
+    alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady);
+  const double permanent = alift * (std::fabs(bdxcdy) + std::fabs(cdxbdy)) +
+    blift * (std::fabs(cdxady) + std::fabs(adxcdy)) +
+    clift * (std::fabs(adxbdy) + std::fabs(bdxady));
+  const double slack = (1.0 + alift + blift + clift) * detail::kIncircleSlack;
+  if (std::fabs(det) > detail::kIncircleBound * permanent + slack)
+    return det;
+  return detail::incircleFallback(a, b, c, d);
+}
 
 inline int orientSign(const Point& a, const Point& b, const Point& c)
 {
