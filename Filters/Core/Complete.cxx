@@ -9,6 +9,12 @@
 namespace osm
 {
 
+namespace
+{
+/// Completion is O(k^3) in the face size k; the theory says k <= 6.
+constexpr std::size_t kLargestFaceHandled = 400;
+} // namespace
+
 double maxAngle(const Point& a, const Point& b, const Point& c)
 {
   return std::max({ angleAt(c, a, b), angleAt(a, b, c), angleAt(b, c, a) });
@@ -231,6 +237,11 @@ Completion complete(const PlanarGraph& g, Statistics& stats, RunContext& run)
       continue;
     }
     ++stats.facesCompleted;
+    // Lemma 1 bounds faces by 6 sides; the cubic search must never stall a run.
+    if (face.size() > kLargestFaceHandled)
+      throw Stop{ "stitching left a face with " + std::to_string(face.size()) +
+        " sides (the paper's bound is 6), more than the completion handles (" +
+        std::to_string(kLargestFaceHandled) + ")" };
     polygon.clear();
     for (int v : face)
       polygon.push_back(g.points[v]);
