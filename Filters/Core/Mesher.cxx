@@ -13,6 +13,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 #include <new>
 #include <string>
 
@@ -71,6 +73,14 @@ std::string normalise(Work& w, const Pslg& input, const std::vector<int>& pointO
   exponent = 0;
   if (maxAbs == 0)
     return {};
+  // The padded box reaches about 5 times the largest coordinate: it must stay finite.
+  if (maxAbs > std::numeric_limits<double>::max() / 16)
+  {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.17g", maxAbs);
+    return std::string("a coordinate of magnitude ") + buf +
+      " is too large: the mesher needs coordinates below 1.1e307 to pad the domain";
+  }
   std::frexp(maxAbs, &exponent);
   auto scale = [&](Point& p) {
     p.x = std::ldexp(p.x, -exponent);
@@ -239,7 +249,17 @@ Result Mesher::execute()
                            "meshing the padded bounding box instead");
     domain = Domain::Box;
   }
-  meshRounds(w, domain);
+  try
+  {
+    meshRounds(w, domain);
+  }
+  catch (Stop& stop)
+  {
+    if (stop.located)
+      stop.reason += " near " +
+        formatPoint({ std::ldexp(stop.at.x, exponent), std::ldexp(stop.at.y, exponent) });
+    throw;
+  }
   st.secondsTotal = since(t0);
   res.ok = true;
   return std::move(res);

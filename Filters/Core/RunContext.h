@@ -13,6 +13,8 @@ namespace osm
 struct Stop
 {
   std::string reason;
+  bool located = false; ///< at is where, in the core's scaled coordinates
+  Point at;
 };
 
 class RunContext

@@ -1,6 +1,5 @@
 #include "Stitch.h"
 
-#include "Clean.h"
 #include "Predicates.h"
 
 #include <algorithm>
@@ -80,10 +79,6 @@ public:
     , sinTheta1(sinTheta1)
     , out(out)
   {
-    double m = 0;
-    for (const Point& p : P)
-      m = std::max({ m, std::fabs(p.x), std::fabs(p.y) });
-    nearTolerance = 8 * std::numeric_limits<double>::epsilon() * m;
   }
 
   void walk(int segment, int a, int b);
@@ -91,7 +86,8 @@ public:
 
 private:
   int firstStep(int cur, int b, int& l, int& r, int& tri);
-  bool onSegment(const Point& A, const Point& B, const Point& x, int orientation) const;
+  bool ahead(const Point& from, const Point& x, const Point& B) const;
+  static bool onSegment(const Point& A, const Point& B, const Point& x, double localLength);
   void addCrossing(int edge, int piece, const Point& A, const Point& B);
   void markDuplicates();
 
@@ -99,23 +95,36 @@ private:
   const std::vector<Point>& P;
   const std::vector<char>& isInput;
   const double sinTheta1;
-  /// Vertices closer than this to a segment count as on it: crossings that
-  /// close would round onto the vertex. A few ulps of the largest coordinate.
-  double nearTolerance = 0;
   Walk& out;
+  int segmentStart = -1; ///< first vertex of the segment being walked
   std::vector<std::pair<int, int>> triPiece; ///< (overlay triangle, piece) traversed
   std::vector<std::pair<int, int>> steinerHits; ///< (Steiner vertex, segment) passing through it
 };
 
-/// x lies on segment AB exactly, or so close that a crossing beside it would
-/// round onto it. Such a vertex splits the segment (a repair within rounding).
-bool Walker::onSegment(const Point& A, const Point& B, const Point& x, int orientation) const
+/// x lies on the line AB exactly, or so close that a crossing of AB with an
+/// overlay edge at x (of length about localLength) would round onto x: such a
+/// vertex splits the segment, a repair within rounding. A crossing point's
+/// rounding error is a few ulps of its coordinates plus of the edge length.
+bool Walker::onSegment(const Point& A, const Point& B, const Point& x, double localLength)
 {
-  if (orientation == 0)
+  const double o = orient2d(A, B, x); // exact sign, magnitude within a factor of 2
+  if (o == 0)
     return true;
+  const double scale = std::max(std::fabs(x.x), std::fabs(x.y)) + localLength;
+  const double tolerance = 8 * std::numeric_limits<double>::epsilon() * scale;
+  return std::fabs(o) <= tolerance * std::hypot(B.x - A.x, B.y - A.y);
+}
+
+/// x lies strictly further along the segment than from, and not beyond B. The
+/// direction is the segment's own, fixed for the whole walk, so the walk only
+/// ever advances and cannot cycle.
+bool Walker::ahead(const Point& from, const Point& x, const Point& B) const
+{
+  const Point& A = P[segmentStart];
   const double dx = B.x - A.x, dy = B.y - A.y;
-  const double len = std::hypot(dx, dy);
-  return std::fabs(cross(dx, dy, x.x - A.x, x.y - A.y)) <= nearTolerance * len;
+  const double step = (x.x - from.x) * dx + (x.y - from.y) * dy;
+  const double rest = (B.x - x.x) * dx + (B.y - x.y) * dy;
+  return step > 0 && rest >= 0;
 }
 
 /// From vertex cur towards b: returns the next vertex if the segment runs along
@@ -123,17 +132,16 @@ bool Walker::onSegment(const Point& A, const Point& B, const Point& x, int orien
 /// enters, with l, r the vertices left and right of the segment.
 int Walker::firstStep(int cur, int b, int& l, int& r, int& tri)
 {
+  const Point& A = P[segmentStart];
   const Point& C = P[cur];
   const Point& B = P[b];
-  const double bx = B.x - C.x, by = B.y - C.y, len2 = bx * bx + by * by;
   // First look for a neighbour on the way to b (within rounding): go there.
   int t = ov.vtri[cur];
   for (std::size_t k = 0; k <= ov.tris.size(); ++k)
   {
     const int i = localIndex(ov.tris[t], cur);
     const int u = ov.tris[t][(i + 1) % 3];
-    const double along = (P[u].x - C.x) * bx + (P[u].y - C.y) * by;
-    if (along > 0 && along <= len2 && onSegment(C, B, P[u], orientSign(C, P[u], B)))
+    if (ahead(C, P[u], B) && onSegment(A, B, P[u], std::sqrt(dist2(C, P[u]))))
     {
       tri = ov.triEdge[t][(i + 2) % 3];
       return u;
@@ -185,9 +193,12 @@ void Walker::walk(int segment, int a, int b)
 {
   const Point& A = P[a];
   const Point& B = P[b];
+  segmentStart = a;
   int cur = a;
-  while (cur != b)
+  for (std::size_t pieces = 0; cur != b; ++pieces)
   {
+    if (pieces > P.size())
+      throw Stop{ "internal error: a stitching walk does not advance" };
     const int piece = static_cast<int>(out.pieces.size());
     out.pieces.push_back({ cur, -1, segment, -1, static_cast<int>(out.crossings.size()), 0 });
     int l = -1, r = -1, t = -1;
@@ -214,7 +225,8 @@ void Walker::walk(int segment, int a, int b)
         const int il = localIndex(ov.tris[t], l), ir = localIndex(ov.tris[t], r);
         const int x = ov.tris[t][3 - il - ir];
         const int o = orientSign(A, B, P[x]);
-        if (onSegment(A, B, P[x], o))
+        const double local = std::sqrt(std::max(dist2(P[x], P[l]), dist2(P[x], P[r])));
+        if (o == 0 || (onSegment(A, B, P[x], local) && ahead(P[cur], P[x], B)))
           next = x;
         else if (o > 0)
         {
@@ -431,7 +443,8 @@ PlanarGraph stitch(const OverlayEdges& ov, const Overlay& overlay, const Walk& w
         // Distinct crossings that round to one point cannot be told apart.
         if (c.p == g.points[prev] || c.p == g.points[ov.edges[e][1]])
           throw Stop{ "input segments come closer to each other than double precision can "
-                      "separate, near " + formatPoint(c.p) };
+                      "separate",
+            true, c.p };
         const int v = static_cast<int>(g.points.size());
         g.points.push_back(c.p);
         g.origin.push_back(VertexOrigin::Stitch);

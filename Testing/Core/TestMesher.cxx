@@ -404,3 +404,31 @@ TEST(Clean, MergesNearDuplicatesWithinTheTolerance)
   o.mergeTolerance = -1;
   EXPECT_FALSE(mesh(p, o).ok);
 }
+
+TEST(Mesher, RefusesCoordinatesNearTheDoubleLimit)
+{
+  Pslg p;
+  p.points = { { 0, -7.5e307 } };
+  Options o;
+  o.domain = Domain::Box;
+  const Result r = mesh(p, o);
+  EXPECT_FALSE(r.ok);
+  EXPECT_NE(r.error.find("too large"), std::string::npos) << r.error;
+}
+
+TEST(Stitch, TinyFeaturesNearTheOriginNextToHugeOnes)
+{
+  // Found by fuzzing: coordinates 1e29 apart in magnitude once made the walk cycle.
+  Pslg p;
+  p.points = { { 1.5988769321572626e+29, 6 }, { 4, 1 }, { 0, 0 } };
+  // Their convex hull is a sliver 1e-29 wide: its edges cannot be told apart.
+  const Result hull = mesh(p);
+  if (!hull.ok)
+    EXPECT_NE(hull.error.find("double precision can separate near ("), std::string::npos)
+      << hull.error;
+  else
+    meshAndValidate(p, "huge and tiny, hull");
+  Options o;
+  o.domain = Domain::Box;
+  meshAndValidate(p, "huge and tiny, box", o);
+}
