@@ -117,6 +117,9 @@ void splitCrossings(Work& w, const std::vector<SegmentCrossing>& crossings, Stat
     w.isCrossingPoint.push_back(1);
     for (int s : { c.a, c.b })
     {
+      // Hull edges (numbered after the input's) are recomputed next round.
+      if (s >= static_cast<int>(w.segments.size()))
+        continue;
       const Point& a = w.points[w.segments[s][0]];
       const Point& b = w.points[w.segments[s][1]];
       const double t = (c.p.x - a.x) * (b.x - a.x) + (c.p.y - a.y) * (b.y - a.y);
@@ -173,8 +176,12 @@ std::string crossingError(const Work& w, const std::vector<SegmentCrossing>& cro
 {
   const SegmentCrossing& c = crossings.front();
   const Point p{ std::ldexp(c.p.x, exponent), std::ldexp(c.p.y, exponent) };
-  std::string msg = "input segments " + std::to_string(w.segmentOrigin[c.a]) + " and " +
-    std::to_string(w.segmentOrigin[c.b]) + " cross near " + formatPoint(p);
+  auto name = [&](int s) {
+    return s < static_cast<int>(w.segments.size())
+      ? "input segment " + std::to_string(w.segmentOrigin[s])
+      : std::string("an edge of the convex hull");
+  };
+  std::string msg = name(c.a) + " and " + name(c.b) + " cross near " + formatPoint(p);
   if (crossings.size() > 1)
     msg += " (and " + std::to_string(crossings.size() - 1) + " more crossing pair(s))";
   return msg + "; enable resolving intersections to split them";

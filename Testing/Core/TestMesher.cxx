@@ -192,7 +192,7 @@ TEST(Clean, RefusesCrossingsWhenAskedTo)
   o.resolveCrossings = false;
   const Result r = mesh(p, o);
   EXPECT_FALSE(r.ok);
-  EXPECT_NE(r.error.find("segments 4 and 5 cross"), std::string::npos) << r.error;
+  EXPECT_NE(r.error.find("input segment 4 and input segment 5 cross"), std::string::npos) << r.error;
   EXPECT_TRUE(r.mesh.triangles.empty());
 }
 
@@ -431,4 +431,17 @@ TEST(Stitch, TinyFeaturesNearTheOriginNextToHugeOnes)
   Options o;
   o.domain = Domain::Box;
   meshAndValidate(p, "huge and tiny, box", o);
+}
+
+TEST(Stitch, NearlyFlatHullFromFuzzing)
+{
+  // Found by fuzzing: a hull 1e-44 thin made hull edges "cross" within rounding.
+  Pslg p;
+  p.points = { { 1, -3.6343235294290297e+44 }, { 6.8571428571428568, 28.714285714285715 },
+    { 10, 0 }, { 0, 0 } };
+  const Result r = mesh(p);
+  if (!r.ok)
+    EXPECT_NE(r.error.find("near ("), std::string::npos) << r.error;
+  else
+    meshAndValidate(p, "flat hull");
 }
