@@ -199,7 +199,8 @@ public:
   Result execute();
 
 private:
-  void meshRounds(Work& w, Domain domain);
+  void meshRounds(Work& w);
+  Domain chooseDomain(const Work& w, bool warn);
   void buildOutput(const Work& w, const PlanarGraph& g, const Completion& c, const Carving& carve,
     const Overlay& overlay, std::vector<Edge>& edges);
 
@@ -247,18 +248,9 @@ Result Mesher::execute()
     res.ok = true;
     return std::move(res);
   }
-  Domain domain = options.domain;
-  if (domain == Domain::Auto)
-    domain = segmentsEncloseRegion(w.points.size(), w.segments) ? Domain::Enclosed : Domain::Hull;
-  if (domain == Domain::Hull && convexHull(w.points).size() < 3)
-  {
-    res.warnings.push_back("the input points are collinear, so their convex hull has no area: "
-                           "meshing the padded bounding box instead");
-    domain = Domain::Box;
-  }
   try
   {
-    meshRounds(w, domain);
+    meshRounds(w);
   }
   catch (Stop& stop)
   {
@@ -272,7 +264,25 @@ Result Mesher::execute()
   return std::move(res);
 }
 
-void Mesher::meshRounds(Work& w, Domain domain)
+/// Auto means the enclosed regions if the segments enclose any (decided on the
+/// segments as split at their crossings), else the hull; a hull without area
+/// falls back to the box.
+Domain Mesher::chooseDomain(const Work& w, bool warn)
+{
+  Domain domain = options.domain;
+  if (domain == Domain::Auto)
+    domain = segmentsEncloseRegion(w.points.size(), w.segments) ? Domain::Enclosed : Domain::Hull;
+  if (domain == Domain::Hull && convexHull(w.points).size() < 3)
+  {
+    if (warn)
+      res.warnings.push_back("the input points are collinear, so their convex hull has no area: "
+                             "meshing the padded bounding box instead");
+    domain = Domain::Box;
+  }
+  return domain;
+}
+
+void Mesher::meshRounds(Work& w)
 {
   Statistics& st = res.stats;
   const double sinTheta1 = std::sin(options.minAngleDeg * std::acos(-1.0) / 180.0);
@@ -281,6 +291,7 @@ void Mesher::meshRounds(Work& w, Domain domain)
   for (int round = 0;; ++round)
   {
     std::vector<Segment> segments = w.segments;
+    const Domain domain = chooseDomain(w, false);
     if (domain == Domain::Hull)
     {
       const std::vector<int> hull = convexHull(w.points);
@@ -314,6 +325,7 @@ void Mesher::meshRounds(Work& w, Domain domain)
       mergeEqualPoints(w);
       continue;
     }
+    chooseDomain(w, true); // now say why the domain changed, once
     st.segmentsSplitAtVertices = walk.splitsAtInputVertices + walk.duplicatePieces;
     st.overlayVertices = overlay.mesh.points.size();
     st.overlaySteinerPoints = overlay.steinerPoints + 4;

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <queue>
 #include <string>
 
@@ -201,6 +202,14 @@ void Refiner::refineTriangle(int t)
     splitHullEdge(exitEdge);
     return;
   }
+  // Refining below the resolution of doubles at this position cannot succeed:
+  // the input has features smaller than its coordinates can express.
+  const double resolution =
+    64 * std::numeric_limits<double>::epsilon() * std::max(std::fabs(c.x), std::fabs(c.y));
+  if (r2 < resolution * resolution)
+    throw Stop{ "input points are closer together than double precision resolves at their "
+                "coordinates (features below about 1e-14 of the coordinate magnitude)",
+      true, c };
   if (!mesh.cavityOf(c, start, cavity))
   {
     ++out.refinementsSkipped;

@@ -445,3 +445,28 @@ TEST(Stitch, NearlyFlatHullFromFuzzing)
   else
     meshAndValidate(p, "flat hull");
 }
+
+TEST(Overlay, FeaturesBelowTheCoordinateResolutionAreRefused)
+{
+  // Found by fuzzing: points 1.5e-42 apart at x = 7 (where doubles are 1e-15 apart).
+  Pslg p;
+  p.points = { { 7, 7 }, { 7, -1.5245138155090096e-42 }, { 7, 0 }, { 0, 0 } };
+  const Result r = mesh(p);
+  EXPECT_FALSE(r.ok);
+  EXPECT_NE(r.error.find("double precision resolves"), std::string::npos) << r.error;
+  EXPECT_NE(r.error.find("near (7"), std::string::npos) << r.error;
+}
+
+TEST(Domain, AutoSeesRegionsClosedByCrossings)
+{
+  // Found by fuzzing: three segments whose crossings close a triangle. Their
+  // index graph has no cycle, yet they enclose a region once split.
+  Pslg p;
+  p.points = { { 0, 0 }, { 5, 0 }, { 0, 1 }, { 1, 13 }, { 13, 13 } };
+  p.segments = { { 3, 0 }, { 2, 1 }, { 0, 4 } };
+  const Result r = meshAndValidate(p, "crossings close a triangle");
+  EXPECT_EQ(r.stats.crossingsSplit, 2u);
+  EXPECT_EQ(r.stats.regions, 1u);
+  // Only the little triangle (0,0), c1, c2 remains.
+  EXPECT_LT(area(r.mesh), 1.0);
+}

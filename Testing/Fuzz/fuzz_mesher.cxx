@@ -1,0 +1,97 @@
+// libFuzzer target: the whole mesher on small arbitrary PSLGs, with the
+// independent validator as the oracle. Coordinates come mostly from a small
+// integer grid so duplicates, collinear points, T-junctions, overlaps and
+// crossings are frequent; some are raw doubles to reach extreme values.
+#include "Mesher.h"
+#include "Validate.h"
+
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
+namespace
+{
+
+class Bytes
+{
+public:
+  Bytes(const std::uint8_t* d, std::size_t n)
+    : data(d)
+    , size(n)
+  {
+  }
+  std::uint8_t byte() { return pos < size ? data[pos++] : 0; }
+  double rawDouble()
+  {
+    double v = 0;
+    std::uint8_t b[8] = {};
+    for (std::uint8_t& x : b)
+      x = byte();
+    std::memcpy(&v, b, sizeof v);
+    return v;
+  }
+  double coordinate()
+  {
+    const std::uint8_t kind = byte();
+    if (kind < 200)
+      return static_cast<double>(kind % 16);                 // grid: degeneracies
+    if (kind < 240)
+      return static_cast<double>(byte()) / 7.0;              // rounded fractions
+    return rawDouble();                                       // anything, NaN included
+  }
+
+private:
+  const std::uint8_t* data;
+  std::size_t size;
+  std::size_t pos = 0;
+};
+
+void fail(const char* what, const std::string& detail)
+{
+  std::fprintf(stderr, "fuzz_mesher: %s: %s\n", what, detail.c_str());
+  std::abort();
+}
+
+} // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
+{
+  Bytes in(data, size);
+  osm::Pslg p;
+  const int n = 1 + in.byte() % 16, m = in.byte() % 16, holes = in.byte() % 3;
+  for (int i = 0; i < n; ++i)
+    p.points.push_back({ in.coordinate(), in.coordinate() });
+  for (int s = 0; s < m; ++s)
+    p.segments.push_back({ in.byte() % n, in.byte() % n });
+  for (int h = 0; h < holes; ++h)
+    p.holes.push_back({ in.coordinate(), in.coordinate() });
+  osm::Options o;
+  o.minAngleDeg = 20.0 + in.byte() % 11;
+  o.domain = static_cast<osm::Domain>(in.byte() % 4);
+  o.maxSteinerPoints = 200000; // a runaway becomes an error, never a hang
+  const osm::Result r = osm::mesh(p, o);
+  if (!r.ok)
+    return 0; // refused: the message is checked by the unit tests
+  // Validate against the input points that the domain kept (the rest are warned about).
+  osm::Pslg present;
+  std::vector<int> index(p.points.size(), -1);
+  for (std::size_t i = 0; i < p.points.size(); ++i)
+    if (r.inputVertex[i] >= 0)
+    {
+      index[i] = static_cast<int>(present.points.size());
+      present.points.push_back(p.points[i]);
+    }
+  for (const osm::Segment& s : p.segments)
+    if (index[s[0]] >= 0 && index[s[1]] >= 0 && !(p.points[s[0]] == p.points[s[1]]))
+      present.segments.push_back({ index[s[0]], index[s[1]] });
+  osm::ValidationOptions vo;
+  vo.maxAngleDeg = r.stats.predictedMaxAngleDeg + 1e-9;
+  // A hole removes whole regions, cutting segments that cross them (a seed on
+  // a vertex picks one of its regions): conformity then holds only in part.
+  vo.checkConformity = p.holes.empty();
+  const osm::ValidationReport rep = osm::validate(present, r.mesh.vertices, r.mesh.triangles, vo);
+  if (!rep.ok)
+    fail("invalid mesh", rep.errors.empty() ? "" : rep.errors.front());
+  return 0;
+}
