@@ -126,11 +126,19 @@ bool Refiner::isPoor(int t) const
   const Point& a = mesh.vertex(t, 0);
   const Point& b = mesh.vertex(t, 1);
   const Point& c = mesh.vertex(t, 2);
-  const double la = dist2(b, c), lb = dist2(c, a), lc = dist2(a, b);
-  const double lmin = std::min({ la, lb, lc });
+  double ux = b.x - a.x, uy = b.y - a.y, vx = c.x - a.x, vy = c.y - a.y;
+  double la = dist2(b, c), lb = vx * vx + vy * vy, lc = ux * ux + uy * uy;
   if (maxEdge2 > 0 && std::max({ la, lb, lc }) > maxEdge2)
     return true;
-  const double cross = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+  // The ratio test has degree 6: rescale the edge vectors so that tiny (or huge)
+  // triangles neither underflow nor overflow.
+  const double s = 1.0 / std::max({ std::fabs(ux), std::fabs(uy), std::fabs(vx), std::fabs(vy) });
+  ux *= s, uy *= s, vx *= s, vy *= s;
+  la = (vx - ux) * (vx - ux) + (vy - uy) * (vy - uy);
+  lb = vx * vx + vy * vy;
+  lc = ux * ux + uy * uy;
+  const double lmin = std::min({ la, lb, lc });
+  const double cross = ux * vy - uy * vx;
   // r² = la·lb·lc / (4·area)² with 2·area = cross; compare without dividing.
   return la * lb * lc > gamma2 * lmin * cross * cross * 4.0 || cross == 0;
 }

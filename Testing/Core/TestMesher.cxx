@@ -470,3 +470,19 @@ TEST(Domain, AutoSeesRegionsClosedByCrossings)
   // Only the little triangle (0,0), c1, c2 remains.
   EXPECT_LT(area(r.mesh), 1.0);
 }
+
+TEST(Overlay, TinyTrianglesAreStillQualityChecked)
+{
+  // Found by fuzzing: a 2e-56 feature; the quality test underflowed, so 179.6°
+  // slivers survived. Every domain must respect the bound.
+  Pslg p;
+  p.points = { { 0, 0 }, { 0, 13 }, { 0, 1 }, { 0, 1.9754877115428911e-56 }, { 1, 0 }, { 0, 6 },
+    { 13, 5 }, { 6, 1 }, { 5, 0 }, { 15, 0 } };
+  for (Domain d : { Domain::Auto, Domain::Box })
+  {
+    Options o;
+    o.minAngleDeg = 20;
+    o.domain = d;
+    meshAndValidate(p, "tiny feature", o);
+  }
+}
