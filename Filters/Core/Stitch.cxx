@@ -386,6 +386,15 @@ std::vector<int> crossingsByEdge(const Walk& walk, std::size_t edgeCount, std::v
   return order;
 }
 
+/// Two points on an overlay edge of the given length are indistinguishable
+/// when closer than the rounding error of a computed crossing point.
+bool tooClose(const Point& p, const Point& q, double edgeLength)
+{
+  const double scale = std::max({ std::fabs(p.x), std::fabs(p.y), edgeLength });
+  const double tolerance = 8 * std::numeric_limits<double>::epsilon() * scale;
+  return dist2(p, q) <= tolerance * tolerance;
+}
+
 } // namespace
 
 PlanarGraph stitch(const OverlayEdges& ov, const Overlay& overlay, const Walk& walk,
@@ -432,6 +441,7 @@ PlanarGraph stitch(const OverlayEdges& ov, const Overlay& overlay, const Walk& w
     }
     else if (kept[e])
     {
+      const double edgeLength = std::sqrt(dist2(g.points[ov.edges[e][0]], g.points[ov.edges[e][1]]));
       ++stats.keptEdges;
       flags |= EdgeKept | EdgeCrossed;
       int prev = ov.edges[e][0];
@@ -440,8 +450,10 @@ PlanarGraph stitch(const OverlayEdges& ov, const Overlay& overlay, const Walk& w
         const Crossing& c = walk.crossings[order[k]];
         if (walk.pieces[c.piece].duplicate)
           continue;
-        // Distinct crossings that round to one point cannot be told apart.
-        if (c.p == g.points[prev] || c.p == g.points[ov.edges[e][1]])
+        // Crossings within rounding of each other (or of the edge's ends) cannot
+        // be told apart: the segments meet at an angle below double precision.
+        if (tooClose(c.p, g.points[prev], edgeLength) ||
+          tooClose(c.p, g.points[ov.edges[e][1]], edgeLength))
           throw Stop{ "input segments come closer to each other than double precision can "
                       "separate",
             true, c.p };

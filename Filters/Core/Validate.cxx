@@ -864,15 +864,16 @@ void checkInputVertices(const Pslg& input, const VertexMap& map, Errors& errors)
 std::string walkSegment(const Mesh& m, int A, int B)
 {
   const Point &a = m.at(A), &b = m.at(B);
-  const double dx = b.x - a.x, dy = b.y - a.y, len2 = dx * dx + dy * dy, len = std::sqrt(len2);
+  const double dx = b.x - a.x, dy = b.y - a.y, len = std::hypot(dx, dy);
   const double scale = std::max({ std::fabs(a.x), std::fabs(a.y), std::fabs(b.x), std::fabs(b.y) });
   const double eps = std::numeric_limits<double>::epsilon();
   int u = A;
-  double tu = 0.0;
-  while (u != B)
+  for (std::size_t steps = 0; u != B; ++steps)
   {
+    if (steps > m.points.size())
+      return "its chain of mesh edges does not advance from " + m.vertexName(u);
     int best = -1;
-    double bestT = 0.0, bestCos = -2.0, nearestOff = std::numeric_limits<double>::infinity();
+    double bestCos = -2.0, nearestOff = std::numeric_limits<double>::infinity();
     const Point& pu = m.at(u);
     for (int i = m.firstCorner[u]; i < m.firstCorner[u + 1] && best != B; ++i)
       for (int w : { m.nextVertex(m.cornersAt[i]), m.prevVertex(m.cornersAt[i]) })
@@ -883,8 +884,11 @@ std::string walkSegment(const Mesh& m, int A, int B)
           break;
         }
         const Point& pw = m.at(w);
-        const double t = ((pw.x - a.x) * dx + (pw.y - a.y) * dy) / len2;
-        if (!(t > tu && t < 1.0))
+        // Progress is measured by the step itself, not by parameters from a:
+        // near a far-away a, steps below one ulp of the parameter would vanish.
+        const double step = (pw.x - pu.x) * dx + (pw.y - pu.y) * dy;
+        const double rest = (b.x - pw.x) * dx + (b.y - pw.y) * dy;
+        if (!(step > 0 && rest > 0))
           continue;
         const double off = std::fabs(dx * (pw.y - a.y) - dy * (pw.x - a.x)) / len;
         const double tol =
@@ -900,7 +904,6 @@ std::string walkSegment(const Mesh& m, int A, int B)
         if (cosine > bestCos)
         {
           best = w;
-          bestT = t;
           bestCos = cosine;
         }
       }
@@ -910,7 +913,6 @@ std::string walkSegment(const Mesh& m, int A, int B)
                  ? " (nearest forward neighbour is " + num(nearestOff) + " off the line)"
                  : "");
     u = best;
-    tu = bestT;
   }
   return "";
 }

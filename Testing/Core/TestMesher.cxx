@@ -486,3 +486,19 @@ TEST(Overlay, TinyTrianglesAreStillQualityChecked)
     meshAndValidate(p, "tiny feature", o);
   }
 }
+
+TEST(Stitch, SegmentsDivergingBelowPrecisionAreRefused)
+{
+  // Found by fuzzing: a segment and a hull edge leave one point 1e-29 rad apart.
+  Pslg p;
+  p.points = { { -2.525587491871645e-29, 0 }, { 0, 11 }, { 3, 15 }, { 3, 7.7142857142857144 },
+    { 1, 3 }, { 2, 0 }, { 0, 0 }, { 0, 1 } };
+  p.segments = { { 7, 0 } };
+  Options o;
+  o.minAngleDeg = 20;
+  const Result r = mesh(p, o);
+  if (r.ok)
+    meshAndValidate(p, "diverging below precision", o);
+  else
+    EXPECT_NE(r.error.find("double precision can separate"), std::string::npos) << r.error;
+}
