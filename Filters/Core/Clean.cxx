@@ -35,9 +35,8 @@ std::vector<int> exactRepresentatives(const std::vector<Point>& pts)
   const std::size_t n = pts.size();
   std::vector<int> order(n);
   std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](int a, int b) {
-    return pts[a] < pts[b] || (pts[a] == pts[b] && a < b);
-  });
+  std::sort(order.begin(), order.end(),
+    [&](int a, int b) { return pts[a] < pts[b] || (pts[a] == pts[b] && a < b); });
   std::vector<int> representative(n);
   for (std::size_t k = 0; k < n; ++k)
   {
@@ -82,8 +81,8 @@ std::vector<int> nearRepresentatives(const std::vector<Point>& pts, double tol)
 }
 
 /// Merge equal (or, with a tolerance, close) points into their representative.
-void mergeDuplicates(const Pslg& in, CleanPslg& out, Statistics& stats,
-  std::vector<std::string>& warnings, double tol)
+void mergeDuplicates(
+  const Pslg& in, CleanPslg& out, Statistics& stats, std::vector<std::string>& warnings, double tol)
 {
   const std::size_t n = in.points.size();
   const std::vector<int> representative =
@@ -113,8 +112,8 @@ void mergeDuplicates(const Pslg& in, CleanPslg& out, Statistics& stats,
       std::to_string(representative[example]) + " at " + formatPoint(in.points[example]));
 }
 
-std::string mapSegments(const Pslg& in, CleanPslg& out, Statistics& stats,
-  std::vector<std::string>& warnings)
+std::string mapSegments(
+  const Pslg& in, CleanPslg& out, Statistics& stats, std::vector<std::string>& warnings)
 {
   const long long n = static_cast<long long>(in.points.size());
   std::vector<std::pair<Segment, int>> segs;

@@ -64,8 +64,8 @@ bool isDiagonal(const std::vector<Point>& P, int i, int j)
 
 } // namespace
 
-bool triangulateMinMaxAngle(const std::vector<Point>& P, const std::vector<int>& ids,
-  std::vector<Triangle>& out)
+bool triangulateMinMaxAngle(
+  const std::vector<Point>& P, const std::vector<int>& ids, std::vector<Triangle>& out)
 {
   const int k = static_cast<int>(P.size());
   const double inf = std::numeric_limits<double>::infinity();
@@ -246,8 +246,8 @@ Completion complete(const PlanarGraph& g, Statistics& stats, RunContext& run)
     for (int v : face)
       polygon.push_back(g.points[v]);
     if (!triangulateMinMaxAngle(polygon, face, out.triangles))
-      throw Stop{ "internal error: a face with " + std::to_string(face.size()) +
-        " sides near " + std::to_string(polygon[0].x) + ", " + std::to_string(polygon[0].y) +
+      throw Stop{ "internal error: a face with " + std::to_string(face.size()) + " sides near " +
+        std::to_string(polygon[0].x) + ", " + std::to_string(polygon[0].y) +
         " could not be triangulated" };
   }
   return out;

@@ -25,8 +25,8 @@ Completion complete(const PlanarGraph& graph, Statistics& stats, RunContext& run
 
 /// Min-max-angle triangulation of a simple polygon given counter-clockwise.
 /// Appends triangles (indices into ids) and returns false if none exists.
-bool triangulateMinMaxAngle(const std::vector<Point>& polygon, const std::vector<int>& ids,
-  std::vector<Triangle>& out);
+bool triangulateMinMaxAngle(
+  const std::vector<Point>& polygon, const std::vector<int>& ids, std::vector<Triangle>& out);
 
 /// Largest angle of a triangle, in radians.
 double maxAngle(const Point& a, const Point& b, const Point& c);

@@ -106,7 +106,8 @@ public:
   {
     if (q.x < lo.x || q.x > hi.x || q.y < lo.y || q.y > hi.y)
       return -1;
-    const std::size_t c = static_cast<std::size_t>(cell(q.y, lo.y, hi.y)) * n + cell(q.x, lo.x, hi.x);
+    const std::size_t c =
+      static_cast<std::size_t>(cell(q.y, lo.y, hi.y)) * n + cell(q.x, lo.x, hi.x);
     for (int k = start[c]; k < start[c + 1]; ++k)
     {
       const int t = items[k];

@@ -29,11 +29,11 @@ std::vector<std::array<int, 3>> meshEdges(const Result& r)
   std::vector<std::pair<Point, int>> byPoint;
   for (std::size_t v = 0; v < r.mesh.vertices.size(); ++v)
     byPoint.push_back({ r.mesh.vertices[v], static_cast<int>(v) });
-  std::sort(byPoint.begin(), byPoint.end(),
-    [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::sort(
+    byPoint.begin(), byPoint.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   auto find = [&](const Point& p) {
-    auto it = std::lower_bound(byPoint.begin(), byPoint.end(), p,
-      [](const auto& a, const Point& q) { return a.first < q; });
+    auto it = std::lower_bound(
+      byPoint.begin(), byPoint.end(), p, [](const auto& a, const Point& q) { return a.first < q; });
     return it != byPoint.end() && it->first == p ? it->second : -1;
   };
   for (const Edge& e : r.edges)

@@ -92,7 +92,8 @@ std::string normalise(Work& w, const Pslg& input, const std::vector<int>& pointO
     scale(w.points[i]);
     const Point& p = w.points[i];
     // The exact incircle needs every nonzero coordinate above ~2^-216 of the largest.
-    if ((before.x != 0 && std::fabs(p.x) < 0x1p-200) || (before.y != 0 && std::fabs(p.y) < 0x1p-200))
+    if ((before.x != 0 && std::fabs(p.x) < 0x1p-200) ||
+      (before.y != 0 && std::fabs(p.y) < 0x1p-200))
     {
       const auto user = std::find(pointOf.begin(), pointOf.end(), static_cast<int>(i));
       return "point " + std::to_string(user - pointOf.begin()) + " at " +
@@ -172,7 +173,8 @@ void mergeEqualPoints(Work& w)
   w.segmentOrigin = std::move(origin);
 }
 
-std::string crossingError(const Work& w, const std::vector<SegmentCrossing>& crossings, int exponent)
+std::string crossingError(
+  const Work& w, const std::vector<SegmentCrossing>& crossings, int exponent)
 {
   const SegmentCrossing& c = crossings.front();
   const Point p{ std::ldexp(c.p.x, exponent), std::ldexp(c.p.y, exponent) };
@@ -194,8 +196,7 @@ public:
     : input(input)
     , options(options)
     , run(progress)
-  {
-  }
+  {}
   Result execute();
 
 private:
@@ -230,8 +231,7 @@ Result Mesher::execute()
   if (!(options.mergeTolerance >= 0.0) || !std::isfinite(options.mergeTolerance))
     throw Stop{ "the merge tolerance must be finite and at least 0" };
   run.phase("clean", 0.0, 0.02);
-  if (std::string e = cleanPslg(input, clean, st, res.warnings, options.mergeTolerance);
-      !e.empty())
+  if (std::string e = cleanPslg(input, clean, st, res.warnings, options.mergeTolerance); !e.empty())
     throw Stop{ e };
   Work w;
   w.points = clean.points;
@@ -349,7 +349,8 @@ void Mesher::meshRounds(Work& w)
     if (!carve.unusedHoles.empty())
       res.warnings.push_back(std::to_string(carve.unusedHoles.size()) +
         " hole point(s) lie outside the meshed domain or in a region already removed, e.g. "
-        "hole " + std::to_string(carve.unusedHoles.front()) + " at " +
+        "hole " +
+        std::to_string(carve.unusedHoles.front()) + " at " +
         formatPoint(input.holes[carve.unusedHoles.front()]));
     if (options.keepOverlay)
     {
@@ -365,7 +366,9 @@ void Mesher::buildOutput(const Work& w, const PlanarGraph& g, const Completion& 
   const Carving& carve, const Overlay& overlay, std::vector<Edge>& edges)
 {
   Statistics& st = res.stats;
-  auto unscale = [&](Point p) { return Point{ std::ldexp(p.x, exponent), std::ldexp(p.y, exponent) }; };
+  auto unscale = [&](Point p) {
+    return Point{ std::ldexp(p.x, exponent), std::ldexp(p.y, exponent) };
+  };
   std::vector<int> newIndex(g.points.size(), -1);
   for (std::size_t t = 0; t < c.triangles.size(); ++t)
   {
@@ -405,8 +408,9 @@ void Mesher::buildOutput(const Work& w, const PlanarGraph& g, const Completion& 
   if (outside > 0)
     res.warnings.push_back(std::to_string(outside) +
       " input point(s) lie outside the meshed domain (outside every enclosed region or in a "
-      "hole) and are not in the mesh, e.g. point " + std::to_string(example) + " at " +
-      formatPoint(input.points[example]) + "; the hull or box domain keeps them");
+      "hole) and are not in the mesh, e.g. point " +
+      std::to_string(example) + " at " + formatPoint(input.points[example]) +
+      "; the hull or box domain keeps them");
   st.regions = carve.regions;
   st.outputVertices = res.mesh.vertices.size();
   st.outputTriangles = res.mesh.triangles.size();

@@ -42,8 +42,7 @@ public:
     , gamma2(options.gamma * options.gamma * (1.0 + 1e-12))
     , maxEdge2(options.maxEdgeLength * options.maxEdgeLength)
     , steinerCap(options.maxSteinerPoints)
-  {
-  }
+  {}
 
   Overlay refine();
 
@@ -74,9 +73,9 @@ private:
 
   Overlay out;
   Triangulation& mesh = out.mesh;
-  std::vector<int> bucketHead;     ///< per triangle slot: first waiting input point
-  std::vector<int> bucketNext;     ///< per input point: next in its bucket
-  std::vector<std::uint32_t> gen;  ///< per triangle slot: bumped on every reuse
+  std::vector<int> bucketHead;    ///< per triangle slot: first waiting input point
+  std::vector<int> bucketNext;    ///< per input point: next in its bucket
+  std::vector<std::uint32_t> gen; ///< per triangle slot: bumped on every reuse
   std::priority_queue<Item> queue;
   std::size_t inserted = 0;
   std::size_t hardCap = 0;
@@ -351,7 +350,8 @@ void Refiner::distribute(int v, const std::vector<int>& fan)
 
 } // namespace
 
-Overlay buildOverlay(const std::vector<Point>& points, const OverlayOptions& options, RunContext& run)
+Overlay buildOverlay(
+  const std::vector<Point>& points, const OverlayOptions& options, RunContext& run)
 {
   if (points.empty())
     return {};

@@ -30,7 +30,8 @@ struct Overlay
 };
 
 /// Mesh the points (distinct, finite) alone; segments are ignored here.
-Overlay buildOverlay(const std::vector<Point>& points, const OverlayOptions& options, RunContext& run);
+Overlay buildOverlay(
+  const std::vector<Point>& points, const OverlayOptions& options, RunContext& run);
 
 /// Gap ratio Γ for an overlay minimum angle θ1 (degrees): sin θ1 = 1 / (2Γ).
 double gammaForMinAngle(double minAngleDeg);

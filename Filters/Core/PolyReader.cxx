@@ -199,8 +199,7 @@ public:
   Parser(std::string_view text, std::string name)
     : lines_(text)
     , name_(std::move(name))
-  {
-  }
+  {}
 
   PolyFile parseNode()
   {
@@ -326,21 +325,22 @@ private:
     const std::size_t left = lines_.linesLeft();
     if (static_cast<std::size_t>(n) > left)
       return fail(std::to_string(n) + " " + items + " announced, but only " + std::to_string(left) +
-                  " lines follow");
+        " lines follow");
     return true;
   }
 
   /// Reads n items with readItem(i), one data line each; running out of text is
   /// reported at the header that announced them.
-  template<typename ReadItem>
+  template <typename ReadItem>
   bool items(
     const char* section, const char* plural, long long n, std::size_t headerLine, ReadItem readItem)
   {
     for (long long i = 0; i < n; ++i)
     {
       if (!lines_.next())
-        return fail(headerLine, std::string(section) + " section truncated: " + std::to_string(n) +
-                                  " " + plural + " announced, " + std::to_string(i) + " found");
+        return fail(headerLine,
+          std::string(section) + " section truncated: " + std::to_string(n) + " " + plural +
+            " announced, " + std::to_string(i) + " found");
       setItem(nullptr, 0);
       if (!readItem(i))
         return false;
@@ -356,8 +356,8 @@ private:
     h.line = lines_.line();
     long long dimension = 2, markers = 0;
     if (!count("vertices", h.count) || !optionalInteger(1, "dimension", dimension) ||
-        !optionalInteger(2, "number of vertex attributes", h.attributes) ||
-        !optionalInteger(3, "number of vertex boundary markers", markers))
+      !optionalInteger(2, "number of vertex attributes", h.attributes) ||
+      !optionalInteger(3, "number of vertex boundary markers", markers))
       return false;
     if (inPoly && h.count == 0)
       return true;
@@ -368,7 +368,7 @@ private:
     // A written attribute takes at least two bytes (a digit and a separator).
     if (h.count > 0 && h.attributes > static_cast<long long>(lines_.bytesLeft() / 2) / h.count)
       return fail(std::to_string(h.count) + " vertices with " + std::to_string(h.attributes) +
-                  " attributes each cannot fit in the rest of the file");
+        " attributes each cannot fit in the rest of the file");
     h.markers = markers != 0; // any nonzero value means markers, as in triangle.c
     return true;
   }
@@ -385,7 +385,7 @@ private:
       out_.firstIndex = static_cast<int>(index);
     else if (index != out_.firstIndex + i)
       return fail("vertex index " + std::to_string(index) + " is out of sequence, expected " +
-                  std::to_string(out_.firstIndex + i));
+        std::to_string(out_.firstIndex + i));
     setItem("vertex", index);
     Point p;
     if (!real(1, "x coordinate", p.x) || !real(2, "y coordinate", p.y))
@@ -463,8 +463,8 @@ private:
     for (const long long e : ends)
       if (e < first || e > last)
         return fail("segment " + std::to_string(index) + " refers to vertex " + std::to_string(e) +
-                    ", which does not exist (vertices are numbered " + std::to_string(first) +
-                    " to " + std::to_string(last) + ")");
+          ", which does not exist (vertices are numbered " + std::to_string(first) + " to " +
+          std::to_string(last) + ")");
     out_.pslg.segments.push_back(
       { static_cast<int>(ends[0] - first), static_cast<int>(ends[1] - first) });
     if (markers)
@@ -529,7 +529,7 @@ private:
     setItem("region", index);
     RegionAttribute r;
     if (!real(1, "x coordinate", r.seed.x) || !real(2, "y coordinate", r.seed.y) ||
-        !real(3, "attribute", r.attribute))
+      !real(3, "attribute", r.attribute))
       return false;
     r.maxArea = r.attribute;
     if (!optionalReal(4, "maximum area", r.maxArea))
@@ -570,7 +570,7 @@ private:
 
 /// Keeps the promise that nothing throws: allocation failures and the like become
 /// an error message instead.
-template<typename Body>
+template <typename Body>
 PolyFile guarded(const std::string& name, Body body) noexcept
 {
   try
@@ -650,63 +650,55 @@ std::string nodeNameFor(const std::string& polyName)
 
 PolyFile parseNode(std::istream& in, const std::string& name)
 {
-  return guarded(name,
-    [&]
-    {
-      std::string text;
-      if (!readAll(in, text))
-        return failure(name + ": cannot read the input stream");
-      return Parser(text, name).parseNode();
-    });
+  return guarded(name, [&] {
+    std::string text;
+    if (!readAll(in, text))
+      return failure(name + ": cannot read the input stream");
+    return Parser(text, name).parseNode();
+  });
 }
 
 PolyFile parsePoly(std::istream& in, const std::string& name, std::istream* nodeText)
 {
-  return guarded(name,
-    [&]
-    {
-      std::string text;
-      if (!readAll(in, text))
-        return failure(name + ": cannot read the input stream");
-      const NodeLoader loadNodes = [&]
-      {
-        NodeText node;
-        node.name = nodeNameFor(name);
-        if (!nodeText)
-          node.problem = "a .node text, but none was given";
-        else if (!readAll(*nodeText, node.text))
-          node.problem = "the .node text " + node.name + ", which cannot be read";
-        return node;
-      };
-      return Parser(text, name).parsePoly(loadNodes);
-    });
+  return guarded(name, [&] {
+    std::string text;
+    if (!readAll(in, text))
+      return failure(name + ": cannot read the input stream");
+    const NodeLoader loadNodes = [&] {
+      NodeText node;
+      node.name = nodeNameFor(name);
+      if (!nodeText)
+        node.problem = "a .node text, but none was given";
+      else if (!readAll(*nodeText, node.text))
+        node.problem = "the .node text " + node.name + ", which cannot be read";
+      return node;
+    };
+    return Parser(text, name).parsePoly(loadNodes);
+  });
 }
 
 PolyFile readPolyFile(const std::string& path)
 {
-  return guarded(path,
-    [&]
-    {
-      const std::string extension = lowercase(fs::path(path).extension().string());
-      if (extension != ".poly" && extension != ".node")
-        return failure(
-          path + ": unknown file type " + quote(extension) + ", expected a .poly or .node file");
-      std::string text, why;
-      if (!readFile(path, text, why))
-        return failure(path + ": cannot read the file: " + why);
-      if (extension == ".node")
-        return Parser(text, path).parseNode();
-      const NodeLoader loadNodes = [&]
-      {
-        NodeText node;
-        node.name = nodeNameFor(path);
-        std::string reason;
-        if (!readFile(node.name, node.text, reason))
-          node.problem = node.name + ", which cannot be read: " + reason;
-        return node;
-      };
-      return Parser(text, path).parsePoly(loadNodes);
-    });
+  return guarded(path, [&] {
+    const std::string extension = lowercase(fs::path(path).extension().string());
+    if (extension != ".poly" && extension != ".node")
+      return failure(
+        path + ": unknown file type " + quote(extension) + ", expected a .poly or .node file");
+    std::string text, why;
+    if (!readFile(path, text, why))
+      return failure(path + ": cannot read the file: " + why);
+    if (extension == ".node")
+      return Parser(text, path).parseNode();
+    const NodeLoader loadNodes = [&] {
+      NodeText node;
+      node.name = nodeNameFor(path);
+      std::string reason;
+      if (!readFile(node.name, node.text, reason))
+        node.problem = node.name + ", which cannot be read: " + reason;
+      return node;
+    };
+    return Parser(text, path).parsePoly(loadNodes);
+  });
 }
 
 } // namespace osm

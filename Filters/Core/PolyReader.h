@@ -22,9 +22,10 @@ struct RegionAttribute
 struct PolyFile
 {
   bool ok = false;
-  /// On failure: "<file>:<line>: <reason>", e.g. "a.poly:12: segment 4 refers to vertex 40, which does not exist".
+  /// On failure: "<file>:<line>: <reason>", e.g. "a.poly:12: segment 4 refers to vertex 40, which
+  /// does not exist".
   std::string error;
-  Pslg pslg; ///< points renumbered from 0 in file order; holes from the file
+  Pslg pslg;          ///< points renumbered from 0 in file order; holes from the file
   int firstIndex = 0; ///< 0 or 1: the numbering the file used
   std::vector<std::vector<double>> pointAttributes; ///< per point (may be empty)
   std::vector<int> pointMarkers;                    ///< per point, empty if the file has none

@@ -22,8 +22,7 @@ class RunContext
 public:
   explicit RunContext(Progress* p)
     : progress(p)
-  {
-  }
+  {}
   /// Report progress of the current phase, which spans [begin, end] of the run.
   void phase(const char* name, double begin, double end)
   {

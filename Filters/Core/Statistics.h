@@ -21,7 +21,7 @@ struct Statistics
   std::size_t segmentsSplitAtVertices = 0; ///< T-junctions and collinear overlaps
   std::size_t crossingsSplit = 0;
   // Phase 1: overlay.
-  double gamma = 0.0;    ///< radius/edge bound Γ
+  double gamma = 0.0; ///< radius/edge bound Γ
   double theta1Deg = 0.0;
   double predictedMaxAngleDeg = 0.0; ///< 180° − θ2
   std::size_t overlayVertices = 0;
@@ -32,7 +32,7 @@ struct Statistics
   std::size_t goodCrossings = 0;
   std::size_t badCrossings = 0;
   std::size_t uncrossedEdges = 0;
-  std::size_t keptEdges = 0;      ///< crossed overlay edges that were kept
+  std::size_t keptEdges = 0; ///< crossed overlay edges that were kept
   std::size_t discardedEdges = 0;
   std::size_t stitchVertices = 0;
   // Phase 3: complete.

@@ -78,8 +78,7 @@ public:
     , isInput(overlay.isInput)
     , sinTheta1(sinTheta1)
     , out(out)
-  {
-  }
+  {}
 
   void walk(int segment, int a, int b);
   void findSegmentCrossings(const std::vector<Segment>& segments);
@@ -96,8 +95,8 @@ private:
   const std::vector<char>& isInput;
   const double sinTheta1;
   Walk& out;
-  int segmentStart = -1; ///< first vertex of the segment being walked
-  std::vector<std::pair<int, int>> triPiece; ///< (overlay triangle, piece) traversed
+  int segmentStart = -1;                        ///< first vertex of the segment being walked
+  std::vector<std::pair<int, int>> triPiece;    ///< (overlay triangle, piece) traversed
   std::vector<std::pair<int, int>> steinerHits; ///< (Steiner vertex, segment) passing through it
 };
 
@@ -333,17 +332,16 @@ void Walker::findSegmentCrossings(const std::vector<Segment>&)
   {
     const auto [v, s] = steinerHits[k];
     if (v == steinerHits[k - 1].first && s != steinerHits[k - 1].second)
-      out.segmentCrossings.push_back({ std::min(s, steinerHits[k - 1].second),
-        std::max(s, steinerHits[k - 1].second), P[v] });
+      out.segmentCrossings.push_back(
+        { std::min(s, steinerHits[k - 1].second), std::max(s, steinerHits[k - 1].second), P[v] });
   }
   auto& sc = out.segmentCrossings;
   std::sort(sc.begin(), sc.end(), [](const SegmentCrossing& x, const SegmentCrossing& y) {
     return x.a < y.a || (x.a == y.a && x.b < y.b);
   });
-  sc.erase(std::unique(sc.begin(), sc.end(),
-             [](const SegmentCrossing& x, const SegmentCrossing& y) {
-               return x.a == y.a && x.b == y.b;
-             }),
+  sc.erase(
+    std::unique(sc.begin(), sc.end(),
+      [](const SegmentCrossing& x, const SegmentCrossing& y) { return x.a == y.a && x.b == y.b; }),
     sc.end());
 }
 
@@ -441,7 +439,8 @@ PlanarGraph stitch(const OverlayEdges& ov, const Overlay& overlay, const Walk& w
     }
     else if (kept[e])
     {
-      const double edgeLength = std::sqrt(dist2(g.points[ov.edges[e][0]], g.points[ov.edges[e][1]]));
+      const double edgeLength =
+        std::sqrt(dist2(g.points[ov.edges[e][0]], g.points[ov.edges[e][1]]));
       ++stats.keptEdges;
       flags |= EdgeKept | EdgeCrossed;
       int prev = ov.edges[e][0];

@@ -131,7 +131,8 @@ bool Triangulation::cavityOf(const Point& p, int start, std::vector<int>& cavity
   return true;
 }
 
-bool Triangulation::insertIntoCavity(int v, const std::vector<int>& cavity, std::vector<int>& created)
+bool Triangulation::insertIntoCavity(
+  int v, const std::vector<int>& cavity, std::vector<int>& created)
 {
   created.clear();
   const Point& p = points[v];

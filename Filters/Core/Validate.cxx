@@ -44,10 +44,9 @@ public:
   Errors(ValidationReport& report, std::size_t cap)
     : report_(report)
     , cap_(cap)
-  {
-  }
+  {}
 
-  template<class Describe>
+  template <class Describe>
   void add(Describe&& describe)
   {
     report_.ok = false;
@@ -77,7 +76,7 @@ std::string text(const Point& p)
 std::string text(const Triangle& t)
 {
   return "(" + std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " + std::to_string(t[2]) +
-         ")";
+    ")";
 }
 
 // ------------------------------------------------------------------------- exact helpers
@@ -119,14 +118,14 @@ bool onOpenSegment(const Point& a, const Point& b, const Point& p)
   if (p == a || p == b || orientSign(a, b, p) != 0)
     return false;
   return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
-         p.y <= std::max(a.y, b.y);
+    p.y <= std::max(a.y, b.y);
 }
 
 /// Whether segments ab and cd cross at a single point interior to both.
 bool properlyCross(const Point& a, const Point& b, const Point& c, const Point& d)
 {
   return orientSign(a, b, c) * orientSign(a, b, d) < 0 &&
-         orientSign(c, d, a) * orientSign(c, d, b) < 0;
+    orientSign(c, d, a) * orientSign(c, d, b) < 0;
 }
 
 /// Whether p lies in the closed counter-clockwise triangle abc.
@@ -205,7 +204,7 @@ public:
   }
 
   /// Calls visit(i) for every item i whose box meets q.
-  template<class Visit>
+  template <class Visit>
   void query(const Box& q, Visit&& visit) const
   {
     if (nodes_.empty())
@@ -256,8 +255,7 @@ private:
       return;
     // Split at the median centre along the longer side.
     const bool alongX = box.x1 - box.x0 >= box.y1 - box.y0;
-    const auto centre = [&](int i)
-    {
+    const auto centre = [&](int i) {
       const Box& b = boxes_[i];
       return alongX ? b.x0 + b.x1 : b.y0 + b.y1;
     };
@@ -285,8 +283,7 @@ struct Mesh
   Mesh(const std::vector<Point>& p, const std::vector<Triangle>& t)
     : points(p)
     , triangles(t)
-  {
-  }
+  {}
 
   const std::vector<Point>& points;
   const std::vector<Triangle>& triangles;
@@ -327,12 +324,10 @@ void checkIndices(Mesh& m, Errors& errors)
     const auto bad = std::find_if(tri.begin(), tri.end(), [&](int v) { return v < 0 || v >= nv; });
     if (bad != tri.end())
     {
-      errors.add(
-        [&]
-        {
-          return m.name(t) + " has vertex index " + std::to_string(*bad) + " out of range [0, " +
-                 std::to_string(nv) + ")";
-        });
+      errors.add([&] {
+        return m.name(t) + " has vertex index " + std::to_string(*bad) + " out of range [0, " +
+          std::to_string(nv) + ")";
+      });
       continue;
     }
     if (tri[0] == tri[1] || tri[1] == tri[2] || tri[2] == tri[0])
@@ -415,8 +410,9 @@ void reportEdge(const Mesh& m, int h, std::pair<const int*, const int*> same,
     list += (list.empty() ? "" : ", ") + std::to_string(c / 3);
   const std::string edge = "edge (" + std::to_string(u) + ", " + std::to_string(w) + ")";
   if (uses.size() > 2)
-    errors.add([&]
-      { return edge + " is shared by " + std::to_string(uses.size()) + " triangles: " + list; });
+    errors.add([&] {
+      return edge + " is shared by " + std::to_string(uses.size()) + " triangles: " + list;
+    });
   else
     errors.add([&] { return edge + " has the same direction in triangles " + list; });
 }
@@ -477,13 +473,11 @@ void measureAngles(
   report.minAngleDeg = lo;
   report.maxAngleDeg = hi;
   if (hi > options.maxAngleDeg)
-    errors.add(
-      [&]
-      {
-        return m.name(worst) + " has an angle of " + num(hi) + " degrees > " +
-               num(options.maxAngleDeg) + " (" + std::to_string(tooLarge) +
-               " triangle(s) exceed the bound)";
-      });
+    errors.add([&] {
+      return m.name(worst) + " has an angle of " + num(hi) + " degrees > " +
+        num(options.maxAngleDeg) + " (" + std::to_string(tooLarge) +
+        " triangle(s) exceed the bound)";
+    });
 }
 
 // ------------------------------------------------------------------------------ vertex fans
@@ -575,22 +569,18 @@ void checkFan(const Mesh& m, int v, const Fan& fan, Errors& errors)
       sum += m.angle[c];
     if (std::fabs(sum - 2 * kPi) > 1e-6 * 2 * kPi)
     {
-      errors.add(
-        [&]
-        {
-          return m.vertexName(v) + ": its closed fan of " + size + " has angles summing to " +
-                 num(sum * kDegrees) + " degrees, not 360";
-        });
+      errors.add([&] {
+        return m.vertexName(v) + ": its closed fan of " + size + " has angles summing to " +
+          num(sum * kDegrees) + " degrees, not 360";
+      });
       return;
     }
   }
   if (!windsOnce(m, v, fan))
-    errors.add(
-      [&]
-      {
-        return m.vertexName(v) + ": its " + (fan.closed ? "closed" : "open") + " fan of " + size +
-               " overlaps itself";
-      });
+    errors.add([&] {
+      return m.vertexName(v) + ": its " + (fan.closed ? "closed" : "open") + " fan of " + size +
+        " overlaps itself";
+    });
 }
 
 /// Several fans at one vertex (a "bowtie", where the domain's boundary touches itself) are
@@ -598,10 +588,9 @@ void checkFan(const Mesh& m, int v, const Fan& fan, Errors& errors)
 /// vertex, each must end strictly before the next one starts.
 void checkFansApart(const Mesh& m, int v, std::vector<Fan>& fans, Errors& errors)
 {
-  const auto describe = [&](const char* what)
-  {
+  const auto describe = [&](const char* what) {
     return m.vertexName(v) + ": " + std::to_string(fans.size()) + " fans of triangles meet there " +
-           what;
+      what;
   };
   if (std::any_of(fans.begin(), fans.end(), [](const Fan& f) { return f.closed; }))
   {
@@ -698,29 +687,24 @@ void checkBoundary(
   for (std::size_t i = 0; i < edges.size(); ++i)
   {
     const int a = m.vertex(edges[i]), b = m.nextVertex(edges[i]);
-    tree.query(boxes[i],
-      [&](int j)
-      {
-        const int c = m.vertex(edges[j]), d = m.nextVertex(edges[j]);
-        if (static_cast<std::size_t>(j) <= i || a == c || a == d || b == c || b == d)
-          return;
-        if (properlyCross(m.at(a), m.at(b), m.at(c), m.at(d)))
-          errors.add(
-            [&] {
-              return "boundary edges " + edgeName(m, edges[i]) + " and " + edgeName(m, edges[j]) +
-                     " cross";
-            });
-      });
+    tree.query(boxes[i], [&](int j) {
+      const int c = m.vertex(edges[j]), d = m.nextVertex(edges[j]);
+      if (static_cast<std::size_t>(j) <= i || a == c || a == d || b == c || b == d)
+        return;
+      if (properlyCross(m.at(a), m.at(b), m.at(c), m.at(d)))
+        errors.add([&] {
+          return "boundary edges " + edgeName(m, edges[i]) + " and " + edgeName(m, edges[j]) +
+            " cross";
+        });
+    });
   }
   for (int v : vertices)
-    tree.query(boxOf(m.at(v), m.at(v)),
-      [&](int i)
-      {
-        const int a = m.vertex(edges[i]), b = m.nextVertex(edges[i]);
-        if (v != a && v != b && onOpenSegment(m.at(a), m.at(b), m.at(v)))
-          errors.add(
-            [&] { return m.vertexName(v) + " lies on boundary edge " + edgeName(m, edges[i]); });
-      });
+    tree.query(boxOf(m.at(v), m.at(v)), [&](int i) {
+      const int a = m.vertex(edges[i]), b = m.nextVertex(edges[i]);
+      if (v != a && v != b && onOpenSegment(m.at(a), m.at(b), m.at(v)))
+        errors.add(
+          [&] { return m.vertexName(v) + " lies on boundary edge " + edgeName(m, edges[i]); });
+    });
 }
 
 /// Check 4c: no vertex of the set lies in a closed positive triangle it is not a corner of.
@@ -732,14 +716,11 @@ void checkVerticesInTriangles(const Mesh& m, const VertexSet& set, Errors& error
       continue;
     const Triangle& tri = m.triangles[t];
     const auto p = m.corners(t);
-    set.tree.query(boxOf(p[0], p[1], p[2]),
-      [&](int i)
-      {
-        const int v = set.vertices[i];
-        if (v != tri[0] && v != tri[1] && v != tri[2] &&
-            inClosedTriangle(p[0], p[1], p[2], m.at(v)))
-          errors.add([&] { return m.vertexName(v) + " lies in " + m.name(t); });
-      });
+    set.tree.query(boxOf(p[0], p[1], p[2]), [&](int i) {
+      const int v = set.vertices[i];
+      if (v != tri[0] && v != tri[1] && v != tri[2] && inClosedTriangle(p[0], p[1], p[2], m.at(v)))
+        errors.add([&] { return m.vertexName(v) + " lies in " + m.name(t); });
+    });
   }
 }
 
@@ -829,12 +810,10 @@ VertexMap mapVertices(const Mesh& m, Errors& errors)
       continue;
     const auto [it, inserted] = map.emplace(keyOf(m.at(v)), static_cast<int>(v));
     if (!inserted)
-      errors.add(
-        [&, first = it->second]
-        {
-          return "vertices " + std::to_string(first) + " and " + std::to_string(v) +
-                 " coincide at " + text(m.at(static_cast<int>(v)));
-        });
+      errors.add([&, first = it->second] {
+        return "vertices " + std::to_string(first) + " and " + std::to_string(v) + " coincide at " +
+          text(m.at(static_cast<int>(v)));
+      });
   }
   return map;
 }
@@ -850,12 +829,10 @@ void checkInputVertices(const Pslg& input, const VertexMap& map, Errors& errors)
 {
   for (std::size_t i = 0; i < input.points.size(); ++i)
     if (meshVertex(map, input.points[i]) < 0)
-      errors.add(
-        [&]
-        {
-          return "input point " + std::to_string(i) + " " + text(input.points[i]) +
-                 " is not a mesh vertex";
-        });
+      errors.add([&] {
+        return "input point " + std::to_string(i) + " " + text(input.points[i]) +
+          " is not a mesh vertex";
+      });
 }
 
 /// Walks input segment ab along mesh edges from vertex A to vertex B. Each step goes to a
@@ -909,9 +886,9 @@ std::string walkSegment(const Mesh& m, int A, int B)
       }
     if (best < 0)
       return "no mesh edge continues it from " + m.vertexName(u) +
-             (std::isfinite(nearestOff)
-                 ? " (nearest forward neighbour is " + num(nearestOff) + " off the line)"
-                 : "");
+        (std::isfinite(nearestOff)
+            ? " (nearest forward neighbour is " + num(nearestOff) + " off the line)"
+            : "");
     u = best;
   }
   return "";
@@ -925,9 +902,9 @@ void checkConformity(const Pslg& input, const Mesh& m, const VertexMap& map, Err
   {
     const Segment& seg = input.segments[s];
     const std::string name = "segment " + std::to_string(s) + " (input points " +
-                             std::to_string(seg[0]) + ", " + std::to_string(seg[1]) + ")";
+      std::to_string(seg[0]) + ", " + std::to_string(seg[1]) + ")";
     if (seg[0] < 0 || seg[1] < 0 || static_cast<std::size_t>(seg[0]) >= np ||
-        static_cast<std::size_t>(seg[1]) >= np)
+      static_cast<std::size_t>(seg[1]) >= np)
     {
       errors.add([&] { return name + " has a point index out of range"; });
       continue;
@@ -981,8 +958,8 @@ ValidationReport validate(const Pslg& input, const std::vector<Point>& vertices,
     in.points = scaled(input.points, e);
     ValidationReport r = validate(in, scaled(vertices, e), triangles, options);
     if (!r.ok)
-      r.errors.push_back("(coordinates in these messages are scaled by 2^" +
-        std::to_string(-e) + " for exact arithmetic)");
+      r.errors.push_back("(coordinates in these messages are scaled by 2^" + std::to_string(-e) +
+        " for exact arithmetic)");
     return r;
   }
   ValidationReport report;

@@ -14,8 +14,8 @@ namespace osm
 {
 
 /// Mesh and validate; every failure names the case. Returns the result.
-inline Result meshAndValidate(const Pslg& input, const std::string& name, Options options = {},
-  ValidationOptions vo = {})
+inline Result meshAndValidate(
+  const Pslg& input, const std::string& name, Options options = {}, ValidationOptions vo = {})
 {
   Result r = mesh(input, options);
   EXPECT_TRUE(r.ok) << name << ": " << r.error;

@@ -101,8 +101,8 @@ TEST(Complete, NonConvexPolygonUsesOnlyInteriorDiagonals)
 TEST(Complete, StraightAnglesNeverGiveZeroAreaTriangles)
 {
   // Stitch vertices make 180° polygon corners: a square with points on its sides.
-  const std::vector<Point> P{ { 0, 0 }, { 1, 0 }, { 2, 0 }, { 2, 1 }, { 2, 2 }, { 1, 2 },
-    { 0, 2 }, { 0, 1 } };
+  const std::vector<Point> P{ { 0, 0 }, { 1, 0 }, { 2, 0 }, { 2, 1 }, { 2, 2 }, { 1, 2 }, { 0, 2 },
+    { 0, 1 } };
   std::vector<Triangle> tris;
   ASSERT_TRUE(triangulateMinMaxAngle(P, iota(P.size()), tris));
   expectValidTriangulation(P, tris);

@@ -14,8 +14,8 @@ Pslg wedgeInSquare()
 {
   Pslg p;
   const double tip = 2 + 6 * std::tan(5 * std::acos(-1.0) / 180);
-  p.points = { { 0, 0 }, { 10, 0 }, { 10, 10 }, { 0, 10 }, { 2, 2 }, { 8, 2 }, { 8, tip },
-    { 3, 7 }, { 7, 8 } };
+  p.points = { { 0, 0 }, { 10, 0 }, { 10, 10 }, { 0, 10 }, { 2, 2 }, { 8, 2 }, { 8, tip }, { 3, 7 },
+    { 7, 8 } };
   p.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 }, { 4, 5 }, { 4, 6 }, { 7, 8 } };
   return p;
 }
@@ -192,7 +192,8 @@ TEST(Clean, RefusesCrossingsWhenAskedTo)
   o.resolveCrossings = false;
   const Result r = mesh(p, o);
   EXPECT_FALSE(r.ok);
-  EXPECT_NE(r.error.find("input segment 4 and input segment 5 cross"), std::string::npos) << r.error;
+  EXPECT_NE(r.error.find("input segment 4 and input segment 5 cross"), std::string::npos)
+    << r.error;
   EXPECT_TRUE(r.mesh.triangles.empty());
 }
 
@@ -244,7 +245,8 @@ TEST(Domain, BoxHullAndEnclosed)
 TEST(Domain, HolesRemoveTheirRegion)
 {
   Pslg p = square();
-  p.points.insert(p.points.end(), { { 0.25, 0.25 }, { 0.75, 0.25 }, { 0.75, 0.75 }, { 0.25, 0.75 } });
+  p.points.insert(
+    p.points.end(), { { 0.25, 0.25 }, { 0.75, 0.25 }, { 0.75, 0.75 }, { 0.25, 0.75 } });
   p.segments.insert(p.segments.end(), { { 4, 5 }, { 5, 6 }, { 6, 7 }, { 7, 4 } });
   const Result noHole = meshAndValidate(p, "no hole");
   EXPECT_EQ(noHole.stats.regions, 2u);
@@ -375,8 +377,10 @@ TEST(Domain, ManyHolesAndAStraySeed)
     {
       const int b = static_cast<int>(p.points.size());
       p.points.insert(p.points.end(),
-        { { i + 0.25, j + 0.25 }, { i + 0.75, j + 0.25 }, { i + 0.75, j + 0.75 }, { i + 0.25, j + 0.75 } });
-      p.segments.insert(p.segments.end(), { { b, b + 1 }, { b + 1, b + 2 }, { b + 2, b + 3 }, { b + 3, b } });
+        { { i + 0.25, j + 0.25 }, { i + 0.75, j + 0.25 }, { i + 0.75, j + 0.75 },
+          { i + 0.25, j + 0.75 } });
+      p.segments.insert(
+        p.segments.end(), { { b, b + 1 }, { b + 1, b + 2 }, { b + 2, b + 3 }, { b + 3, b } });
       p.holes.push_back({ i + 0.5, j + 0.5 });
     }
   p.holes.push_back({ 50, 50 }); // outside everything

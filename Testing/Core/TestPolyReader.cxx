@@ -217,10 +217,11 @@ TEST(PolyReader, MissingHolesSectionMeansNoHoles)
 
 TEST(PolyReader, RegionalAttributesWithFourAndFiveTokens)
 {
-  const PolyFile f = poly(std::string(squareWithHole) + "3\n"
-                                                        "1 0.1 0.1 7 0.25\n"
-                                                        "2 0.9 0.1 0.05\n"
-                                                        "3 0.9 0.9 -1 -1 extra\n");
+  const PolyFile f = poly(std::string(squareWithHole) +
+    "3\n"
+    "1 0.1 0.1 7 0.25\n"
+    "2 0.9 0.1 0.05\n"
+    "3 0.9 0.9 -1 -1 extra\n");
   ASSERT_TRUE(f.ok) << f.error;
   ASSERT_EQ(f.regions.size(), 3u);
   EXPECT_EQ(f.regions[0].seed, (Point{ 0.1, 0.1 }));
@@ -562,8 +563,7 @@ TEST(PolyReaderErrors, CorruptedInputNeverCrashes)
                            "4 0 1 4 5 3\n4 1\n1 1 2 7\n2 2 3 7\n3 3 4 7\n4 4 1 7\n1\n"
                            "1 0.5 0.5\n2\n1 0.1 0.1 3 0.2\n2 0.9 0.9 4\n";
   ASSERT_TRUE(poly(good).ok) << poly(good).error;
-  auto check = [](const std::string& text)
-  {
+  auto check = [](const std::string& text) {
     const PolyFile f = poly(text);
     if (!f.ok)
     {

@@ -119,7 +119,8 @@ Pslg translated(Pslg p, double offset)
 }
 
 /// Seeds per family; OSM_PROPERTY_SEEDS raises it for a long stress run.
-const int kSeeds = std::getenv("OSM_PROPERTY_SEEDS") ? std::atoi(std::getenv("OSM_PROPERTY_SEEDS")) : 25;
+const int kSeeds =
+  std::getenv("OSM_PROPERTY_SEEDS") ? std::atoi(std::getenv("OSM_PROPERTY_SEEDS")) : 25;
 
 } // namespace
 
@@ -129,7 +130,8 @@ TEST(Properties, FansDownToAHundredthOfADegree)
     for (int seed = 0; seed < kSeeds; ++seed)
     {
       std::mt19937_64 rng(seed);
-      meshAndValidate(fan(rng, step), "fan " + std::to_string(step) + " seed " + std::to_string(seed));
+      meshAndValidate(
+        fan(rng, step), "fan " + std::to_string(step) + " seed " + std::to_string(seed));
     }
 }
 

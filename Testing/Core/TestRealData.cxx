@@ -32,7 +32,7 @@ TEST(RealData, EveryPolyFileMeshesWithinTheBound)
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     EXPECT_LE(r.stats.maxAngleDeg, 170.0) << f;
     std::printf("%-26s %9zu %9zu %9zu %9.4f %9.4f %5zu %8.3f\n", f.filename().c_str(),
-      poly.pslg.points.size(), r.mesh.vertices.size(), r.mesh.triangles.size(),
-      r.stats.minAngleDeg, r.stats.maxAngleDeg, r.stats.largestFace, s);
+      poly.pslg.points.size(), r.mesh.vertices.size(), r.mesh.triangles.size(), r.stats.minAngleDeg,
+      r.stats.maxAngleDeg, r.stats.largestFace, s);
   }
 }

@@ -104,7 +104,8 @@ TEST(Overlay, IsADelaunayQualityMeshOfThePoints)
       if (ov.mesh.alive(t))
         for (int i = 0; i < 3; ++i)
           EXPECT_GE(angleAt(ov.mesh.vertex(t, (i + 1) % 3), ov.mesh.vertex(t, i),
-                      ov.mesh.vertex(t, (i + 2) % 3)) * 180 / std::acos(-1.0),
+                      ov.mesh.vertex(t, (i + 2) % 3)) *
+              180 / std::acos(-1.0),
             angle - 1e-9);
     EXPECT_EQ(ov.refinementsSkipped, 0u);
   }
@@ -113,7 +114,8 @@ TEST(Overlay, IsADelaunayQualityMeshOfThePoints)
 TEST(Overlay, GradesToTinyFeatures)
 {
   // Two points 1e-8 apart in a unit square: size grows only logarithmically.
-  std::vector<Point> pts{ { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 }, { 0.5, 0.5 }, { 0.5 + 1e-8, 0.5 } };
+  std::vector<Point> pts{ { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 }, { 0.5, 0.5 },
+    { 0.5 + 1e-8, 0.5 } };
   RunContext run(nullptr);
   const Overlay ov = buildOverlay(pts, {}, run);
   expectDelaunay(ov.mesh);

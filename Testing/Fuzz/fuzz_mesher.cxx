@@ -19,8 +19,7 @@ public:
   Bytes(const std::uint8_t* d, std::size_t n)
     : data(d)
     , size(n)
-  {
-  }
+  {}
   std::uint8_t byte() { return pos < size ? data[pos++] : 0; }
   double rawDouble()
   {
@@ -35,10 +34,10 @@ public:
   {
     const std::uint8_t kind = byte();
     if (kind < 200)
-      return static_cast<double>(kind % 16);                 // grid: degeneracies
+      return static_cast<double>(kind % 16); // grid: degeneracies
     if (kind < 240)
-      return static_cast<double>(byte()) / 7.0;              // rounded fractions
-    return rawDouble();                                       // anything, NaN included
+      return static_cast<double>(byte()) / 7.0; // rounded fractions
+    return rawDouble();                         // anything, NaN included
   }
 
 private:

@@ -15,7 +15,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::size_t split = text.find('\f');
   std::istringstream poly(text.substr(0, split));
   std::istringstream node(split == std::string::npos ? std::string() : text.substr(split + 1));
-  const osm::PolyFile f = osm::parsePoly(poly, "fuzz.poly", split == std::string::npos ? nullptr : &node);
+  const osm::PolyFile f =
+    osm::parsePoly(poly, "fuzz.poly", split == std::string::npos ? nullptr : &node);
   if (!f.ok && f.error.rfind("fuzz.", 0) != 0)
   {
     std::fprintf(stderr, "error without a location: %s\n", f.error.c_str());
