@@ -12,21 +12,9 @@ Triangulation delaunayTriangulation(const std::vector<Point>& points, std::vecto
 {
   Triangulation T;
   vertexOf.assign(points.size(), -1);
-  double xmin = 0, xmax = 0, ymin = 0, ymax = 0;
-  if (!points.empty())
-  {
-    xmin = xmax = points[0].x;
-    ymin = ymax = points[0].y;
-  }
-  for (const Point& p : points)
-  {
-    xmin = std::min(xmin, p.x);
-    xmax = std::max(xmax, p.x);
-    ymin = std::min(ymin, p.y);
-    ymax = std::max(ymax, p.y);
-  }
-  const double h = 2.0 * std::max({ xmax - xmin, ymax - ymin, 1e-300 });
-  const double cx = 0.5 * (xmin + xmax), cy = 0.5 * (ymin + ymax);
+  const Bounds b = boundsOf(points);
+  const double h = 2.0 * std::max({ b.width(), b.height(), 1e-300 });
+  const double cx = 0.5 * (b.lo.x + b.hi.x), cy = 0.5 * (b.lo.y + b.hi.y);
   const int c0 = T.addPoint({ cx - h, cy - h }), c1 = T.addPoint({ cx + h, cy - h });
   const int c2 = T.addPoint({ cx + h, cy + h }), c3 = T.addPoint({ cx - h, cy + h });
   const int t0 = T.newTriangle(c0, c1, c2), t1 = T.newTriangle(c0, c2, c3);

@@ -73,13 +73,10 @@ public:
     : P(P)
     , tris(tris)
   {
-    lo = hi = tris.empty() ? Point{} : P[tris[0][0]];
-    for (const Triangle& t : tris)
-      for (int v : t)
-      {
-        lo = { std::min(lo.x, P[v].x), std::min(lo.y, P[v].y) };
-        hi = { std::max(hi.x, P[v].x), std::max(hi.y, P[v].y) };
-      }
+    // Every point is a triangle vertex: the completed overlay covers the box.
+    const Bounds b = boundsOf(P);
+    lo = b.lo;
+    hi = b.hi;
     n = std::max(1, static_cast<int>(std::sqrt(static_cast<double>(tris.size()))));
     start.assign(static_cast<std::size_t>(n) * n + 1, 0);
     for (int pass = 0; pass < 2; ++pass)

@@ -51,6 +51,31 @@ inline double angleAt(const Point& a, const Point& b, const Point& c)
   return std::atan2(std::fabs(ux * vy - uy * vx), ux * vx + uy * vy);
 }
 
+/// Axis-aligned bounds of a set of points.
+struct Bounds
+{
+  Point lo, hi;
+  double width() const { return hi.x - lo.x; }
+  double height() const { return hi.y - lo.y; }
+};
+
+/// Bounds of points (all zero for none).
+template <typename Points>
+Bounds boundsOf(const Points& points)
+{
+  Bounds b;
+  bool first = true;
+  for (const Point& p : points)
+  {
+    if (first)
+      b.lo = b.hi = p;
+    first = false;
+    b.lo = { std::fmin(b.lo.x, p.x), std::fmin(b.lo.y, p.y) };
+    b.hi = { std::fmax(b.hi.x, p.x), std::fmax(b.hi.y, p.y) };
+  }
+  return b;
+}
+
 using Segment = std::array<int, 2>;
 using Triangle = std::array<int, 3>;
 

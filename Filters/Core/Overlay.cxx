@@ -87,19 +87,12 @@ private:
 
 void Refiner::makeBox()
 {
-  double xmin = input[0].x, xmax = xmin, ymin = input[0].y, ymax = ymin;
-  for (const Point& p : input)
-  {
-    xmin = std::min(xmin, p.x);
-    xmax = std::max(xmax, p.x);
-    ymin = std::min(ymin, p.y);
-    ymax = std::max(ymax, p.y);
-  }
-  double size = std::max(xmax - xmin, ymax - ymin);
+  const Bounds b = boundsOf(input);
+  double size = std::max(b.width(), b.height());
   if (size == 0)
-    size = std::max({ std::fabs(xmin), std::fabs(ymin), 1.0 });
+    size = std::max({ std::fabs(b.lo.x), std::fabs(b.lo.y), 1.0 });
   // A box several times the input keeps the hull's influence away from it.
-  const double cx = 0.5 * (xmin + xmax), cy = 0.5 * (ymin + ymax), h = 2.0 * size;
+  const double cx = 0.5 * (b.lo.x + b.hi.x), cy = 0.5 * (b.lo.y + b.hi.y), h = 2.0 * size;
   const int c0 = mesh.addPoint({ cx - h, cy - h });
   const int c1 = mesh.addPoint({ cx + h, cy - h });
   const int c2 = mesh.addPoint({ cx + h, cy + h });

@@ -38,21 +38,14 @@ std::vector<int> hilbertOrder(const std::vector<Point>& points)
   std::vector<int> order(points.size());
   if (points.empty())
     return order;
-  double xmin = points[0].x, xmax = xmin, ymin = points[0].y, ymax = ymin;
-  for (const Point& p : points)
-  {
-    xmin = std::min(xmin, p.x);
-    xmax = std::max(xmax, p.x);
-    ymin = std::min(ymin, p.y);
-    ymax = std::max(ymax, p.y);
-  }
-  const double size = std::max(xmax - xmin, ymax - ymin);
+  const Bounds b = boundsOf(points);
+  const double size = std::max(b.width(), b.height());
   const double scale = size > 0 ? 65535.0 / size : 0.0;
   std::vector<std::pair<std::uint64_t, int>> keys(points.size());
   for (std::size_t i = 0; i < points.size(); ++i)
   {
-    const auto x = static_cast<std::uint32_t>((points[i].x - xmin) * scale);
-    const auto y = static_cast<std::uint32_t>((points[i].y - ymin) * scale);
+    const auto x = static_cast<std::uint32_t>((points[i].x - b.lo.x) * scale);
+    const auto y = static_cast<std::uint32_t>((points[i].y - b.lo.y) * scale);
     keys[i] = { hilbertKey(std::min(x, 65535u), std::min(y, 65535u)), static_cast<int>(i) };
   }
   std::sort(keys.begin(), keys.end());
