@@ -506,3 +506,20 @@ TEST(Stitch, SegmentsDivergingBelowPrecisionAreRefused)
   else
     EXPECT_NE(r.error.find("double precision can separate"), std::string::npos) << r.error;
 }
+
+TEST(Mesher, TenThousandSegmentsThroughOneVertex)
+{
+  // A hub with 10,000 spokes: every angle at the hub is 0.036 degrees.
+  Pslg p;
+  p.points.push_back({ 0, 0 });
+  const double pi = std::acos(-1.0);
+  for (int i = 0; i < 10000; ++i)
+  {
+    const double a = 2 * pi * i / 10000.0;
+    p.points.push_back({ std::cos(a), std::sin(a) });
+    p.segments.push_back({ 0, i + 1 });
+  }
+  const Result r = meshAndValidate(p, "10000 spokes");
+  EXPECT_LE(r.stats.maxAngleDeg, 170.0);
+  EXPECT_EQ(r.inputVertex.size(), p.points.size());
+}
