@@ -1,0 +1,137 @@
+// Phase 2 in isolation: every crossing's good/bad class and every overlay
+// edge's kept/discarded fate follow the paper's rules, recomputed here.
+#include "Overlay.h"
+#include "Predicates.h"
+#include "Stitch.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+using namespace osm;
+
+namespace
+{
+
+const double kPi = std::acos(-1.0);
+
+/// Acute angle between the lines of two vectors, in degrees.
+double lineAngle(double ax, double ay, double bx, double by)
+{
+  const double a = std::fabs(std::atan2(ax * by - ay * bx, ax * bx + ay * by)) * 180 / kPi;
+  return a > 90 ? 180 - a : a;
+}
+
+struct Stitched
+{
+  Overlay overlay;
+  OverlayEdges ov;
+  Walk walk;
+  std::vector<Segment> segments; ///< as overlay vertices
+};
+
+Stitched stitchInput(const std::vector<Point>& pts, const std::vector<Segment>& segs, double theta)
+{
+  Stitched s;
+  RunContext run(nullptr);
+  OverlayOptions o;
+  o.gamma = gammaForMinAngle(theta);
+  s.overlay = buildOverlay(pts, o, run);
+  s.ov = compactOverlay(s.overlay.mesh);
+  for (const Segment& g : segs)
+    s.segments.push_back({ s.overlay.inputVertex[g[0]], s.overlay.inputVertex[g[1]] });
+  s.walk = walkSegments(s.ov, s.overlay, s.segments, std::sin(theta * kPi / 180), run);
+  return s;
+}
+
+} // namespace
+
+TEST(Stitch, CrossingsAreClassifiedAtTheta1)
+{
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> U(0, 1);
+  const double theta = 30;
+  std::size_t good = 0, bad = 0;
+  for (int trial = 0; trial < 20; ++trial)
+  {
+    // A fan of near-parallel segments from one corner plus scattered points.
+    std::vector<Point> pts{ { 0, 0 } };
+    std::vector<Segment> segs;
+    for (int i = 1; i <= 4; ++i)
+    {
+      const double a = (0.2 + 0.01 * i + 0.3 * U(rng)) * kPi / 2;
+      pts.push_back({ std::cos(a), std::sin(a) });
+      segs.push_back({ 0, i });
+    }
+    const Stitched s = stitchInput(pts, segs, theta);
+    ASSERT_TRUE(s.walk.segmentCrossings.empty());
+    for (const Crossing& c : s.walk.crossings)
+    {
+      const Piece& piece = s.walk.pieces[c.piece];
+      const Point& a = s.overlay.mesh.points[s.segments[piece.segment][0]];
+      const Point& b = s.overlay.mesh.points[s.segments[piece.segment][1]];
+      const Point& p = s.overlay.mesh.points[s.ov.edges[c.edge][0]];
+      const Point& q = s.overlay.mesh.points[s.ov.edges[c.edge][1]];
+      // The crossing is real: the edge's ends lie strictly on either side.
+      EXPECT_LT(orientSign(a, b, p) * orientSign(a, b, q), 0);
+      const double angle = lineAngle(b.x - a.x, b.y - a.y, q.x - p.x, q.y - p.y);
+      EXPECT_EQ(c.good, angle > theta) << "angle " << angle;
+      ++(c.good ? good : bad);
+      // The stitch point lies on the edge, within rounding.
+      EXPECT_GE(c.s, 0.0);
+      EXPECT_LE(c.s, 1.0);
+    }
+  }
+  EXPECT_GT(good, 0u);
+  EXPECT_GT(bad, 0u); // the fan's near-parallel crossings
+}
+
+TEST(Stitch, EdgesAreKeptOrDiscardedByTheirCrossings)
+{
+  std::vector<Point> pts{ { 0, 0 }, { 1, 0.02 }, { 0, 0.05 }, { 1, 0.08 }, { 0.3, 0.9 } };
+  std::vector<Segment> segs{ { 0, 1 }, { 2, 3 }, { 0, 4 } };
+  Stitched s = stitchInput(pts, segs, 30);
+  std::vector<int> crossings(s.ov.edges.size(), 0), goods(s.ov.edges.size(), 0);
+  for (const Crossing& c : s.walk.crossings)
+  {
+    ++crossings[c.edge];
+    goods[c.edge] += c.good;
+  }
+  std::vector<Edge> edges;
+  Statistics stats;
+  const PlanarGraph g = stitch(s.ov, s.overlay, s.walk, &edges, stats);
+  std::size_t discarded = 0;
+  for (std::size_t e = 0; e < s.ov.edges.size(); ++e)
+  {
+    const bool expectKept = crossings[e] == 0 || goods[e] > 0;
+    EXPECT_EQ(bool(edges[e].flags & EdgeKept), expectKept) << "edge " << e;
+    EXPECT_EQ(bool(edges[e].flags & EdgeDiscarded), !expectKept) << "edge " << e;
+    discarded += !expectKept;
+  }
+  EXPECT_EQ(stats.discardedEdges, discarded);
+  EXPECT_GT(discarded, 0u); // the two long near-horizontal segments
+  // One stitch vertex per crossing on a kept edge.
+  std::size_t onKept = 0;
+  for (const Crossing& c : s.walk.crossings)
+    onKept += crossings[c.edge] > 0 && goods[c.edge] > 0;
+  EXPECT_EQ(stats.stitchVertices, onKept);
+  EXPECT_EQ(g.points.size(), s.overlay.mesh.points.size() + onKept);
+}
+
+TEST(Stitch, WalksFollowTheSegmentInOrder)
+{
+  std::vector<Point> pts{ { 0, 0 }, { 1, 1 }, { 0.5, 0.1 }, { 0.2, 0.7 } };
+  const Stitched s = stitchInput(pts, { { 0, 1 } }, 30);
+  const Point &a = pts[0], &b = pts[1];
+  double last = -1;
+  for (const Crossing& c : s.walk.crossings)
+  {
+    const double t = ((c.p.x - a.x) * (b.x - a.x) + (c.p.y - a.y) * (b.y - a.y)) / 2.0;
+    EXPECT_GT(t, last); // crossings are listed from a to b
+    last = t;
+  }
+  ASSERT_FALSE(s.walk.pieces.empty());
+  EXPECT_EQ(s.walk.pieces.front().v0, s.overlay.inputVertex[0]);
+  EXPECT_EQ(s.walk.pieces.back().v1, s.overlay.inputVertex[1]);
+}
