@@ -366,8 +366,15 @@ void Mesher::buildOutput(const Work& w, const PlanarGraph& g, const Completion& 
   const Carving& carve, const Overlay& overlay, std::vector<Edge>& edges)
 {
   Statistics& st = res.stats;
+  // Scaling back is exact unless a point falls among the subnormal numbers,
+  // where it would lose bits and could flip triangles: refuse that instead.
   auto unscale = [&](Point p) {
-    return Point{ std::ldexp(p.x, exponent), std::ldexp(p.y, exponent) };
+    const Point u{ std::ldexp(p.x, exponent), std::ldexp(p.y, exponent) };
+    if (std::ldexp(u.x, -exponent) != p.x || std::ldexp(u.y, -exponent) != p.y)
+      throw Stop{ "the mesh needs points too close to zero for double precision at this "
+                  "scale (coordinates below about 1e-290)",
+        true, p };
+    return u;
   };
   std::vector<int> newIndex(g.points.size(), -1);
   for (std::size_t t = 0; t < c.triangles.size(); ++t)

@@ -523,3 +523,15 @@ TEST(Mesher, TenThousandSegmentsThroughOneVertex)
   EXPECT_LE(r.stats.maxAngleDeg, 170.0);
   EXPECT_EQ(r.inputVertex.size(), p.points.size());
 }
+
+TEST(Mesher, SubnormalCoordinatesAreRefusedClearly)
+{
+  // Found by fuzzing: Steiner points scaled back into subnormals lost bits.
+  Pslg p;
+  p.points = { { 6.2252271375997065e-322, 0 }, { 0, 0 }, { 0, 2.0371192595814219e-312 } };
+  const Result r = mesh(p);
+  if (r.ok)
+    meshAndValidate(p, "subnormal");
+  else
+    EXPECT_NE(r.error.find("too close to zero"), std::string::npos) << r.error;
+}
