@@ -329,6 +329,11 @@ void Mesher::meshRounds(Work& w)
     st.segmentsSplitAtVertices = walk.splitsAtInputVertices + walk.duplicatePieces;
     st.overlayVertices = overlay.mesh.points.size();
     st.overlaySteinerPoints = overlay.steinerPoints + 4;
+    if (overlay.refinementsSkipped > 0)
+      res.warnings.push_back(std::to_string(overlay.refinementsSkipped) +
+        " overlay refinement step(s) were skipped because a circumcenter fell on an existing "
+        "vertex; the overlay may fall short of the angle " +
+        std::to_string(options.minAngleDeg) + " there");
     st.overlayTriangles = ov.tris.size();
 
     t = Clock::now();

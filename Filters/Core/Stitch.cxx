@@ -81,7 +81,7 @@ public:
   {}
 
   void walk(int segment, int a, int b);
-  void findSegmentCrossings(const std::vector<Segment>& segments);
+  void findSegmentCrossings();
 
 private:
   int firstStep(int cur, int b, int& l, int& r, int& tri);
@@ -288,7 +288,7 @@ void Walker::markDuplicates()
   }
 }
 
-void Walker::findSegmentCrossings(const std::vector<Segment>&)
+void Walker::findSegmentCrossings()
 {
   markDuplicates();
   auto record = [&](int pa, int pb, const Point& p) {
@@ -357,7 +357,7 @@ Walk walkSegments(const OverlayEdges& ov, const Overlay& overlay,
     walker.walk(static_cast<int>(s), segments[s][0], segments[s][1]);
     run.tick(double(s) / double(segments.size()), 256);
   }
-  walker.findSegmentCrossings(segments);
+  walker.findSegmentCrossings();
   return out;
 }
 
