@@ -1,0 +1,74 @@
+// Best-fitting plane of 3D points and the 2D frame in it: lets the mesher,
+// which works in a plane, take coplanar points given in 3D.
+#ifndef osm_Plane_h
+#define osm_Plane_h
+
+#include "Geometry.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace osm
+{
+
+struct Vec3
+{
+  double x = 0.0;
+  double y = 0.0;
+  double z = 0.0;
+};
+
+/// An orthonormal, right-handed frame (u, v, normal) at origin.
+struct PlaneFrame
+{
+  Vec3 origin;
+  Vec3 u{ 1, 0, 0 };
+  Vec3 v{ 0, 1, 0 };
+  Vec3 normal{ 0, 0, 1 };
+
+  /// 2D coordinates of the orthogonal projection of p onto the plane.
+  Point toPlane(const Vec3& p) const;
+  /// The 3D point of the plane with 2D coordinates q.
+  Vec3 fromPlane(const Point& q) const;
+  /// Signed distance of p from the plane (along the normal).
+  double distance(const Vec3& p) const;
+  /// 2D coordinates of the point of the plane straight above or below (x, y)
+  /// along z; for a plane parallel to z (within 1e-9), of the orthogonal
+  /// projection of (x, y, origin.z) instead.
+  Point liftXY(double x, double y) const;
+};
+
+struct PlaneFit
+{
+  /// False when there are no points or a coordinate is not finite.
+  bool ok = false;
+  PlaneFrame frame;
+  /// The point farthest from the plane, and its (unsigned) distance.
+  std::size_t farthest = 0;
+  double maxDistance = 0.0;
+  /// Length of the diagonal of the points' axis-aligned bounding box.
+  double diagonal = 0.0;
+  /// True when the points do not fix the plane (fewer than 3 distinct points,
+  /// or all on one line): the frame is then the plane through them whose
+  /// normal is closest to the z axis.
+  bool degenerate = false;
+
+  /// All points within relativeTolerance * diagonal of the plane.
+  bool coplanar(double relativeTolerance) const
+  {
+    return maxDistance <= relativeTolerance * diagonal;
+  }
+};
+
+/// Least-squares plane through the centroid (the normal is the eigenvector of
+/// the smallest eigenvalue of the points' scatter matrix). The frame is
+/// oriented deterministically: the normal's largest component (the first of
+/// equal ones) is positive; u is the projection of the world axis least
+/// aligned with the normal (the first of equal ones); v = normal x u. Points
+/// in a plane z = c thus get u = x, v = y. Works at any finite magnitude
+/// (coordinates are rescaled by a power of two before squaring).
+PlaneFit fitPlane(const std::vector<Vec3>& points);
+
+} // namespace osm
+
+#endif
