@@ -27,16 +27,22 @@
 
 #include "Geometry.h"
 #include "Mesher.h"
+#include "Plane.h"
 #include "Pslg.h"
 #include "Statistics.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <exception>
+#include <functional>
 #include <limits>
 #include <sstream>
 #include <string>
+#include <unordered_map>
+#include <utility>
 #include <vector>
 
 vtkStandardNewMacro(vtkOverlayStitchMesher);
@@ -44,13 +50,16 @@ vtkStandardNewMacro(vtkOverlayStitchMesher);
 namespace
 {
 
-/// Forwards the core's progress to the algorithm and polls its abort flag
-/// (GetAbortExecute rather than CheckAbort, which VTK 9.1 does not have).
+/// Forwards the core's progress to the algorithm, mapped into [begin, end] of
+/// the whole run, and polls its abort flag (GetAbortExecute rather than
+/// CheckAbort, which VTK 9.1 does not have).
 class ProgressAdapter : public osm::Progress
 {
 public:
-  explicit ProgressAdapter(vtkOverlayStitchMesher* filter)
+  ProgressAdapter(vtkOverlayStitchMesher* filter, double begin, double end)
     : Filter(filter)
+    , Begin(begin)
+    , End(end)
   {}
 
   void report(double fraction, const char* phase) override
@@ -60,61 +69,274 @@ public:
       this->Phase = phase;
       this->Filter->SetProgressText(phase);
     }
-    this->Filter->UpdateProgress(fraction);
+    this->Filter->UpdateProgress(this->Begin + (this->End - this->Begin) * fraction);
   }
 
   bool aborted() override { return this->Filter->GetAbortExecute() != 0; }
 
 private:
   vtkOverlayStitchMesher* Filter;
+  double Begin;
+  double End;
   std::string Phase;
 };
 
-/// Reads the input into a PSLG. Returns an error message, or "" on success.
-std::string ConvertInput(vtkPolyData* input, osm::Pslg& pslg, double& z, vtkIdType& ignoredCells)
+std::string FormatPoint3(const osm::Vec3& p)
 {
-  z = 0.0;
-  ignoredCells = 0;
+  std::ostringstream out;
+  out.precision(17);
+  out << "(" << p.x << ", " << p.y << ", " << p.z << ")";
+  return out.str();
+}
+
+/// How the input's 3D points become the core's 2D points, and back.
+class PlaneMap
+{
+public:
+  enum ModeType
+  {
+    XY,    ///< (x, y) as they are; outputs at z = Z
+    Fitted ///< 2D coordinates in the best-fitting plane Frame
+  };
+
+  /// Chooses the mode for the points. Returns an error message or "".
+  std::string Choose(const std::vector<osm::Vec3>& points, bool projectToXY)
+  {
+    this->Input = &points;
+    this->Mode = XY;
+    this->Z = points.empty() ? 0.0 : points.front().z;
+    bool constantZ = true;
+    for (const osm::Vec3& p : points)
+    {
+      constantZ = constantZ && p.z == this->Z;
+    }
+    if (constantZ)
+    {
+      return std::string();
+    }
+    if (projectToXY)
+    {
+      double sum = 0.0;
+      for (const osm::Vec3& p : points)
+      {
+        sum += p.z / static_cast<double>(points.size()); // no overflow at large z
+      }
+      this->Z = sum;
+      this->Projected = true;
+      return std::string();
+    }
+    const osm::PlaneFit fit = osm::fitPlane(points);
+    if (!fit.ok)
+    {
+      return "the input points have no best-fitting plane";
+    }
+    if (!fit.coplanar(RelativePlaneTolerance))
+    {
+      std::ostringstream msg;
+      msg << "the input points are not coplanar: point " << fit.farthest << " at "
+          << FormatPoint3(points[fit.farthest]) << " is " << fit.maxDistance
+          << " from their best-fitting plane (the tolerance is " << RelativePlaneTolerance
+          << " times the bounding box diagonal: " << RelativePlaneTolerance * fit.diagonal
+          << "); turn on ProjectToXYPlane to mesh their projection onto the XY plane";
+      return msg.str();
+    }
+    this->Mode = Fitted;
+    this->Frame = fit.frame;
+    return std::string();
+  }
+
+  bool IsFitted() const { return this->Mode == Fitted; }
+  bool IsProjected() const { return this->Projected; }
+  const osm::PlaneFrame& GetFrame() const { return this->Frame; }
+  double GetZ() const { return this->Z; }
+
+  osm::Point ToPlane(const osm::Vec3& p) const
+  {
+    return this->Mode == Fitted ? this->Frame.toPlane(p) : osm::Point{ p.x, p.y };
+  }
+
+  /// A 2D hole seed given as (x, y) (the HolePoints property).
+  osm::Point SeedXY(double x, double y) const
+  {
+    return this->Mode == Fitted ? this->Frame.liftXY(x, y) : osm::Point{ x, y };
+  }
+
+  /// Remembers which 2D points are input points, so that they map back to
+  /// their original coordinates exactly.
+  void IndexInputPoints(const std::vector<osm::Point>& planar)
+  {
+    if (this->Mode != Fitted)
+    {
+      return;
+    }
+    this->InputOf.reserve(planar.size());
+    for (std::size_t i = 0; i < planar.size(); ++i)
+    {
+      this->InputOf.emplace(Key(planar[i]), i); // keeps the first of equal points
+    }
+  }
+
+  /// The 3D point of an output vertex; inputIndex is the input point it is, or -1.
+  osm::Vec3 ToSpace(const osm::Point& q, long long inputIndex = -1) const
+  {
+    if (this->Mode != Fitted)
+    {
+      return osm::Vec3{ q.x, q.y, this->Z };
+    }
+    if (inputIndex < 0)
+    {
+      const auto it = this->InputOf.find(Key(q));
+      inputIndex = it == this->InputOf.end() ? -1 : static_cast<long long>(it->second);
+    }
+    return inputIndex >= 0 ? (*this->Input)[static_cast<std::size_t>(inputIndex)]
+                           : this->Frame.fromPlane(q);
+  }
+
+  static constexpr double RelativePlaneTolerance = 1e-9;
+
+private:
+  struct KeyHash
+  {
+    std::size_t operator()(const std::pair<std::uint64_t, std::uint64_t>& k) const
+    {
+      return std::hash<std::uint64_t>()(k.first * 0x9E3779B97F4A7C15ULL ^ k.second);
+    }
+  };
+  static std::pair<std::uint64_t, std::uint64_t> Key(const osm::Point& p)
+  {
+    std::uint64_t x, y;
+    const double px = p.x == 0 ? 0.0 : p.x; // -0 and +0 are the same point
+    const double py = p.y == 0 ? 0.0 : p.y;
+    std::memcpy(&x, &px, sizeof x);
+    std::memcpy(&y, &py, sizeof y);
+    return { x, y };
+  }
+
+  const std::vector<osm::Vec3>* Input = nullptr;
+  ModeType Mode = XY;
+  bool Projected = false;
+  double Z = 0.0;
+  osm::PlaneFrame Frame;
+  std::unordered_map<std::pair<std::uint64_t, std::uint64_t>, std::size_t, KeyHash> InputOf;
+};
+
+/// Cells that give no segment, counted by kind for the one warning about them.
+struct IgnoredCells
+{
+  vtkIdType Strips = 0;
+  vtkIdType Empty = 0;
+  vtkIdType ShortLines = 0;
+  vtkIdType ShortPolygons = 0;
+
+  vtkIdType Total() const
+  {
+    return this->Strips + this->Empty + this->ShortLines + this->ShortPolygons;
+  }
+  std::string Describe() const
+  {
+    std::ostringstream msg;
+    msg << "Ignored " << this->Total() << " input cell(s):";
+    const char* separator = " ";
+    auto item = [&](vtkIdType n, const char* what) {
+      if (n > 0)
+      {
+        msg << separator << n << " " << what;
+        separator = ", ";
+      }
+    };
+    item(this->Strips, "triangle strip(s)");
+    item(this->Empty, "empty cell(s) without points");
+    item(this->ShortLines, "line(s) with a single point");
+    item(this->ShortPolygons, "polygon(s) with fewer than 3 points");
+    msg << ". Segments come from line, polyline and polygon cells; every input point is "
+           "meshed.";
+    return msg.str();
+  }
+};
+
+/// Reads the input's points. Returns an error message, or "" on success.
+std::string ReadPoints(vtkPolyData* input, std::vector<osm::Vec3>& points)
+{
   const vtkIdType numberOfPoints = input->GetNumberOfPoints();
   if (numberOfPoints > static_cast<vtkIdType>(std::numeric_limits<int>::max()))
   {
     return "the input has " + std::to_string(numberOfPoints) +
       " points; the mesher accepts at most " + std::to_string(std::numeric_limits<int>::max());
   }
-  pslg.points.resize(static_cast<std::size_t>(numberOfPoints));
+  points.resize(static_cast<std::size_t>(numberOfPoints));
   for (vtkIdType i = 0; i < numberOfPoints; ++i)
   {
     double p[3];
     input->GetPoint(i, p);
-    if (!std::isfinite(p[2]))
+    const osm::Vec3 q{ p[0], p[1], p[2] };
+    if (!std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(q.z))
     {
-      std::ostringstream msg;
-      msg << "input point " << i << " has a non-finite z coordinate (" << p[2] << ")";
-      return msg.str();
+      return "input point " + std::to_string(i) + " has a non-finite coordinate " + FormatPoint3(q);
     }
-    if (i == 0)
-    {
-      z = p[2];
-    }
-    else if (p[2] != z)
-    {
-      std::ostringstream msg;
-      msg << "input is not planar (z varies): point 0 has z = " << z << " but point " << i
-          << " has z = " << p[2] << "; the mesher needs all points in one plane z = constant";
-      return msg.str();
-    }
-    // x and y are passed as they are: the core reports NaN and infinite values.
-    pslg.points[static_cast<std::size_t>(i)] = osm::Point{ p[0], p[1] };
+    points[static_cast<std::size_t>(i)] = q;
   }
+  return std::string();
+}
 
-  auto addSegment = [&pslg](vtkIdType a, vtkIdType b) {
-    if (a != b) // a repeated point id is no segment (e.g. a closing point in a polyline)
+/// Where a segment of the PSLG comes from: its cell (a vtkPolyData cell id)
+/// and its two point ids.
+struct SegmentSource
+{
+  vtkIdType Cell;
+  vtkIdType A;
+  vtkIdType B;
+};
+
+/// The core names segments by their index in the PSLG ("input segment 7"):
+/// append which cell and points each named segment is.
+std::string ExplainSegments(const std::string& text, const std::vector<SegmentSource>& sources)
+{
+  std::vector<std::size_t> named;
+  const std::string word = "segment ";
+  for (std::size_t at = text.find(word); at != std::string::npos; at = text.find(word, at + 1))
+  {
+    std::size_t end = at + word.size();
+    std::size_t index = 0;
+    bool digits = false;
+    while (end < text.size() && std::isdigit(static_cast<unsigned char>(text[end])))
     {
-      pslg.segments.push_back({ static_cast<int>(a), static_cast<int>(b) });
+      index = index * 10 + static_cast<std::size_t>(text[end++] - '0');
+      digits = true;
     }
-  };
+    if (digits && index < sources.size() &&
+      std::find(named.begin(), named.end(), index) == named.end() && named.size() < 4)
+    {
+      named.push_back(index);
+    }
+  }
+  if (named.empty())
+  {
+    return text;
+  }
+  std::ostringstream out;
+  out << text << " [";
+  for (std::size_t k = 0; k < named.size(); ++k)
+  {
+    const SegmentSource& source = sources[named[k]];
+    out << (k ? "; " : "") << "segment " << named[k] << " is cell " << source.Cell << " from point "
+        << source.A << " to point " << source.B;
+  }
+  out << "]";
+  return out.str();
+}
 
-  // Lines and polylines: one segment per consecutive pair of points.
+/// Reads the input's cells into segments, counting the cells that give none.
+void ReadSegments(
+  vtkPolyData* input, osm::Pslg& pslg, std::vector<SegmentSource>& sources, IgnoredCells& ignored)
+{
+  // vtkPolyData numbers its cells verts first, then lines, polygons, strips.
+  vtkIdType cellId = input->GetNumberOfVerts();
+  auto addSegment = [&](vtkIdType a, vtkIdType b) {
+    pslg.segments.push_back({ static_cast<int>(a), static_cast<int>(b) });
+    sources.push_back({ cellId, a, b });
+  };
+  // Lines and polylines: one segment per consecutive pair of points (a
+  // repeated point gives a zero-length segment, which the core drops and counts).
   if (vtkCellArray* lines = input->GetLines())
   {
     auto it = vtk::TakeSmartPointer(lines->NewIterator());
@@ -123,13 +345,17 @@ std::string ConvertInput(vtkPolyData* input, osm::Pslg& pslg, double& z, vtkIdTy
       vtkIdType n;
       const vtkIdType* ids;
       it->GetCurrentCell(n, ids);
+      ignored.Empty += n == 0 ? 1 : 0;
+      ignored.ShortLines += n == 1 ? 1 : 0;
       for (vtkIdType k = 0; k + 1 < n; ++k)
       {
         addSegment(ids[k], ids[k + 1]);
       }
+      ++cellId;
     }
   }
-  // Polygons: their closed edge loops.
+  // Polygons: their closed edge loops (a last point equal to the first, as
+  // some writers repeat it, closes the loop without a zero-length segment).
   if (vtkCellArray* polys = input->GetPolys())
   {
     auto it = vtk::TakeSmartPointer(polys->NewIterator());
@@ -138,18 +364,35 @@ std::string ConvertInput(vtkPolyData* input, osm::Pslg& pslg, double& z, vtkIdTy
       vtkIdType n;
       const vtkIdType* ids;
       it->GetCurrentCell(n, ids);
-      for (vtkIdType k = 0; n >= 2 && k < n; ++k)
+      if (n >= 2 && ids[n - 1] == ids[0])
+      {
+        --n;
+      }
+      if (n < 3)
+      {
+        ignored.Empty += n == 0 ? 1 : 0;
+        ignored.ShortPolygons += n > 0 ? 1 : 0;
+      }
+      for (vtkIdType k = 0; n >= 3 && k < n; ++k)
       {
         addSegment(ids[k], ids[(k + 1) % n]);
       }
+      ++cellId;
     }
   }
   // Vertex and polyvertex cells need nothing: every input point is meshed.
+  if (vtkCellArray* verts = input->GetVerts())
+  {
+    auto it = vtk::TakeSmartPointer(verts->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+    {
+      ignored.Empty += it->GetCurrentCell()->GetNumberOfIds() == 0 ? 1 : 0;
+    }
+  }
   if (vtkCellArray* strips = input->GetStrips())
   {
-    ignoredCells += strips->GetNumberOfCells();
+    ignored.Strips += strips->GetNumberOfCells();
   }
-  return std::string();
 }
 
 /// Builds a vtkCellArray in bulk from offsets and connectivity.
@@ -176,14 +419,17 @@ vtkSmartPointer<vtkCellArray> MakeCells(
   return cells;
 }
 
-vtkSmartPointer<vtkPoints> MakePoints(const std::vector<osm::Point>& vertices, double z)
+/// The output points, in bulk; inputOf[i] is the input point that vertex i is, or -1.
+vtkSmartPointer<vtkPoints> MakePoints(const std::vector<osm::Point>& vertices, const PlaneMap& map,
+  const std::vector<long long>* inputOf = nullptr)
 {
   vtkNew<vtkDoubleArray> coordinates;
   coordinates->SetNumberOfComponents(3);
   coordinates->SetNumberOfTuples(static_cast<vtkIdType>(vertices.size()));
   for (std::size_t i = 0; i < vertices.size(); ++i)
   {
-    const double p[3] = { vertices[i].x, vertices[i].y, z };
+    const osm::Vec3 q = map.ToSpace(vertices[i], inputOf ? (*inputOf)[i] : -1);
+    const double p[3] = { q.x, q.y, q.z };
     coordinates->SetTypedTuple(static_cast<vtkIdType>(i), p);
   }
   auto points = vtkSmartPointer<vtkPoints>::New();
@@ -191,9 +437,10 @@ vtkSmartPointer<vtkPoints> MakePoints(const std::vector<osm::Point>& vertices, d
   return points;
 }
 
-void MakeTriangles(const osm::TriMesh& mesh, double z, vtkPolyData* output)
+void MakeTriangles(const osm::TriMesh& mesh, const PlaneMap& map, vtkPolyData* output,
+  const std::vector<long long>* inputOf = nullptr)
 {
-  output->SetPoints(MakePoints(mesh.vertices, z));
+  output->SetPoints(MakePoints(mesh.vertices, map, inputOf));
   output->SetPolys(MakeCells(mesh.triangles.size(), 3,
     [&mesh](std::size_t c, int k) { return static_cast<vtkIdType>(mesh.triangles[c][k]); }));
 }
@@ -207,9 +454,20 @@ vtkSmartPointer<ArrayT> MakeArray(const char* name, vtkIdType size)
   return array;
 }
 
-void FillMesh(const osm::Result& result, double z, vtkPolyData* output)
+void FillMesh(const osm::Result& result, const PlaneMap& map, vtkPolyData* output)
 {
-  MakeTriangles(result.mesh, z, output);
+  // Each mesh vertex that is an input point gets that point's original
+  // coordinates (the first of merged points): by index, not by a round trip.
+  std::vector<long long> inputOf(result.mesh.vertices.size(), -1);
+  for (std::size_t i = 0; i < result.inputVertex.size(); ++i)
+  {
+    const int v = result.inputVertex[i];
+    if (v >= 0 && inputOf[static_cast<std::size_t>(v)] < 0)
+    {
+      inputOf[static_cast<std::size_t>(v)] = static_cast<long long>(i);
+    }
+  }
+  MakeTriangles(result.mesh, map, output, &inputOf);
 
   const auto numberOfVertices = static_cast<vtkIdType>(result.mesh.vertices.size());
   auto origin = MakeArray<vtkUnsignedCharArray>("VertexOrigin", numberOfVertices);
@@ -259,9 +517,9 @@ void FillMesh(const osm::Result& result, double z, vtkPolyData* output)
   }
 }
 
-void FillEdges(const osm::Result& result, double z, vtkPolyData* output)
+void FillEdges(const osm::Result& result, const PlaneMap& map, vtkPolyData* output)
 {
-  output->SetPoints(MakePoints(result.edgeVertices, z));
+  output->SetPoints(MakePoints(result.edgeVertices, map));
   output->SetLines(MakeCells(result.edges.size(), 2, [&result](std::size_t c, int k) {
     return static_cast<vtkIdType>(k == 0 ? result.edges[c].a : result.edges[c].b);
   }));
@@ -306,6 +564,9 @@ vtkOverlayStitchMesher::vtkOverlayStitchMesher()
   , MaximumEdgeLength(0.0)
   , Domain(DOMAIN_AUTO)
   , ResolveIntersections(1)
+  , MergeTolerance(0.0)
+  , ProjectToXYPlane(0)
+  , UseInputHolePoints(1)
   , MaximumSteinerPoints(0)
   , GenerateEdges(1)
   , GenerateOverlay(1)
@@ -399,25 +660,76 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
     return 1;
   }
 
-  osm::Pslg pslg;
-  double z = 0.0;
-  vtkIdType ignoredCells = 0;
-  const std::string inputError = ConvertInput(input, pslg, z, ignoredCells);
+  // Phase "input": points, the plane they lie in, segments, hole seeds.
+  this->SetProgressText("input");
+  this->UpdateProgress(0.0);
+  std::vector<osm::Vec3> points;
+  std::string inputError = ReadPoints(input, points);
+  PlaneMap map;
+  if (inputError.empty())
+  {
+    inputError = map.Choose(points, this->ProjectToXYPlane != 0);
+  }
   if (!inputError.empty())
   {
     vtkErrorMacro("Cannot mesh the input: " << inputError);
     return 1;
   }
-  if (ignoredCells > 0)
+  osm::Pslg pslg;
+  pslg.points.reserve(points.size());
+  for (const osm::Vec3& p : points)
   {
-    vtkWarningMacro(<< ignoredCells
-                    << " triangle strip cell(s) ignored: the input is read from its points and "
-                       "its vertex, line, polyline and polygon cells.");
+    pslg.points.push_back(map.ToPlane(p));
+  }
+  map.IndexInputPoints(pslg.points);
+  if (map.IsProjected())
+  {
+    vtkWarningMacro(<< "The input points are not in a plane z = constant: projected onto the XY "
+                       "plane (ProjectToXYPlane); the outputs lie at z = "
+                    << map.GetZ() << ", the mean z.");
+  }
+  IgnoredCells ignored;
+  std::vector<SegmentSource> segmentSources;
+  ReadSegments(input, pslg, segmentSources, ignored);
+  if (ignored.Total() > 0)
+  {
+    vtkWarningMacro(<< ignored.Describe());
   }
   for (std::size_t i = 0; i + 1 < this->HolePoints.size(); i += 2)
   {
-    pslg.holes.push_back(osm::Point{ this->HolePoints[i], this->HolePoints[i + 1] });
+    pslg.holes.push_back(map.SeedXY(this->HolePoints[i], this->HolePoints[i + 1]));
   }
+  vtkIdType inputHoles = 0;
+  if (this->UseInputHolePoints)
+  {
+    if (vtkDataArray* seeds = input->GetFieldData()->GetArray("HolePoints"))
+    {
+      const int components = seeds->GetNumberOfComponents();
+      if (components == 2 || components == 3)
+      {
+        inputHoles = seeds->GetNumberOfTuples();
+        for (vtkIdType i = 0; i < inputHoles; ++i)
+        {
+          double seed[3] = { 0.0, 0.0, 0.0 };
+          seeds->GetTuple(i, seed);
+          pslg.holes.push_back(components == 3 && map.IsFitted()
+              ? map.ToPlane(osm::Vec3{ seed[0], seed[1], seed[2] })
+              : map.SeedXY(seed[0], seed[1]));
+        }
+      }
+      else
+      {
+        vtkWarningMacro(<< "The input's field data array HolePoints has " << components
+                        << " components (3 expected: x, y, z): ignored.");
+      }
+    }
+  }
+  if (this->GetAbortExecute())
+  {
+    vtkErrorMacro("Meshing failed: aborted by the user");
+    return 1;
+  }
+  this->UpdateProgress(0.05);
 
   osm::Options options;
   options.minAngleDeg = this->MinimumAngle;
@@ -438,11 +750,13 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
       break;
   }
   options.resolveCrossings = this->ResolveIntersections != 0;
+  options.mergeTolerance = this->MergeTolerance;
   options.maxSteinerPoints = static_cast<std::size_t>(this->MaximumSteinerPoints);
   options.keepEdges = this->GenerateEdges != 0;
   options.keepOverlay = this->GenerateOverlay != 0;
 
-  ProgressAdapter progress(this);
+  // The core's phases (clean, overlay, stitch, complete, domain).
+  ProgressAdapter progress(this, 0.05, 0.9);
   osm::Result result;
   try
   {
@@ -453,28 +767,41 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
     vtkErrorMacro("Internal error in the mesher: " << e.what());
     return 1;
   }
-  this->SetProgressText(nullptr);
-  this->UpdateProgress(1.0);
 
   for (const std::string& warning : result.warnings)
   {
-    vtkWarningMacro(<< warning);
+    vtkWarningMacro(<< ExplainSegments(warning, segmentSources));
   }
   if (!result.ok)
   {
-    vtkErrorMacro("Meshing failed: " << result.error);
+    vtkErrorMacro("Meshing failed: " << ExplainSegments(result.error, segmentSources));
     return 1;
   }
 
-  FillMesh(result, z, mesh);
+  // Phase "output": the three polydata, built in bulk.
+  this->SetProgressText("output");
+  this->UpdateProgress(0.9);
+  FillMesh(result, map, mesh);
+  auto addCount = [mesh](const char* name, double value) {
+    auto array = MakeArray<vtkDoubleArray>(name, 1);
+    array->SetValue(0, value);
+    mesh->GetFieldData()->AddArray(array);
+  };
+  addCount("IgnoredCells", static_cast<double>(ignored.Total()));
+  addCount("InputHolePoints", static_cast<double>(inputHoles));
+  addCount("InputPlaneFitted", map.IsFitted() ? 1.0 : 0.0);
+  addCount("InputProjectedToXY", map.IsProjected() ? 1.0 : 0.0);
+  this->UpdateProgress(0.95);
   if (this->GenerateEdges)
   {
-    FillEdges(result, z, edges);
+    FillEdges(result, map, edges);
   }
   if (this->GenerateOverlay)
   {
-    MakeTriangles(result.overlay, z, overlay);
+    MakeTriangles(result.overlay, map, overlay);
   }
+  this->SetProgressText(nullptr);
+  this->UpdateProgress(1.0);
   return 1;
 }
 
@@ -486,6 +813,9 @@ void vtkOverlayStitchMesher::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumEdgeLength: " << this->MaximumEdgeLength << "\n";
   os << indent << "Domain: " << this->Domain << "\n";
   os << indent << "ResolveIntersections: " << (this->ResolveIntersections ? "On" : "Off") << "\n";
+  os << indent << "MergeTolerance: " << this->MergeTolerance << "\n";
+  os << indent << "ProjectToXYPlane: " << (this->ProjectToXYPlane ? "On" : "Off") << "\n";
+  os << indent << "UseInputHolePoints: " << (this->UseInputHolePoints ? "On" : "Off") << "\n";
   os << indent << "MaximumSteinerPoints: " << this->MaximumSteinerPoints << "\n";
   os << indent << "GenerateEdges: " << (this->GenerateEdges ? "On" : "Off") << "\n";
   os << indent << "GenerateOverlay: " << (this->GenerateOverlay ? "On" : "Off") << "\n";

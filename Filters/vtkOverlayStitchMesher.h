@@ -5,11 +5,29 @@
  * @brief   triangulate planar line data so that no angle exceeds about 170 degrees
  *
  * vtkOverlayStitchMesher meshes a Planar Straight Line Graph given as
- * vtkPolyData with Overlay Stitch Meshing (OSM). The input points must lie in
- * a plane of constant z. Line and polyline cells become segments between
- * consecutive points, polygon cells contribute their closed edge loops, vertex
- * cells (and every other input point) are meshed as isolated points. Triangle
- * strips are ignored with a warning.
+ * vtkPolyData with Overlay Stitch Meshing (OSM). Line and polyline cells
+ * become segments between consecutive points, polygon cells contribute their
+ * closed edge loops, vertex cells (and every other input point) are meshed as
+ * isolated points. Triangle strips, empty cells, lines with fewer than 2
+ * points and polygons with fewer than 3 points are ignored, with one warning
+ * that counts them by kind.
+ *
+ * The input points may lie in any plane:
+ * - in a plane z = constant, they are meshed as they are;
+ * - otherwise, if they are coplanar (every point within 1e-9 of the bounding
+ *   box diagonal from their least-squares plane), they are meshed in that
+ *   plane and the output is mapped back to 3D: input vertices keep their
+ *   original coordinates bit for bit, new points lie in the fitted plane;
+ * - otherwise the run fails with an error naming the point farthest from the
+ *   plane and its distance, unless ProjectToXYPlane is on: then z is dropped
+ *   (the points are projected onto the XY plane) and the outputs lie in the
+ *   plane z = the mean z of the input points.
+ *
+ * Hole seeds come from the HolePoints property and, when UseInputHolePoints
+ * is on, from the input's field data array "HolePoints" (3 components, x y z;
+ * as written by the .poly reader). For input meshed in a fitted plane, field
+ * data seeds are projected orthogonally onto that plane and property seeds
+ * (x, y) are moved along z onto it.
  *
  * The mesher runs in three phases: an overlay Delaunay mesh of the input
  * points whose angles are at least MinimumAngle (θ1); stitching, which keeps
@@ -30,8 +48,11 @@
  * - port 2 (Overlay): the phase-1 overlay triangulation, for inspection.
  *
  * Bad input (NaN coordinates, crossing segments when ResolveIntersections is
- * off, a varying z, ...) is reported through vtkErrorMacro with the reason,
- * and all outputs are left empty.
+ * off, points not in one plane, ...) is reported through vtkErrorMacro with
+ * the reason, and all outputs are left empty. Progress is reported through
+ * every phase (input, clean, overlay, stitch, complete, domain, output) and
+ * GetAbortExecute() is polled: an abort ends the run with the error "aborted
+ * by the user" and empty outputs.
  *
  * The class uses only API that VTK 9.1 also has.
  *
@@ -108,6 +129,39 @@ public:
 
   ///@{
   /**
+   * Input points closer than this distance are merged into the first of them
+   * (counted in the statistic DuplicatePointsMerged). 0, the default, merges
+   * only exact duplicates.
+   */
+  vtkSetClampMacro(MergeTolerance, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(MergeTolerance, double);
+  ///@}
+
+  ///@{
+  /**
+   * If on, input points that are not all in one plane are projected onto the
+   * XY plane (z dropped) instead of being an error; the outputs then lie in the
+   * plane z = mean z of the input points. Points in a plane z = constant are
+   * never changed. Default off.
+   */
+  vtkSetMacro(ProjectToXYPlane, vtkTypeBool);
+  vtkGetMacro(ProjectToXYPlane, vtkTypeBool);
+  vtkBooleanMacro(ProjectToXYPlane, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
+   * If on (the default), the input's field data array "HolePoints" (3
+   * components x, y, z, as written by the .poly reader) adds hole seeds to
+   * those of the HolePoints property.
+   */
+  vtkSetMacro(UseInputHolePoints, vtkTypeBool);
+  vtkGetMacro(UseInputHolePoints, vtkTypeBool);
+  vtkBooleanMacro(UseInputHolePoints, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
    * Stop with an error when more Steiner points than this would be needed.
    * 0 (the default) means no cap.
    */
@@ -137,6 +191,7 @@ public:
   /**
    * Hole seed points (x, y): the region bounded by segments that contains a
    * seed is removed from the output, like the holes of Triangle's .poly files.
+   * See also UseInputHolePoints.
    */
   void AddHolePoint(double x, double y);
   void RemoveAllHolePoints();
@@ -164,6 +219,9 @@ protected:
   double MaximumEdgeLength;
   int Domain;
   vtkTypeBool ResolveIntersections;
+  double MergeTolerance;
+  vtkTypeBool ProjectToXYPlane;
+  vtkTypeBool UseInputHolePoints;
   vtkIdType MaximumSteinerPoints;
   vtkTypeBool GenerateEdges;
   vtkTypeBool GenerateOverlay;

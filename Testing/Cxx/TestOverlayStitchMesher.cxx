@@ -247,16 +247,17 @@ int TestBadInput()
   Check(messages->Errors >= 1, "a NaN coordinate is reported as an error");
   Check(AllOutputsEmpty(mesher), "a NaN coordinate leaves all outputs empty");
 
-  // z varies: not a planar input.
+  // One point lifted out of the plane: not coplanar, the error names it.
   messages->Errors = 0;
   input = MakeInput(0.0);
   input->GetPoints()->SetPoint(2, 10.0, 10.0, 1.0);
   mesher->SetInputData(input);
   mesher->Update();
-  std::cout << "Non-planar input: " << messages->LastError << "\n";
-  Check(messages->Errors >= 1 && messages->LastError.find("not planar") != std::string::npos,
-    "a varying z is reported as 'not planar'");
-  Check(AllOutputsEmpty(mesher), "a varying z leaves all outputs empty");
+  std::cout << "Non-coplanar input: " << messages->LastError << "\n";
+  Check(messages->Errors >= 1 && messages->LastError.find("not coplanar") != std::string::npos &&
+      messages->LastError.find("point 2 at (10, 10, 1)") != std::string::npos,
+    "a point out of the plane is reported as 'not coplanar', naming point 2");
+  Check(AllOutputsEmpty(mesher), "non-coplanar input leaves all outputs empty");
 
   // Crossing segments with ResolveIntersections off.
   messages->Errors = 0;
@@ -274,6 +275,12 @@ int TestBadInput()
   std::cout << "Crossing segments: " << messages->LastError << "\n";
   Check(messages->Errors >= 1, "crossing segments without ResolveIntersections are an error");
   Check(AllOutputsEmpty(mesher), "crossing segments leave all outputs empty");
+
+  // The error names the crossing segments by their cell and points too.
+  Check(messages->LastError.find("cell ") != std::string::npos &&
+      messages->LastError.find("from point ") != std::string::npos,
+    "the crossing error says which cells and points the segments are");
+  mesher->ResolveIntersectionsOn();
 
   // An empty input is not an error.
   messages->Errors = 0;
