@@ -16,6 +16,7 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
+#include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -27,6 +28,7 @@
 
 #include "Geometry.h"
 #include "Mesher.h"
+#include "OverlayStitchGather.h"
 #include "Plane.h"
 #include "Pslg.h"
 #include "Statistics.h"
@@ -654,6 +656,14 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   mesh->Initialize();
   edges->Initialize();
   overlay->Initialize();
+  // Parallel runs (pvbatch, pvserver): every rank takes part in gathering the whole input
+  // on rank 0, which meshes it; the other ranks keep empty outputs (OverlayStitchGather.h).
+  vtkSmartPointer<vtkPolyData> gathered;
+  if (!OverlayStitchGatherInput(vtkMultiProcessController::GetGlobalController(), input, gathered))
+  {
+    return 1;
+  }
+  input = gathered;
   if (!input)
   {
     vtkErrorMacro("No input polydata.");

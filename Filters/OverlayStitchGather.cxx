@@ -1,0 +1,376 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026, the Overlay Stitch Meshing authors
+#include "OverlayStitchGather.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkCellData.h"
+#include "vtkDataSetAttributes.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkMultiProcessController.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <functional>
+#include <set>
+#include <string>
+#include <unordered_map>
+#include <utility>
+
+namespace
+{
+
+const char* const HolePointsName = "HolePoints";
+
+/// Exact coordinates of a point; -0.0 and +0.0 are the same point.
+using PointKey = std::array<double, 3>;
+
+struct PointKeyHash
+{
+  std::size_t operator()(const PointKey& key) const
+  {
+    std::size_t h = 0;
+    for (double value : key)
+    {
+      std::uint64_t bits;
+      std::memcpy(&bits, &value, sizeof bits);
+      h ^= std::hash<std::uint64_t>()(bits) + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
+    }
+    return h;
+  }
+};
+
+/// A cell as its kind and merged point ids, in the direction whose sequence is smaller.
+using CellKey = std::vector<vtkIdType>;
+
+struct CellKeyHash
+{
+  std::size_t operator()(const CellKey& key) const
+  {
+    std::size_t h = key.size();
+    for (vtkIdType id : key)
+    {
+      h ^= std::hash<vtkIdType>()(id) + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
+    }
+    return h;
+  }
+};
+
+/// Where a point or cell was first seen: the piece and its id in the combined output.
+struct FirstSeen
+{
+  std::size_t Piece;
+  vtkIdType Id;
+};
+
+vtkCellArray* CellsOfKind(vtkPolyData* polyData, int kind)
+{
+  switch (kind)
+  {
+    case 0:
+      return polyData->GetVerts();
+    case 1:
+      return polyData->GetLines();
+    case 2:
+      return polyData->GetPolys();
+    default:
+      return polyData->GetStrips();
+  }
+}
+
+/// Appends the hole seeds of `field` (a 3-component, or 2-component, numeric
+/// "HolePoints" array) to `seeds`, skipping exact repeats.
+void CollectHolePoints(vtkFieldData* field, std::vector<std::array<double, 3>>& seeds,
+  std::set<std::array<double, 3>>& seen)
+{
+  vtkDataArray* holes = field ? field->GetArray(HolePointsName) : nullptr;
+  if (!holes || holes->GetNumberOfComponents() < 2)
+  {
+    return;
+  }
+  for (vtkIdType t = 0; t < holes->GetNumberOfTuples(); ++t)
+  {
+    std::array<double, 3> p = { holes->GetComponent(t, 0) + 0.0, holes->GetComponent(t, 1) + 0.0,
+      holes->GetNumberOfComponents() > 2 ? holes->GetComponent(t, 2) + 0.0 : 0.0 };
+    // NaN seeds are passed on (the mesher reports them); they are never "equal".
+    const bool finite = std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+    if (!finite || seen.insert(p).second)
+    {
+      seeds.push_back(p);
+    }
+  }
+}
+
+} // namespace
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
+  const std::vector<vtkSmartPointer<vtkDataObject>>& pieces, OverlayStitchGatherSummary* summary)
+{
+  auto combined = vtkSmartPointer<vtkPolyData>::New();
+
+  // The pieces with points; point and cell arrays are those common to all of them.
+  std::vector<vtkPolyData*> used;
+  for (const auto& piece : pieces)
+  {
+    vtkPolyData* polyData = vtkPolyData::SafeDownCast(piece);
+    if (polyData && polyData->GetNumberOfPoints() > 0)
+    {
+      used.push_back(polyData);
+    }
+  }
+  const int numberOfUsed = static_cast<int>(used.size());
+  vtkDataSetAttributes::FieldList pointFields(numberOfUsed);
+  vtkDataSetAttributes::FieldList cellFields(numberOfUsed);
+  vtkIdType totalPoints = 0;
+  vtkIdType totalCells = 0;
+  for (int u = 0; u < numberOfUsed; ++u)
+  {
+    if (u == 0)
+    {
+      pointFields.InitializeFieldList(used[u]->GetPointData());
+      cellFields.InitializeFieldList(used[u]->GetCellData());
+    }
+    else
+    {
+      pointFields.IntersectFieldList(used[u]->GetPointData());
+      cellFields.IntersectFieldList(used[u]->GetCellData());
+    }
+    totalPoints += used[u]->GetNumberOfPoints();
+    totalCells += used[u]->GetNumberOfCells();
+  }
+
+  vtkIdType sharedPoints = 0;
+  vtkIdType sharedCells = 0;
+  if (numberOfUsed > 0)
+  {
+    // Points: a point equal to one of an earlier piece is that point.
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    points->Allocate(totalPoints);
+    vtkPointData* outPointData = combined->GetPointData();
+    outPointData->CopyAllocate(pointFields, totalPoints);
+    std::unordered_map<PointKey, FirstSeen, PointKeyHash> firstPoint;
+    firstPoint.reserve(static_cast<std::size_t>(totalPoints));
+    std::vector<std::vector<vtkIdType>> newId(used.size());
+    for (std::size_t u = 0; u < used.size(); ++u)
+    {
+      vtkPolyData* piece = used[u];
+      vtkPointData* pieceData = piece->GetPointData();
+      newId[u].resize(static_cast<std::size_t>(piece->GetNumberOfPoints()));
+      for (vtkIdType i = 0; i < piece->GetNumberOfPoints(); ++i)
+      {
+        double x[3];
+        piece->GetPoint(i, x);
+        const PointKey key = { x[0] + 0.0, x[1] + 0.0, x[2] + 0.0 };
+        const bool finite = std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]);
+        auto found = finite ? firstPoint.find(key) : firstPoint.end();
+        if (found != firstPoint.end() && found->second.Piece != u)
+        {
+          newId[u][static_cast<std::size_t>(i)] = found->second.Id;
+          ++sharedPoints;
+          continue;
+        }
+        const vtkIdType id = points->InsertNextPoint(x);
+        outPointData->CopyData(pointFields, pieceData, static_cast<int>(u), i, id);
+        newId[u][static_cast<std::size_t>(i)] = id;
+        if (finite && found == firstPoint.end())
+        {
+          firstPoint.emplace(key, FirstSeen{ u, id });
+        }
+      }
+    }
+    combined->SetPoints(points);
+
+    // Cells, kind by kind (verts, lines, polys, strips: vtkPolyData's cell id order),
+    // each piece in turn; a cell equal to one of an earlier piece is that cell.
+    vtkCellData* outCellData = combined->GetCellData();
+    outCellData->CopyAllocate(cellFields, totalCells);
+    vtkIdType nextCellId = 0;
+    for (int kind = 0; kind < 4; ++kind)
+    {
+      vtkNew<vtkCellArray> cells;
+      std::unordered_map<CellKey, FirstSeen, CellKeyHash> firstCell;
+      std::vector<vtkIdType> ids;
+      CellKey key;
+      CellKey reversed;
+      for (std::size_t u = 0; u < used.size(); ++u)
+      {
+        vtkPolyData* piece = used[u];
+        // Cell ids of this kind in the piece start after those of the earlier kinds.
+        vtkIdType pieceCellId = 0;
+        for (int earlier = 0; earlier < kind; ++earlier)
+        {
+          pieceCellId += CellsOfKind(piece, earlier)->GetNumberOfCells();
+        }
+        vtkCellArray* pieceCells = CellsOfKind(piece, kind);
+        auto it = vtk::TakeSmartPointer(pieceCells->NewIterator());
+        for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++pieceCellId)
+        {
+          vtkIdType n;
+          const vtkIdType* pieceIds;
+          it->GetCurrentCell(n, pieceIds);
+          ids.resize(static_cast<std::size_t>(n));
+          for (vtkIdType k = 0; k < n; ++k)
+          {
+            const vtkIdType id = pieceIds[k];
+            ids[static_cast<std::size_t>(k)] =
+              (id >= 0 && id < static_cast<vtkIdType>(newId[u].size()))
+              ? newId[u][static_cast<std::size_t>(id)]
+              : -1; // an invalid id stays invalid (the mesher reports it)
+          }
+          key.assign(ids.begin(), ids.end());
+          reversed.assign(ids.rbegin(), ids.rend());
+          if (reversed < key)
+          {
+            key.swap(reversed);
+          }
+          auto found = firstCell.find(key);
+          if (found != firstCell.end() && found->second.Piece != u)
+          {
+            ++sharedCells;
+            continue;
+          }
+          cells->InsertNextCell(n, ids.data());
+          outCellData->CopyData(
+            cellFields, piece->GetCellData(), static_cast<int>(u), pieceCellId, nextCellId);
+          if (found == firstCell.end())
+          {
+            firstCell.emplace(key, FirstSeen{ u, nextCellId });
+          }
+          ++nextCellId;
+        }
+      }
+      if (cells->GetNumberOfCells() > 0)
+      {
+        switch (kind)
+        {
+          case 0:
+            combined->SetVerts(cells);
+            break;
+          case 1:
+            combined->SetLines(cells);
+            break;
+          case 2:
+            combined->SetPolys(cells);
+            break;
+          default:
+            combined->SetStrips(cells);
+            break;
+        }
+      }
+    }
+  }
+
+  // Field data: the first array of each name, except the hole seeds, which are
+  // gathered from every piece (empty pieces included) and deduplicated.
+  std::vector<std::array<double, 3>> seeds;
+  std::set<std::array<double, 3>> seenSeeds;
+  bool anyHoles = false;
+  vtkFieldData* outField = combined->GetFieldData();
+  for (const auto& piece : pieces)
+  {
+    vtkFieldData* field = piece ? piece->GetFieldData() : nullptr;
+    if (!field)
+    {
+      continue;
+    }
+    if (field->GetAbstractArray(HolePointsName))
+    {
+      anyHoles = true;
+      CollectHolePoints(field, seeds, seenSeeds);
+    }
+    for (int a = 0; a < field->GetNumberOfArrays(); ++a)
+    {
+      vtkAbstractArray* array = field->GetAbstractArray(a);
+      const char* name = array ? array->GetName() : nullptr;
+      if (name && std::strcmp(name, HolePointsName) != 0 && !outField->GetAbstractArray(name))
+      {
+        outField->AddArray(array);
+      }
+    }
+  }
+  if (anyHoles)
+  {
+    vtkNew<vtkDoubleArray> holes;
+    holes->SetName(HolePointsName);
+    holes->SetNumberOfComponents(3);
+    holes->SetNumberOfTuples(static_cast<vtkIdType>(seeds.size()));
+    for (std::size_t s = 0; s < seeds.size(); ++s)
+    {
+      holes->SetTypedTuple(static_cast<vtkIdType>(s), seeds[s].data());
+    }
+    outField->AddArray(holes);
+  }
+
+  if (summary)
+  {
+    summary->SharedPointsMerged = sharedPoints;
+    summary->SharedCellsDropped = sharedCells;
+    summary->HolePoints = static_cast<vtkIdType>(seeds.size());
+  }
+  return combined;
+}
+
+//------------------------------------------------------------------------------
+bool OverlayStitchGatherInput(vtkMultiProcessController* controller, vtkPolyData* input,
+  vtkSmartPointer<vtkPolyData>& gathered, OverlayStitchGatherSummary* summary)
+{
+  const int ranks = controller ? controller->GetNumberOfProcesses() : 1;
+  if (ranks <= 1)
+  {
+    gathered = input;
+    if (summary)
+    {
+      *summary = OverlayStitchGatherSummary();
+      summary->CellsPerRank.assign(1, input ? input->GetNumberOfCells() : 0);
+    }
+    return true;
+  }
+
+  // This rank's piece, without the cells that are ghost copies of another rank's.
+  vtkNew<vtkPolyData> local;
+  if (input)
+  {
+    local->ShallowCopy(input);
+    if (local->GetCellData()->GetArray(vtkDataSetAttributes::GhostArrayName()))
+    {
+      local->RemoveGhostCells();
+    }
+  }
+
+  // The one collective call: every rank reaches it, whatever its input.
+  std::vector<vtkSmartPointer<vtkDataObject>> pieces;
+  const int status = controller->Gather(local.Get(), pieces, 0);
+  if (controller->GetLocalProcessId() != 0)
+  {
+    return false;
+  }
+
+  if (summary)
+  {
+    *summary = OverlayStitchGatherSummary();
+    summary->Ranks = ranks;
+    for (const auto& piece : pieces)
+    {
+      vtkPolyData* polyData = vtkPolyData::SafeDownCast(piece);
+      summary->CellsPerRank.push_back(polyData ? polyData->GetNumberOfCells() : 0);
+    }
+  }
+  if (!status || static_cast<int>(pieces.size()) != ranks)
+  {
+    gathered = nullptr;
+    return true;
+  }
+  gathered = OverlayStitchCombinePieces(pieces, summary);
+  return true;
+}

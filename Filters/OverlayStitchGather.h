@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026, the Overlay Stitch Meshing authors
+//
+// Internal to OverlayStitch::Filters (not installed): gathers a distributed
+// input on rank 0 so that vtkOverlayStitchMesher meshes the whole PSLG at once.
+//
+// Under pvbatch or pvserver with several MPI ranks, each rank's pipeline holds
+// one piece of the line data. Meshing each piece separately would give seams
+// and missing segments, so the mesher gathers every piece on rank 0, meshes
+// there, and leaves the outputs of the other ranks empty.
+//
+// The pieces are combined without inventing repairs the serial run would not
+// report: a point of one piece that has exactly the coordinates of a point of
+// an EARLIER piece is the same point (pieces share the points on their common
+// boundary), and a cell of one piece equal to a cell of an earlier piece (same
+// kind, same merged point ids, either direction) is the same cell (a ghost
+// copy, or a piece read by every rank). Duplicates inside one piece are kept:
+// they are the user's, and the core merges and reports them as in a serial
+// run. Cells flagged as duplicate ghosts are removed before gathering. Point
+// and cell arrays common to all non-empty pieces are kept; field data arrays
+// are taken from the first piece that has each name, except "HolePoints"
+// (3-component doubles), whose tuples are collected from every piece and
+// deduplicated.
+#ifndef OverlayStitchGather_h
+#define OverlayStitchGather_h
+
+#include "vtkSmartPointer.h" // for vtkSmartPointer
+#include "vtkType.h"         // for vtkIdType
+
+#include <vector>
+
+class vtkDataObject;
+class vtkMultiProcessController;
+class vtkPolyData;
+
+/// What the gather did, for tests and diagnostics (meaningful on rank 0).
+struct OverlayStitchGatherSummary
+{
+  int Ranks = 1;                       ///< processes taking part
+  std::vector<vtkIdType> CellsPerRank; ///< input cells (ghosts removed) per rank
+  vtkIdType SharedPointsMerged = 0;    ///< points found again in a later piece
+  vtkIdType SharedCellsDropped = 0;    ///< cells found again in a later piece
+  vtkIdType HolePoints = 0;            ///< distinct hole seeds after the gather
+};
+
+/// Collective over `controller`: every rank must call it once, in the same
+/// order relative to the controller's other collective calls, whatever its
+/// input (a null input counts as an empty piece). Returns true on the rank
+/// that must mesh, with `gathered` set to the whole input (or to null if the
+/// communication failed), and false on every other rank. With no controller or
+/// a single process, `gathered` is `input` itself (no copy) and it returns true.
+bool OverlayStitchGatherInput(vtkMultiProcessController* controller, vtkPolyData* input,
+  vtkSmartPointer<vtkPolyData>& gathered, OverlayStitchGatherSummary* summary = nullptr);
+
+/// The combination done on rank 0, exposed for tests: `pieces` in rank order
+/// (null or non-polydata entries count as empty pieces).
+vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
+  const std::vector<vtkSmartPointer<vtkDataObject>>& pieces,
+  OverlayStitchGatherSummary* summary = nullptr);
+
+#endif
