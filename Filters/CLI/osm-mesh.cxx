@@ -1,0 +1,824 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026, the Overlay Stitch Meshing authors
+//
+// osm-mesh: the command-line tool. A thin driver around the VTK pipeline
+// reader -> vtkOverlayStitchMesher -> writer, so that the command line, C++
+// and pvpython give the same meshes. Triangle's files and the SVG drawing are
+// written by the core's writer (MeshWriter.h) from the filter's outputs.
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkCellData.h"
+#include "vtkCellType.h"
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkLogger.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkOutputWindow.h"
+#include "vtkOverlayStitchMesher.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataReader.h"
+#include "vtkPolyDataWriter.h"
+#include "vtkSmartPointer.h"
+#include "vtkTrianglePolyReader.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkXMLPolyDataReader.h"
+#include "vtkXMLPolyDataWriter.h"
+#include "vtkXMLUnstructuredGridWriter.h"
+
+#include "MeshWriter.h"
+
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#ifndef OSM_VERSION
+#define OSM_VERSION "unknown"
+#endif
+
+namespace
+{
+
+const char* const Usage =
+  R"(Usage: osm-mesh INPUT [-o OUTPUT] [--domain auto|enclosed|hull|box]
+                [--min-angle DEG | --gamma G] [--max-edge H] [--no-resolve]
+                [--merge-tolerance D] [--max-steiner N] [--stats] [--svg FILE]
+                [--help] [--version]
+
+Mesh a Planar Straight Line Graph with Overlay Stitch Meshing: a conforming
+triangulation in which no angle exceeds 180 - theta2 degrees (about 170 at
+the default --min-angle 30).
+
+INPUT                  Triangle .poly (holes honoured) or .node file, or
+                       .vtp / .vtk polydata (lines and polylines are
+                       segments, polygons give their edges, every point kept)
+  -o, --output FILE    write the mesh, in the format of FILE's extension:
+                       .vtp, .vtu, .vtk (VTK), or .node (Triangle: FILE.node,
+                       .ele and .edge side by side, 1-based)
+  --domain MODE        auto (default: enclosed if segments enclose a region,
+                       else hull), enclosed, hull or box
+  --min-angle DEG      theta1, the overlay's smallest angle: 1 to 35 (default 30)
+  --gamma G            the overlay's radius/edge bound instead:
+                       theta1 = asin(1/(2G)), G from 0.8717 to 28.65
+  --max-edge H         refine overlay triangles with an edge longer than H
+                       (default 0: no limit)
+  --no-resolve         crossing segments are an error (default: split them)
+  --merge-tolerance D  merge points closer than D (default 0: exact duplicates)
+  --max-steiner N      fail if more than N Steiner points are needed (0: no cap)
+  --stats              print the run statistics as JSON on stdout
+  --svg FILE           draw the mesh: input segments bold, discarded overlay
+                       edges dashed
+  -h, --help           print this help and exit
+  --version            print the version and exit
+
+Written files hold no timings, so the same input gives the same bytes.
+Exit status: 0 on success, 1 if the input cannot be read or meshed or the
+output cannot be written, 2 for a bad command line; the reason is one line
+"osm-mesh: ..." on stderr. Warnings go to stderr as "osm-mesh: warning: ...".
+)";
+
+/// Raised for any failure; main() prints it as the one line on stderr.
+struct Failure
+{
+  std::string message;
+  int status;
+};
+
+[[noreturn]] void Fail(const std::string& message, int status = 1)
+{
+  throw Failure{ message, status };
+}
+
+/// VTK's messages come as "ERROR: In file, line N\nclass (0x...): text\n\n".
+/// Keep only the text, on one line.
+std::string CleanMessage(const char* raw)
+{
+  std::string text = raw ? raw : "";
+  const char* const headers[] = { "ERROR: In ", "Warning: In ", "Generic Warning: In " };
+  for (const char* header : headers)
+  {
+    if (text.compare(0, std::strlen(header), header) == 0)
+    {
+      const std::size_t newline = text.find('\n');
+      text = newline == std::string::npos ? std::string() : text.substr(newline + 1);
+      break;
+    }
+  }
+  // "vtkSomeClass (0x1234abcd): " before the text proper.
+  const std::size_t open = text.find(" (0x");
+  const std::size_t close = text.find("): ");
+  if (open != std::string::npos && close != std::string::npos && open < close &&
+    text.find('\n') > close)
+  {
+    bool identifier = open > 0;
+    for (std::size_t i = 0; i < open; ++i)
+    {
+      identifier = identifier &&
+        (std::isalnum(static_cast<unsigned char>(text[i])) || text[i] == '_' || text[i] == ':');
+    }
+    if (identifier)
+    {
+      text = text.substr(close + 3);
+    }
+  }
+  std::string line;
+  for (char c : text)
+  {
+    const bool space = c == '\n' || c == '\r' || c == '\t' || c == ' ';
+    if (space)
+    {
+      if (!line.empty() && line.back() != ' ')
+      {
+        line += ' ';
+      }
+    }
+    else
+    {
+      line += c;
+    }
+  }
+  while (!line.empty() && line.back() == ' ')
+  {
+    line.pop_back();
+  }
+  return line;
+}
+
+/// Replaces VTK's output window: warnings go to stderr with our prefix, the
+/// first error is kept for the one-line failure message, the rest is dropped.
+class OsmOutputWindow : public vtkOutputWindow
+{
+public:
+  static OsmOutputWindow* New();
+  vtkTypeMacro(OsmOutputWindow, vtkOutputWindow);
+
+  void DisplayText(const char*) override {}
+  void DisplayDebugText(const char*) override {}
+  void DisplayErrorText(const char* text) override
+  {
+    if (this->FirstError.empty())
+    {
+      this->FirstError = CleanMessage(text);
+    }
+    ++this->Errors;
+  }
+  void DisplayWarningText(const char* text) override { this->Warn(text); }
+  void DisplayGenericWarningText(const char* text) override { this->Warn(text); }
+
+  /// Fails with the first error, if any was reported since the last call,
+  /// after prefix (e.g. "cannot read 'a.vtp': ").
+  void Check(const std::string& prefix, const std::string& context)
+  {
+    if (this->Errors > 0)
+    {
+      const std::string message = prefix + (this->FirstError.empty() ? context : this->FirstError);
+      this->Errors = 0;
+      this->FirstError.clear();
+      Fail(message);
+    }
+  }
+
+  std::vector<std::string> Warnings;
+
+protected:
+  OsmOutputWindow() = default;
+  ~OsmOutputWindow() override = default;
+
+private:
+  void Warn(const char* text)
+  {
+    const std::string message = CleanMessage(text);
+    this->Warnings.push_back(message);
+    std::cerr << "osm-mesh: warning: " << message << "\n";
+  }
+
+  int Errors = 0;
+  std::string FirstError;
+
+  OsmOutputWindow(const OsmOutputWindow&) = delete;
+  void operator=(const OsmOutputWindow&) = delete;
+};
+vtkStandardNewMacro(OsmOutputWindow);
+
+struct Arguments
+{
+  std::string input;
+  std::string output;
+  std::string svg;
+  int domain = vtkOverlayStitchMesher::DOMAIN_AUTO;
+  bool minAngleGiven = false;
+  bool gammaGiven = false;
+  double minAngle = 30.0;
+  double maxEdge = 0.0;
+  bool resolve = true;
+  double mergeTolerance = 0.0;
+  long long maxSteiner = 0;
+  bool stats = false;
+};
+
+std::string Lower(std::string s)
+{
+  for (char& c : s)
+  {
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  }
+  return s;
+}
+
+/// The extension, lower case, with its dot ("" if none).
+std::string Extension(const std::string& path)
+{
+  const std::size_t dot = path.find_last_of('.');
+  const std::size_t slash = path.find_last_of('/');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
+  {
+    return std::string();
+  }
+  return Lower(path.substr(dot));
+}
+
+double ParseNumber(const std::string& option, const std::string& text)
+{
+  const char* begin = text.c_str();
+  char* end = nullptr;
+  errno = 0;
+  const double value = std::strtod(begin, &end);
+  if (text.empty() || end != begin + text.size() ||
+    std::isspace(static_cast<unsigned char>(*begin)))
+  {
+    Fail(option + ": expected a number, got '" + text + "'", 2);
+  }
+  if (!std::isfinite(value) || errno == ERANGE)
+  {
+    Fail(option + ": " + text + " is not a finite number in range", 2);
+  }
+  return value;
+}
+
+long long ParseCount(const std::string& option, const std::string& text)
+{
+  const char* begin = text.c_str();
+  char* end = nullptr;
+  errno = 0;
+  const long long value = std::strtoll(begin, &end, 10);
+  if (text.empty() || end != begin + text.size() ||
+    !std::isdigit(static_cast<unsigned char>(*begin)))
+  {
+    Fail(option + ": expected a non-negative integer, got '" + text + "'", 2);
+  }
+  if (errno == ERANGE)
+  {
+    Fail(option + ": " + text + " is too large", 2);
+  }
+  return value;
+}
+
+std::string Number(double value)
+{
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.10g", value);
+  return buf;
+}
+
+/// Parses the command line; returns false when --help or --version was answered.
+bool ParseArguments(int argc, char* argv[], Arguments& args)
+{
+  bool inputGiven = false;
+  double gamma = 0.0;
+  for (int i = 1; i < argc; ++i)
+  {
+    std::string arg = argv[i];
+    std::string value;
+    bool hasValue = false;
+    if (arg.size() > 2 && arg.compare(0, 2, "--") == 0)
+    {
+      const std::size_t eq = arg.find('=');
+      if (eq != std::string::npos)
+      {
+        value = arg.substr(eq + 1);
+        arg = arg.substr(0, eq);
+        hasValue = true;
+      }
+    }
+    auto needValue = [&]() -> std::string {
+      if (hasValue)
+      {
+        return value;
+      }
+      if (i + 1 >= argc)
+      {
+        Fail(arg + " needs a value (see --help)", 2);
+      }
+      return argv[++i];
+    };
+    auto noValue = [&]() {
+      if (hasValue)
+      {
+        Fail(arg + " takes no value", 2);
+      }
+    };
+
+    if (arg == "-h" || arg == "--help")
+    {
+      noValue();
+      std::cout << Usage;
+      return false;
+    }
+    else if (arg == "--version")
+    {
+      noValue();
+      std::cout << "osm-mesh " << OSM_VERSION << "\n";
+      return false;
+    }
+    else if (arg == "-o" || arg == "--output")
+    {
+      args.output = needValue();
+      if (args.output.empty())
+      {
+        Fail(arg + ": empty file name", 2);
+      }
+    }
+    else if (arg == "--domain")
+    {
+      const std::string mode = needValue();
+      if (mode == "auto")
+      {
+        args.domain = vtkOverlayStitchMesher::DOMAIN_AUTO;
+      }
+      else if (mode == "enclosed")
+      {
+        args.domain = vtkOverlayStitchMesher::DOMAIN_ENCLOSED;
+      }
+      else if (mode == "hull")
+      {
+        args.domain = vtkOverlayStitchMesher::DOMAIN_HULL;
+      }
+      else if (mode == "box")
+      {
+        args.domain = vtkOverlayStitchMesher::DOMAIN_BOX;
+      }
+      else
+      {
+        Fail("--domain: expected auto, enclosed, hull or box, got '" + mode + "'", 2);
+      }
+    }
+    else if (arg == "--min-angle")
+    {
+      args.minAngle = ParseNumber(arg, needValue());
+      args.minAngleGiven = true;
+      if (args.minAngle < 1.0 || args.minAngle > 35.0)
+      {
+        Fail("--min-angle must be between 1 and 35 degrees, got " + Number(args.minAngle), 2);
+      }
+    }
+    else if (arg == "--gamma")
+    {
+      gamma = ParseNumber(arg, needValue());
+      args.gammaGiven = true;
+    }
+    else if (arg == "--max-edge")
+    {
+      args.maxEdge = ParseNumber(arg, needValue());
+      if (args.maxEdge < 0.0)
+      {
+        Fail("--max-edge must be 0 (no limit) or positive, got " + Number(args.maxEdge), 2);
+      }
+    }
+    else if (arg == "--no-resolve")
+    {
+      noValue();
+      args.resolve = false;
+    }
+    else if (arg == "--merge-tolerance")
+    {
+      args.mergeTolerance = ParseNumber(arg, needValue());
+      if (args.mergeTolerance < 0.0)
+      {
+        Fail("--merge-tolerance must be 0 or positive, got " + Number(args.mergeTolerance), 2);
+      }
+    }
+    else if (arg == "--max-steiner")
+    {
+      args.maxSteiner = ParseCount(arg, needValue());
+    }
+    else if (arg == "--stats")
+    {
+      noValue();
+      args.stats = true;
+    }
+    else if (arg == "--svg")
+    {
+      args.svg = needValue();
+      if (args.svg.empty())
+      {
+        Fail("--svg: empty file name", 2);
+      }
+    }
+    else if (arg.size() > 1 && arg[0] == '-')
+    {
+      Fail("unknown option '" + arg + "' (see --help)", 2);
+    }
+    else
+    {
+      if (inputGiven)
+      {
+        Fail("more than one input file: '" + args.input + "' and '" + arg + "'", 2);
+      }
+      args.input = arg;
+      inputGiven = true;
+    }
+  }
+
+  if (!inputGiven)
+  {
+    Fail("no input file (see --help)", 2);
+  }
+  if (args.minAngleGiven && args.gammaGiven)
+  {
+    Fail("--min-angle and --gamma set the same thing: give only one", 2);
+  }
+  if (args.gammaGiven)
+  {
+    // theta1 = asin(1 / (2 gamma)) must lie in [1, 35] degrees.
+    const double degrees = 180.0 / std::acos(-1.0);
+    const double lo = 1.0 / (2.0 * std::sin(35.0 / degrees));
+    const double hi = 1.0 / (2.0 * std::sin(1.0 / degrees));
+    if (!(gamma >= lo && gamma <= hi))
+    {
+      Fail("--gamma must be between " + Number(lo) + " and " + Number(hi) +
+          " (theta1 = asin(1/(2G)) from 35 to 1 degrees), got " + Number(gamma),
+        2);
+    }
+    args.minAngle = std::asin(1.0 / (2.0 * gamma)) * degrees;
+    // Rounding at the ends of the range must not fall outside the filter's clamp.
+    args.minAngle = std::min(35.0, std::max(1.0, args.minAngle));
+  }
+
+  const std::string in = Extension(args.input);
+  if (in != ".poly" && in != ".node" && in != ".vtp" && in != ".vtk")
+  {
+    Fail("cannot read '" + args.input + "': the input must end in .poly, .node, .vtp or .vtk", 2);
+  }
+  if (!args.output.empty())
+  {
+    const std::string out = Extension(args.output);
+    if (out != ".vtp" && out != ".vtu" && out != ".vtk" && out != ".node")
+    {
+      Fail(
+        "cannot write '" + args.output + "': the output must end in .vtp, .vtu, .vtk or .node", 2);
+    }
+  }
+  return true;
+}
+
+/// The input reader, chosen by extension; the file must exist.
+vtkSmartPointer<vtkAlgorithm> MakeReader(const std::string& path)
+{
+  {
+    std::ifstream probe(path);
+    if (!probe)
+    {
+      const int error = errno;
+      Fail("cannot open '" + path +
+        "': " + (error ? std::generic_category().message(error) : std::string("unreadable")));
+    }
+  }
+  const std::string ext = Extension(path);
+  if (ext == ".poly" || ext == ".node")
+  {
+    auto reader = vtkSmartPointer<vtkTrianglePolyReader>::New();
+    reader->SetFileName(path.c_str());
+    return reader;
+  }
+  if (ext == ".vtp")
+  {
+    auto reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+    reader->SetFileName(path.c_str());
+    return reader;
+  }
+  auto reader = vtkSmartPointer<vtkPolyDataReader>::New();
+  reader->SetFileName(path.c_str());
+  if (!reader->IsFilePolyData())
+  {
+    Fail("'" + path + "' is not a legacy VTK polydata file");
+  }
+  return reader;
+}
+
+/// A copy of the mesh without the run's timings (field data "Seconds*"), so
+/// that written files are the same for the same input.
+vtkSmartPointer<vtkPolyData> WithoutTimings(vtkPolyData* mesh)
+{
+  auto copy = vtkSmartPointer<vtkPolyData>::New();
+  copy->ShallowCopy(mesh);
+  vtkNew<vtkFieldData> fields;
+  vtkFieldData* source = mesh->GetFieldData();
+  for (int a = 0; a < source->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* array = source->GetAbstractArray(a);
+    const char* name = array ? array->GetName() : nullptr;
+    if (name && std::strncmp(name, "Seconds", 7) == 0)
+    {
+      continue;
+    }
+    fields->AddArray(array);
+  }
+  copy->SetFieldData(fields);
+  return copy;
+}
+
+/// The filter's Mesh and Edges outputs as the core's result, for its writers.
+osm::Result ToResult(vtkPolyData* mesh, vtkPolyData* edges)
+{
+  osm::Result r;
+  r.ok = true;
+  const vtkIdType numberOfPoints = mesh->GetNumberOfPoints();
+  r.mesh.vertices.resize(static_cast<std::size_t>(numberOfPoints));
+  r.vertexOrigin.assign(static_cast<std::size_t>(numberOfPoints), osm::VertexOrigin::Other);
+  vtkDataArray* origin = mesh->GetPointData()->GetArray("VertexOrigin");
+  for (vtkIdType i = 0; i < numberOfPoints; ++i)
+  {
+    double p[3];
+    mesh->GetPoint(i, p);
+    r.mesh.vertices[static_cast<std::size_t>(i)] = osm::Point{ p[0], p[1] };
+    if (origin)
+    {
+      r.vertexOrigin[static_cast<std::size_t>(i)] =
+        static_cast<osm::VertexOrigin>(static_cast<int>(origin->GetComponent(i, 0)));
+    }
+  }
+  vtkDataArray* region = mesh->GetCellData()->GetArray("RegionId");
+  auto cells = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
+  vtkIdType cellId = mesh->GetNumberOfVerts() + mesh->GetNumberOfLines();
+  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell(), ++cellId)
+  {
+    vtkIdType n = 0;
+    const vtkIdType* ids = nullptr;
+    cells->GetCurrentCell(n, ids);
+    if (n != 3)
+    {
+      Fail("internal error: the mesh has a cell with " + std::to_string(n) + " points");
+    }
+    r.mesh.triangles.push_back(
+      { static_cast<int>(ids[0]), static_cast<int>(ids[1]), static_cast<int>(ids[2]) });
+    r.regionId.push_back(region ? static_cast<int>(region->GetComponent(cellId, 0)) : 0);
+  }
+
+  if (edges && edges->GetNumberOfPoints() > 0)
+  {
+    r.edgeVertices.resize(static_cast<std::size_t>(edges->GetNumberOfPoints()));
+    for (vtkIdType i = 0; i < edges->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      edges->GetPoint(i, p);
+      r.edgeVertices[static_cast<std::size_t>(i)] = osm::Point{ p[0], p[1] };
+    }
+    vtkCellData* cd = edges->GetCellData();
+    const std::pair<const char*, std::uint8_t> flags[] = { { "Overlay", osm::EdgeOverlay },
+      { "Kept", osm::EdgeKept }, { "Discarded", osm::EdgeDiscarded }, { "Input", osm::EdgeInput } };
+    auto lines = vtk::TakeSmartPointer(edges->GetLines()->NewIterator());
+    vtkIdType lineId = edges->GetNumberOfVerts();
+    for (lines->GoToFirstCell(); !lines->IsDoneWithTraversal(); lines->GoToNextCell(), ++lineId)
+    {
+      vtkIdType n = 0;
+      const vtkIdType* ids = nullptr;
+      lines->GetCurrentCell(n, ids);
+      if (n != 2)
+      {
+        continue;
+      }
+      osm::Edge e;
+      e.a = static_cast<int>(ids[0]);
+      e.b = static_cast<int>(ids[1]);
+      for (const auto& flag : flags)
+      {
+        vtkDataArray* array = cd->GetArray(flag.first);
+        if (array && array->GetComponent(lineId, 0) != 0.0)
+        {
+          e.flags |= flag.second;
+        }
+      }
+      r.edges.push_back(e);
+    }
+  }
+  return r;
+}
+
+vtkSmartPointer<vtkUnstructuredGrid> ToUnstructuredGrid(vtkPolyData* mesh)
+{
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  grid->SetPoints(mesh->GetPoints());
+  grid->Allocate(mesh->GetNumberOfPolys());
+  auto cells = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
+  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
+  {
+    vtkIdType n = 0;
+    const vtkIdType* ids = nullptr;
+    cells->GetCurrentCell(n, ids);
+    grid->InsertNextCell(VTK_TRIANGLE, n, ids);
+  }
+  // The mesh has triangles only, so its cell data lines up with the grid's cells.
+  grid->GetPointData()->ShallowCopy(mesh->GetPointData());
+  grid->GetCellData()->ShallowCopy(mesh->GetCellData());
+  grid->GetFieldData()->ShallowCopy(mesh->GetFieldData());
+  return grid;
+}
+
+void WriteMesh(
+  const std::string& path, vtkPolyData* mesh, vtkPolyData* edges, OsmOutputWindow* window)
+{
+  const std::string ext = Extension(path);
+  int ok = 1;
+  if (ext == ".node")
+  {
+    const std::string base = path.substr(0, path.size() - 5);
+    const std::string error = osm::writeTriangleFiles(base, ToResult(mesh, edges));
+    if (!error.empty())
+    {
+      Fail(error);
+    }
+    return;
+  }
+  vtkSmartPointer<vtkPolyData> clean = WithoutTimings(mesh);
+  if (ext == ".vtp")
+  {
+    vtkNew<vtkXMLPolyDataWriter> writer;
+    writer->SetInputData(clean);
+    writer->SetFileName(path.c_str());
+    ok = writer->Write();
+  }
+  else if (ext == ".vtu")
+  {
+    vtkNew<vtkXMLUnstructuredGridWriter> writer;
+    writer->SetInputData(ToUnstructuredGrid(clean));
+    writer->SetFileName(path.c_str());
+    ok = writer->Write();
+  }
+  else
+  {
+    vtkNew<vtkPolyDataWriter> writer;
+    writer->SetInputData(clean);
+    writer->SetFileName(path.c_str());
+    ok = writer->Write();
+  }
+  window->Check("cannot write '" + path + "': ", "the writer failed");
+  if (!ok)
+  {
+    Fail("cannot write '" + path + "'");
+  }
+}
+
+std::string JsonString(const std::string& s)
+{
+  std::string out = "\"";
+  for (char c : s)
+  {
+    if (c == '"' || c == '\\')
+    {
+      out += '\\';
+      out += c;
+    }
+    else if (static_cast<unsigned char>(c) < 0x20)
+    {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned char>(c));
+      out += buf;
+    }
+    else
+    {
+      out += c;
+    }
+  }
+  return out + "\"";
+}
+
+/// The Mesh output's statistics (its single-value field data), as JSON.
+void PrintStatistics(vtkPolyData* mesh, const std::vector<std::string>& warnings)
+{
+  std::cout << "{\n  \"ok\": true,\n";
+  vtkFieldData* fields = mesh->GetFieldData();
+  char buf[64];
+  for (int a = 0; a < fields->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* array = fields->GetArray(a);
+    if (!array || !array->GetName() || array->GetNumberOfTuples() != 1 ||
+      array->GetNumberOfComponents() != 1)
+    {
+      continue;
+    }
+    const double value = array->GetComponent(0, 0);
+    std::snprintf(buf, sizeof buf, "%.17g", std::isfinite(value) ? value : 0.0);
+    std::cout << "  " << JsonString(array->GetName()) << ": " << buf << ",\n";
+  }
+  std::cout << "  \"Warnings\": [";
+  for (std::size_t i = 0; i < warnings.size(); ++i)
+  {
+    std::cout << (i ? ", " : "") << JsonString(warnings[i]);
+  }
+  std::cout << "]\n}\n";
+}
+
+int Run(int argc, char* argv[], OsmOutputWindow* window)
+{
+  Arguments args;
+  if (!ParseArguments(argc, argv, args))
+  {
+    return 0;
+  }
+
+  vtkSmartPointer<vtkAlgorithm> reader = MakeReader(args.input);
+  reader->Update();
+  // The .poly reader's messages already say "file:line: reason".
+  const std::string ext = Extension(args.input);
+  window->Check(ext == ".poly" || ext == ".node" ? "" : "cannot read '" + args.input + "': ",
+    "the reader failed");
+
+  vtkNew<vtkOverlayStitchMesher> mesher;
+  mesher->SetInputConnection(reader->GetOutputPort());
+  mesher->SetMinimumAngle(args.minAngle);
+  mesher->SetMaximumEdgeLength(args.maxEdge);
+  mesher->SetDomain(args.domain);
+  mesher->SetResolveIntersections(args.resolve);
+  mesher->SetMergeTolerance(args.mergeTolerance);
+  mesher->SetMaximumSteinerPoints(static_cast<vtkIdType>(args.maxSteiner));
+  mesher->SetGenerateEdges(true);
+  mesher->SetGenerateOverlay(false);
+  mesher->Update();
+  window->Check("", "meshing failed");
+
+  vtkPolyData* mesh = mesher->GetOutput(0);
+  vtkPolyData* edges = mesher->GetEdgesOutput();
+  if (mesh->GetNumberOfPolys() == 0)
+  {
+    Fail("the mesh of '" + args.input + "' is empty");
+  }
+
+  if (!args.output.empty())
+  {
+    WriteMesh(args.output, mesh, edges, window);
+  }
+  if (!args.svg.empty())
+  {
+    std::ofstream svg(args.svg, std::ios::binary);
+    if (!svg)
+    {
+      Fail("cannot write '" + args.svg + "': " + std::generic_category().message(errno));
+    }
+    osm::writeSvg(svg, ToResult(mesh, edges));
+    svg.close();
+    if (!svg)
+    {
+      Fail("error while writing '" + args.svg + "'");
+    }
+  }
+  if (args.stats)
+  {
+    PrintStatistics(mesh, window->Warnings);
+  }
+  return 0;
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  // VTK's messages reach the user only through OsmOutputWindow: the logger's
+  // own copy on stderr (VTK 9.2 logs errors as well) is turned off.
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  vtkNew<OsmOutputWindow> window;
+  vtkOutputWindow::SetInstance(window);
+  int status = 0;
+  try
+  {
+    status = Run(argc, argv, window);
+  }
+  catch (const Failure& failure)
+  {
+    std::cerr << "osm-mesh: " << failure.message << "\n";
+    status = failure.status;
+  }
+  catch (const std::exception& e)
+  {
+    std::cerr << "osm-mesh: " << e.what() << "\n";
+    status = 1;
+  }
+  std::cout.flush();
+  if (!std::cout)
+  {
+    std::cerr << "osm-mesh: error while writing to standard output\n";
+    status = 1;
+  }
+  vtkOutputWindow::SetInstance(nullptr);
+  return status;
+}
