@@ -1,0 +1,529 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
+# Copyright (c) 2026, the Overlay Stitch Meshing authors
+"""Tests of osm-mesh, the command-line tool, run by CTest (label cli).
+
+    cli_tests.py GROUP --cli osm-mesh --helper osm_cli_helper --data DIR
+                 --shared DIR --out DIR
+
+GROUP is one of: help, options, formats, inputs, errors, determinism,
+reference, realdata. Every check prints "ok" or "FAIL"; the exit status is 1
+if any check failed, 77 (CTest's skip) when the group's data is absent.
+Plain Python 3, no third-party module.
+"""
+import argparse
+import json
+import math
+import os
+import shutil
+import struct
+import subprocess
+import sys
+import xml.etree.ElementTree as ET
+
+ARGS = None
+FAILURES = []
+
+
+def check(condition, what, detail=""):
+    if condition:
+        print("ok   " + what)
+    else:
+        FAILURES.append(what)
+        print("FAIL " + what + (": " + detail if detail else ""))
+    return condition
+
+
+def data(name):
+    return os.path.join(ARGS.data, name)
+
+
+def out(name):
+    return os.path.join(ARGS.out, name)
+
+
+def run(*args, timeout=600):
+    p = subprocess.run([ARGS.cli] + [str(a) for a in args], capture_output=True,
+                       text=True, timeout=timeout)
+    return p
+
+
+def mesh_ok(*args, what=None):
+    """Runs osm-mesh, expecting success and no error line."""
+    p = run(*args)
+    what = what or "osm-mesh " + " ".join(str(a) for a in args)
+    errors = [l for l in p.stderr.splitlines() if not l.startswith("osm-mesh: warning: ")]
+    check(p.returncode == 0 and not errors, what + " succeeds",
+          "status %d, stderr %r" % (p.returncode, p.stderr[-500:]))
+    return p
+
+
+def expect_error(args, status, fragments, what):
+    """Runs osm-mesh, expecting failure with one line 'osm-mesh: <reason>'."""
+    p = run(*args)
+    lines = p.stderr.splitlines()
+    check(p.returncode == status, what + ": exit status %d" % status,
+          "got %d, stderr %r" % (p.returncode, p.stderr))
+    errors = [l for l in lines if not l.startswith("osm-mesh: warning: ")]
+    check(len(errors) == 1 and errors[0].startswith("osm-mesh: "),
+          what + ": one line 'osm-mesh: ...' on stderr", repr(p.stderr))
+    for fragment in fragments:
+        check(fragment in p.stderr, what + ": message names %r" % fragment, repr(p.stderr))
+    check(p.stdout == "", what + ": nothing on stdout", repr(p.stdout[:200]))
+    return p
+
+
+def validate(input_path, mesh_path, *extra, what=None):
+    p = subprocess.run([ARGS.helper, "validate", input_path, mesh_path] + list(extra),
+                       capture_output=True, text=True, timeout=600)
+    check(p.returncode == 0, what or "validate %s against %s" % (
+        os.path.basename(mesh_path), os.path.basename(input_path)),
+          (p.stdout + p.stderr)[-800:])
+    return p.stdout
+
+
+def stats_of(*args):
+    p = mesh_ok(*(list(args) + ["--stats"]))
+    try:
+        return json.loads(p.stdout)
+    except ValueError as e:
+        check(False, "--stats prints JSON", str(e) + ": " + p.stdout[:300])
+        return {}
+
+
+def read_triangle_files(base):
+    """Parses base.node/.ele/.edge as osm-mesh writes them; checks the format."""
+    def rows(path):
+        with open(path) as f:
+            return [l.split() for l in f if l.strip() and not l.lstrip().startswith("#")]
+
+    node = rows(base + ".node")
+    n, dim, nattr, nmark = (int(x) for x in node[0])
+    check(dim == 2 and nattr == 0 and nmark == 1 and len(node) == n + 1,
+          "%s.node: header '%d 2 0 1' and %d vertex lines" % (os.path.basename(base), n, n))
+    check([int(r[0]) for r in node[1:]] == list(range(1, n + 1)),
+          "%s.node: vertices numbered 1..%d" % (os.path.basename(base), n))
+    vertices = [(float(r[1]), float(r[2])) for r in node[1:]]
+
+    ele = rows(base + ".ele")
+    t, corners, eattr = (int(x) for x in ele[0])
+    check(corners == 3 and len(ele) == t + 1 and all(len(r) == 4 + eattr for r in ele[1:]),
+          "%s.ele: header '%d 3 %d' and %d triangle lines" % (os.path.basename(base), t, eattr, t))
+    check([int(r[0]) for r in ele[1:]] == list(range(1, t + 1)),
+          "%s.ele: triangles numbered 1..%d" % (os.path.basename(base), t))
+    triangles = [tuple(int(x) for x in r[1:4]) for r in ele[1:]]
+    check(all(1 <= v <= n for tri in triangles for v in tri),
+          "%s.ele: corners are 1-based vertex numbers in 1..%d" % (os.path.basename(base), n))
+
+    edge = rows(base + ".edge")
+    e, emark = (int(x) for x in edge[0])
+    check(emark == 1 and len(edge) == e + 1,
+          "%s.edge: header '%d 1' and %d edge lines" % (os.path.basename(base), e, e))
+    check([int(r[0]) for r in edge[1:]] == list(range(1, e + 1)),
+          "%s.edge: edges numbered 1..%d" % (os.path.basename(base), e))
+    edges = [(int(r[1]), int(r[2]), int(r[3])) for r in edge[1:]]
+    check(all(1 <= a <= n and 1 <= b <= n for a, b, _ in edges),
+          "%s.edge: endpoints are 1-based vertex numbers" % os.path.basename(base))
+    # Euler: every edge of the triangles is listed once.
+    mesh_edges = set()
+    for a, b, c in triangles:
+        for u, v in ((a, b), (b, c), (c, a)):
+            mesh_edges.add((min(u, v), max(u, v)))
+    check(mesh_edges == set((min(a, b), max(a, b)) for a, b, _ in edges),
+          "%s.edge: exactly the edges of the triangles" % os.path.basename(base))
+    return vertices, triangles, edges
+
+
+def area(vertices, tri):
+    (ax, ay), (bx, by), (cx, cy) = (vertices[v - 1] for v in tri)
+    return 0.5 * ((bx - ax) * (cy - ay) - (by - ay) * (cx - ax))
+
+
+def total_area(vertices, triangles):
+    return sum(area(vertices, t) for t in triangles)
+
+
+def read_bytes(path):
+    with open(path, "rb") as f:
+        return f.read()
+
+
+# ---------------------------------------------------------------- groups
+
+def group_help():
+    for flag in ("--help", "-h"):
+        p = run(flag)
+        check(p.returncode == 0 and p.stdout.startswith("Usage: osm-mesh INPUT"),
+              flag + " prints the usage on stdout, exit 0", p.stdout[:100] + p.stderr)
+        for option in ("-o", "--domain", "--min-angle", "--gamma", "--max-edge", "--no-resolve",
+                       "--merge-tolerance", "--max-steiner", "--stats", "--svg", "--version"):
+            check(option in p.stdout, flag + " documents " + option)
+    p = run("--version")
+    check(p.returncode == 0 and p.stdout.startswith("osm-mesh ") and
+          p.stdout.strip().split()[1][0].isdigit(), "--version prints 'osm-mesh <version>'",
+          p.stdout)
+
+
+def group_options():
+    square = data("square_hole.poly")
+    # --domain: auto is enclosed here; hull and box cover more.
+    areas = {}
+    for domain in ("auto", "enclosed", "hull", "box"):
+        mesh_ok(square, "-o", out("d-%s.node" % domain), "--domain", domain)
+        v, t, _ = read_triangle_files(out("d-" + domain))
+        areas[domain] = total_area(v, t)
+        validate(square, out("d-%s.node" % domain), "--allow-missing",
+                 what="--domain %s mesh is valid" % domain)
+    check(abs(areas["enclosed"] - 96.0) < 1e-9, "--domain enclosed: area 100 - 4 (hole)",
+          str(areas["enclosed"]))
+    check(read_bytes(out("d-auto.node")) == read_bytes(out("d-enclosed.node")) and
+          read_bytes(out("d-auto.ele")) == read_bytes(out("d-enclosed.ele")),
+          "--domain auto gives the enclosed mesh on a closed outline")
+    check(areas["hull"] >= areas["enclosed"] - 1e-9, "--domain hull covers at least the enclosed area",
+          str(areas))
+    check(areas["box"] > 100.0 + 1e-9, "--domain box covers more than the square", str(areas))
+
+    # --min-angle and --gamma reach the overlay (statistics Theta1Deg, Gamma).
+    s = stats_of(square, "--min-angle", "20")
+    check(abs(s.get("Theta1Deg", 0) - 20.0) < 1e-9, "--min-angle 20: Theta1Deg = 20", str(s.get("Theta1Deg")))
+    s = stats_of(square, "--gamma", "2")
+    expected = math.degrees(math.asin(1.0 / 4.0))
+    check(abs(s.get("Theta1Deg", 0) - expected) < 1e-9,
+          "--gamma 2: Theta1Deg = asin(1/4) = %.6f" % expected, str(s.get("Theta1Deg")))
+    check(abs(s.get("Gamma", 0) - 2.0) < 1e-9, "--gamma 2: Gamma = 2", str(s.get("Gamma")))
+    default = stats_of(square)
+    check(abs(default.get("Theta1Deg", 0) - 30.0) < 1e-9, "default Theta1Deg = 30")
+    check(default.get("MaxAngleDeg", 999) <= default.get("PredictedMaxAngleDeg", 0) + 1e-9,
+          "default run within its predicted angle bound")
+
+    # --max-edge refines.
+    fine = stats_of(square, "--max-edge", "0.5")
+    check(fine.get("OutputTriangles", 0) > default.get("OutputTriangles", 0),
+          "--max-edge 0.5 gives more triangles (%s > %s)" % (
+              fine.get("OutputTriangles"), default.get("OutputTriangles")))
+    mesh_ok(square, "-o", out("fine.node"), "--max-edge", "0.5")
+    validate(square, out("fine.node"), "--allow-missing", what="--max-edge mesh is valid")
+
+    # --no-resolve: same mesh as the default on an input without crossings.
+    mesh_ok(square, "-o", out("noresolve.vtp"), "--no-resolve")
+    mesh_ok(square, "-o", out("resolve.vtp"))
+    check(read_bytes(out("noresolve.vtp")) == read_bytes(out("resolve.vtp")),
+          "--no-resolve changes nothing without crossings")
+    # ... and crossings are split by default.
+    crossing = stats_of(data("crossing.poly"))
+    check(crossing.get("CrossingsSplit", 0) >= 1, "crossings split by default",
+          str(crossing.get("CrossingsSplit")))
+
+    # --merge-tolerance merges near points.
+    near = out("near.poly")
+    with open(near, "w") as f:
+        f.write("6 2 0 0\n0 0 0\n1 4 0\n2 4 4\n3 0 4\n4 2 2\n5 2.0000001 2\n"
+                "4 0\n0 0 1\n1 1 2\n2 2 3\n3 3 0\n0\n")
+    exact = stats_of(near)
+    merged = stats_of(near, "--merge-tolerance", "0.001")
+    check(exact.get("DuplicatePointsMerged", -1) == 0, "no merge with the default tolerance 0")
+    check(merged.get("DuplicatePointsMerged", -1) == 1,
+          "--merge-tolerance 0.001 merges the two near points",
+          str(merged.get("DuplicatePointsMerged")))
+    check(merged.get("OutputVertices", 0) < exact.get("OutputVertices", 0),
+          "--merge-tolerance: fewer output vertices")
+
+    # --max-steiner: a generous cap is fine, a tiny one is an error.
+    s = stats_of(square, "--max-steiner", "1000000")
+    check(s.get("OutputTriangles", 0) == default.get("OutputTriangles"),
+          "--max-steiner 1000000 does not change the mesh")
+    expect_error([square, "--max-steiner", "3"], 1, ["Steiner"], "--max-steiner 3")
+
+    # --stats: JSON with the filter's statistic names, matching the files.
+    mesh_ok(square, "-o", out("stats.node"))
+    v, t, e = read_triangle_files(out("stats"))
+    for name in ("InputPoints", "InputSegments", "OutputTriangles", "OutputVertices",
+                 "MaxAngleDeg", "MinAngleDeg", "DiscardedEdges", "SecondsTotal", "Warnings"):
+        check(name in default, "--stats has " + name)
+    check(default.get("ok") is True, "--stats: ok is true")
+    check(default.get("OutputTriangles") == len(t) and default.get("OutputVertices") == len(v),
+          "--stats counts match the written .ele/.node (%d, %d)" % (len(t), len(v)))
+    check(default.get("InputPoints") == 9 and default.get("InputSegments") == 8,
+          "--stats: 9 input points, 8 segments")
+
+    # --svg: a drawing with the mesh, the discarded edges (dashed) and the input (bold).
+    for name, source in (("square", square), ("crossing", data("crossing.poly"))):
+        svg = out(name + ".svg")
+        s = stats_of(source, "--svg", svg, "-o", out(name + "-svg.node"))
+        _, _, edges = read_triangle_files(out(name + "-svg"))
+        try:
+            root = ET.parse(svg).getroot()
+        except ET.ParseError as e:
+            check(False, "--svg writes well-formed XML", str(e))
+            continue
+        ns = "{http://www.w3.org/2000/svg}"
+        check(root.tag == ns + "svg", "--svg: an <svg> document")
+        groups = {g.get("id"): g for g in root.iter(ns + "g")}
+        check(set(groups) >= {"mesh", "discarded", "input"},
+              "--svg: groups mesh, discarded, input", str(sorted(groups)))
+        if set(groups) >= {"mesh", "discarded", "input"}:
+            dashed = [l for l in groups["discarded"].iter(ns + "line")]
+            check(len(dashed) == s.get("DiscardedEdges") and
+                  all(l.get("stroke-dasharray") for l in dashed),
+                  "--svg %s: %d dashed discarded edges" % (name, s.get("DiscardedEdges", -1)),
+                  str(len(dashed)))
+            bold = list(groups["input"].iter(ns + "line"))
+            input_edges = sum(1 for _, _, m in edges if m == 1)
+            check(len(bold) == input_edges and
+                  all(float(l.get("stroke-width")) > 1 for l in bold),
+                  "--svg %s: %d bold input subsegments" % (name, input_edges), str(len(bold)))
+            thin = list(groups["mesh"].iter(ns + "line"))
+            check(len(thin) + len(bold) == len(edges),
+                  "--svg %s: every mesh edge drawn" % name, "%d + %d vs %d" % (
+                      len(thin), len(bold), len(edges)))
+    # No -o: nothing written, still a success.
+    p = mesh_ok(square)
+    check(p.stdout == "", "no -o and no --stats: nothing on stdout")
+    # --option=value spelling.
+    a = stats_of(square, "--min-angle=25", "--domain=hull")
+    check(abs(a.get("Theta1Deg", 0) - 25) < 1e-9, "--min-angle=25 spelling accepted")
+
+
+def group_formats():
+    square = data("square_hole.poly")
+    for ext in ("vtp", "vtu", "vtk", "node"):
+        path = out("square." + ext)
+        mesh_ok(square, "-o", path)
+        check(os.path.isfile(path) and os.path.getsize(path) > 0, "." + ext + " written")
+        report = validate(square, path, "--allow-missing", what="." + ext + " read back and valid")
+        check(" 9 of 9 input points" in report,
+              ".%s: all 9 input points are mesh vertices (the isolated one too)" % ext, report)
+    # Triangle's files: the three side by side, parsed back.
+    v, t, e = read_triangle_files(out("square"))
+    check(abs(total_area(v, t) - 96.0) < 1e-9, ".node/.ele: area 96 (the hole is left out)")
+    check(all(area(v, tri) > 0 for tri in t), ".ele: every triangle counter-clockwise")
+    inside_hole = [tri for tri in t if
+                   4 < sum(v[i - 1][0] for i in tri) / 3 < 6 and 4 < sum(v[i - 1][1] for i in tri) / 3 < 6]
+    check(not inside_hole, "the file's hole is honoured: no triangle in (4,6)x(4,6)")
+    input_length = sum(math.dist(v[a - 1], v[b - 1]) for a, b, m in e if m == 1)
+    check(abs(input_length - 48.0) < 1e-9, ".edge: input subsegments (marker 1) add up to 40 + 8",
+          str(input_length))
+    # .vtu and .vtp hold the same mesh: validated above; the .vtk too.
+    # Sizes agree between formats (validator summaries).
+    summaries = {}
+    for ext in ("vtp", "vtu", "vtk", "node"):
+        line = validate(square, out("square." + ext), "--allow-missing", what="." + ext + " again")
+        summaries[ext] = line.split(",")[0:2]
+    check(len(set(tuple(x) for x in summaries.values())) == 1,
+          "all four formats hold the same number of triangles and vertices", str(summaries))
+    # Uppercase extension and a .node output base in a sub-directory.
+    os.makedirs(out("sub"), exist_ok=True)
+    mesh_ok(square, "-o", out("sub/UPPER.VTP"))
+    validate(square, out("sub/UPPER.VTP"), "--allow-missing", what="an upper-case .VTP")
+
+
+def write_ascii_vtp(path, points, lines):
+    with open(path, "w") as f:
+        f.write('<?xml version="1.0"?>\n<VTKFile type="PolyData" version="0.1" '
+                'byte_order="LittleEndian">\n<PolyData>\n'
+                '<Piece NumberOfPoints="%d" NumberOfVerts="0" NumberOfLines="%d" '
+                'NumberOfStrips="0" NumberOfPolys="0">\n' % (len(points), len(lines)))
+        f.write('<Points><DataArray type="Float64" NumberOfComponents="3" format="ascii">\n')
+        f.write(" ".join("%r %r %r" % p for p in points) + "\n</DataArray></Points>\n")
+        f.write('<Lines><DataArray type="Int64" Name="connectivity" format="ascii">\n')
+        f.write(" ".join(" ".join(str(i) for i in l) for l in lines) + "\n</DataArray>\n")
+        offsets, o = [], 0
+        for l in lines:
+            o += len(l)
+            offsets.append(o)
+        f.write('<DataArray type="Int64" Name="offsets" format="ascii">\n')
+        f.write(" ".join(str(x) for x in offsets) + "\n</DataArray></Lines>\n")
+        f.write("</Piece>\n</PolyData>\n</VTKFile>\n")
+
+
+def group_inputs():
+    # .vtk polydata (the bundled wedge).
+    wedge = data("wedge.vtk")
+    mesh_ok(wedge, "-o", out("wedge.node"))
+    validate(wedge, out("wedge.node"), "--allow-missing", what="wedge.vtk meshed and valid")
+    # .vtp polydata, a polyline square with a slit.
+    vtp = out("slit.vtp")
+    write_ascii_vtp(vtp, [(0, 0, 0), (3, 0, 0), (3, 2, 0), (0, 2, 0), (0.5, 1, 0), (2.5, 1.2, 0)],
+                    [[0, 1, 2, 3, 0], [4, 5]])
+    mesh_ok(vtp, "-o", out("slit.vtu"))
+    validate(vtp, out("slit.vtu"), what="a .vtp polyline input meshed, every point kept, valid")
+    # .node: points only, meshed over their hull.
+    node = data("split_pslg.node")
+    s = stats_of(node, "-o", out("points.node"))
+    check(s.get("InputPoints") == 4 and s.get("InputSegments") == 0,
+          ".node input: 4 points, no segment", str((s.get("InputPoints"), s.get("InputSegments"))))
+    validate(node, out("points.node"), what=".node input meshed, valid")
+    # A .poly listing zero vertices takes them from the .node beside it.
+    s = stats_of(data("split_pslg.poly"), "-o", out("split.vtp"))
+    check(s.get("InputPoints") == 4 and s.get("InputSegments") == 3,
+          ".poly with 0 vertices reads split_pslg.node", str((s.get("InputPoints"), s.get("InputSegments"))))
+    validate(data("split_pslg.poly"), out("split.vtp"), what="split .poly/.node meshed, valid")
+
+
+def group_errors():
+    missing = out("does-not-exist.poly")
+    expect_error([missing], 1, ["cannot open '%s'" % missing, "No such file or directory"],
+                 "missing file")
+    expect_error([out("missing.vtp")], 1, ["cannot open"], "missing .vtp")
+
+    def write(name, text):
+        path = out(name)
+        with open(path, "w") as f:
+            f.write(text)
+        return path
+
+    truncated = write("truncated.poly", "4 2 0 0\n1 0 0\n2 1 0\n")
+    expect_error([truncated], 1, ["truncated.poly:1:", "4 vertices"], "truncated .poly")
+    text = write("text.poly", "3 2 0 0\n1 0 0\n2 abc 0\n3 0 1\n0 0\n0\n")
+    expect_error([text], 1, ["text.poly:3:", "'abc'"], "text where a number belongs")
+    ids = write("ids.poly", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n2 0\n1 1 2\n2 2 40\n0\n")
+    expect_error([ids], 1, ["ids.poly:7:", "40", "does not exist"], "segment id out of range")
+    no_segments = write("nosegs.poly", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n")
+    expect_error([no_segments], 1, ["nosegs.poly:"], ".poly ending before its segments")
+    # Crossing segments with --no-resolve name both segments (0-based, file order).
+    expect_error([data("crossing.poly"), "--no-resolve"], 1,
+                 ["input segment 4", "input segment 5", "cross"], "crossing segments with --no-resolve")
+    # A NaN coordinate in a .vtk input.
+    # Binary legacy file: VTK's ASCII parser would refuse the word "nan" itself.
+    nan_vtk = out("nan.vtk")
+    with open(nan_vtk, "wb") as f:
+        f.write(b"# vtk DataFile Version 3.0\nNaN point\nBINARY\nDATASET POLYDATA\n"
+                b"POINTS 3 double\n")
+        f.write(struct.pack(">9d", 0, 0, 0, float("nan"), 1, 0, 1, 0, 0))
+        f.write(b"\nLINES 1 4\n")
+        f.write(struct.pack(">4i", 3, 0, 1, 2))
+        f.write(b"\n")
+    p = expect_error([nan_vtk], 1, ["point 1"], "NaN coordinate in a .vtk input")
+    check("nan" in p.stderr.lower() and "unrecognized" not in p.stderr.lower(),
+          "NaN coordinate: the mesher's message names the NaN", p.stderr)
+    not_polydata = write("grid.vtk", "# vtk DataFile Version 3.0\ngrid\nASCII\n"
+                         "DATASET STRUCTURED_POINTS\nDIMENSIONS 2 2 1\nORIGIN 0 0 0\nSPACING 1 1 1\n")
+    expect_error([not_polydata], 1, ["not a legacy VTK polydata"], ".vtk that is not polydata")
+    garbage = write("garbage.vtp", "this is not XML\n")
+    expect_error([garbage], 1, ["cannot read '%s': " % garbage, "XML"], "malformed .vtp")
+    # An unwritable output.
+    expect_error([data("square_hole.poly"), "-o", out("no/such/dir/x.vtp")], 1,
+                 ["cannot write '%s'" % out("no/such/dir/x.vtp")],
+                 "unwritable .vtp output")
+    expect_error([data("square_hole.poly"), "-o", out("no/such/dir/x.node")], 1, ["x"],
+                 "unwritable .node output")
+    expect_error([data("square_hole.poly"), "--svg", out("no/such/dir/x.svg")], 1, ["x.svg"],
+                 "unwritable --svg output")
+
+    square = data("square_hole.poly")
+    bad = [
+        ([], ["no input file"]),
+        ([square, square], ["more than one input"]),
+        ([square, "--frobnicate"], ["unknown option '--frobnicate'"]),
+        ([square, "--min-angle"], ["--min-angle needs a value"]),
+        ([square, "--min-angle", "abc"], ["--min-angle", "'abc'"]),
+        ([square, "--min-angle", "50"], ["--min-angle must be between 1 and 35"]),
+        ([square, "--min-angle", "0.5"], ["--min-angle must be between 1 and 35"]),
+        ([square, "--min-angle", "nan"], ["--min-angle"]),
+        ([square, "--gamma", "0.5"], ["--gamma must be between"]),
+        ([square, "--gamma", "100"], ["--gamma must be between"]),
+        ([square, "--gamma", "-1"], ["--gamma must be between"]),
+        ([square, "--min-angle", "30", "--gamma", "1"], ["--min-angle and --gamma"]),
+        ([square, "--domain", "everywhere"], ["--domain", "'everywhere'"]),
+        ([square, "--max-edge", "-1"], ["--max-edge"]),
+        ([square, "--max-edge", "inf"], ["--max-edge"]),
+        ([square, "--merge-tolerance", "-0.1"], ["--merge-tolerance"]),
+        ([square, "--max-steiner", "-3"], ["--max-steiner", "'-3'"]),
+        ([square, "--max-steiner", "2.5"], ["--max-steiner"]),
+        ([square, "--no-resolve=yes"], ["--no-resolve takes no value"]),
+        ([square, "-o", out("mesh.txt")], ["mesh.txt", ".vtp, .vtu, .vtk or .node"]),
+        ([out("input.txt")], ["input.txt", ".poly, .node, .vtp or .vtk"]),
+    ]
+    for args, fragments in bad:
+        expect_error(args, 2, fragments, "bad command line " + " ".join(
+            os.path.basename(a) if os.sep in a else a for a in args))
+    check(not os.path.exists(out("mesh.txt")), "a refused output is not created")
+
+
+def group_determinism():
+    inputs = [data("square_hole.poly"), data("crossing.poly"), data("wedge.vtk")]
+    for source in inputs:
+        name = os.path.splitext(os.path.basename(source))[0]
+        files = {}
+        for run_no in (1, 2):
+            d = out("run%d" % run_no)
+            os.makedirs(d, exist_ok=True)
+            for ext in ("vtp", "vtu", "vtk"):
+                mesh_ok(source, "-o", os.path.join(d, name + "." + ext), what="%s run %d .%s" % (name, run_no, ext))
+            mesh_ok(source, "-o", os.path.join(d, name + ".node"), "--svg",
+                    os.path.join(d, name + ".svg"), what="%s run %d .node + .svg" % (name, run_no))
+            files[run_no] = d
+        for ext in ("vtp", "vtu", "vtk", "node", "ele", "edge", "svg"):
+            a = os.path.join(files[1], name + "." + ext)
+            b = os.path.join(files[2], name + "." + ext)
+            check(read_bytes(a) == read_bytes(b), "%s.%s byte-identical over two runs" % (name, ext))
+
+
+def group_reference():
+    cases = [(data("square_hole.poly"), []), (data("crossing.poly"), []),
+             (data("wedge.vtk"), []), (data("square_hole.poly"), ["--domain", "box"])]
+    domain_number = {"auto": "0", "enclosed": "1", "hull": "2", "box": "3"}
+    for i, (source, options) in enumerate(cases):
+        name = "%s-%d" % (os.path.splitext(os.path.basename(source))[0], i)
+        cli_out = out(name + "-cli.vtp")
+        cxx_out = out(name + "-cxx.vtp")
+        mesh_ok(source, "-o", cli_out, *options)
+        helper_options = []
+        if options:
+            helper_options = ["--domain", domain_number[options[1]]]
+        p = subprocess.run([ARGS.helper, "reference", source, cxx_out] + helper_options,
+                           capture_output=True, text=True, timeout=600)
+        check(p.returncode == 0, "C++ pipeline on " + name, p.stderr[-500:])
+        check(read_bytes(cli_out) == read_bytes(cxx_out),
+              "osm-mesh .vtp == C++ reader -> mesher -> vtkXMLPolyDataWriter (%s)" % name)
+
+
+def group_realdata():
+    if not os.path.isdir(ARGS.shared):
+        print("skip: %s is absent" % ARGS.shared)
+        sys.exit(77)
+    names = sorted(n for n in os.listdir(ARGS.shared) if n.endswith(".poly"))
+    # The big ones are meshed by the core's own real-data test; keep this one quick.
+    small = [n for n in names if os.path.getsize(os.path.join(ARGS.shared, n)) < 400000]
+    if not small:
+        print("skip: no .poly in %s" % ARGS.shared)
+        sys.exit(77)
+    for n in small:
+        source = os.path.join(ARGS.shared, n)
+        base = out(os.path.splitext(n)[0])
+        s = stats_of(source, "-o", base + ".node")
+        if not s:
+            continue
+        v, t, _ = read_triangle_files(base)
+        check(len(t) == s.get("OutputTriangles"), n + ": --stats matches the .ele")
+        check(s.get("MaxAngleDeg", 999) <= 170.0, n + ": no angle above 170 degrees",
+              str(s.get("MaxAngleDeg")))
+        validate(source, base + ".node", "--allow-missing", what=n + ": mesh valid")
+
+
+def main():
+    global ARGS
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("group")
+    parser.add_argument("--cli", required=True)
+    parser.add_argument("--helper", required=True)
+    parser.add_argument("--data", required=True)
+    parser.add_argument("--shared", required=True)
+    parser.add_argument("--out", required=True)
+    ARGS = parser.parse_args()
+    groups = {
+        "help": group_help, "options": group_options, "formats": group_formats,
+        "inputs": group_inputs, "errors": group_errors, "determinism": group_determinism,
+        "reference": group_reference, "realdata": group_realdata,
+    }
+    if ARGS.group not in groups:
+        parser.error("unknown group " + ARGS.group)
+    shutil.rmtree(ARGS.out, ignore_errors=True)
+    os.makedirs(ARGS.out)
+    groups[ARGS.group]()
+    print("%d failure(s)" % len(FAILURES))
+    return 1 if FAILURES else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
