@@ -3,7 +3,7 @@
 //
 // Test helper for the osm-mesh tests and the consumer test.
 //
-//   osm_cli_helper validate INPUT MESH [--allow-missing] [--max-angle A]
+//   osm_cli_helper validate INPUT MESH [--allow-missing] [--max-angle A] [--area A]
 //     Reads the input PSLG (.poly/.node with the core's reader, .vtp/.vtk
 //     with VTK's readers: lines, polylines and polygon edges are segments)
 //     and a mesh (.vtp, .vtu, .vtk with VTK's readers, or Triangle's
@@ -11,7 +11,12 @@
 //     validator osm::validate. Input points are matched to mesh vertices by
 //     their coordinates; every input point must be present unless
 //     --allow-missing (holes and the enclosed domain leave points out).
+//     With --area, the triangles' total area must also be A (holes honoured).
 //     Prints one summary line; exit 0 iff the mesh is valid.
+//
+//   osm_cli_helper reader DATA_DIR OUT_DIR
+//     The output contract of vtkTrianglePolyReader (arrays, cells, pieces,
+//     errors) on Testing/Data files.
 //
 //   osm_cli_helper reference INPUT OUTPUT.vtp [--domain N] [--min-angle A]
 //     The C++ pipeline osm-mesh is meant to be: vtkTrianglePolyReader (or
@@ -19,12 +24,16 @@
 //     vtkXMLPolyDataWriter, timings left out of the field data.
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
+#include "vtkCellData.h"
 #include "vtkCellType.h"
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
 #include "vtkDataSet.h"
 #include "vtkFieldData.h"
 #include "vtkGenericCell.h"
 #include "vtkNew.h"
 #include "vtkOverlayStitchMesher.h"
+#include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataReader.h"
 #include "vtkSmartPointer.h"
@@ -38,6 +47,7 @@
 #include "Validate.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -234,6 +244,7 @@ int Validate(int argc, char* argv[])
     Die("usage: validate INPUT MESH [--allow-missing] [--max-angle A]");
   }
   bool allowMissing = false;
+  double expectedArea = -1.0;
   osm::ValidationOptions options;
   for (int i = 4; i < argc; ++i)
   {
@@ -245,6 +256,10 @@ int Validate(int argc, char* argv[])
     else if (arg == "--max-angle" && i + 1 < argc)
     {
       options.maxAngleDeg = std::atof(argv[++i]);
+    }
+    else if (arg == "--area" && i + 1 < argc)
+    {
+      expectedArea = std::atof(argv[++i]);
     }
     else
     {
@@ -304,6 +319,21 @@ int Validate(int argc, char* argv[])
   for (const std::string& e : report.errors)
   {
     std::cout << "  " << e << "\n";
+  }
+  if (expectedArea >= 0.0)
+  {
+    double area = 0.0;
+    for (const osm::Triangle& t : mesh.triangles)
+    {
+      const osm::Point& a = mesh.vertices[t[0]];
+      const osm::Point& b = mesh.vertices[t[1]];
+      const osm::Point& c = mesh.vertices[t[2]];
+      area += 0.5 * ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+    }
+    const bool same = std::abs(area - expectedArea) <= 1e-9 * std::max(1.0, expectedArea);
+    std::cout << (same ? "ok" : "FAIL") << ": area " << area << ", expected " << expectedArea
+              << "\n";
+    return report.ok && same ? 0 : 1;
   }
   return report.ok ? 0 : 1;
 }
@@ -374,6 +404,158 @@ int Reference(int argc, char* argv[])
   return writer->Write() && mesh->GetNumberOfPolys() > 0 ? 0 : 1;
 }
 
+/// Collects the error messages of an algorithm.
+class ErrorRecorder : public vtkCommand
+{
+public:
+  static ErrorRecorder* New() { return new ErrorRecorder; }
+  void Execute(vtkObject*, unsigned long, void* data) override
+  {
+    this->Messages.push_back(data ? static_cast<const char*>(data) : "");
+  }
+  std::vector<std::string> Messages;
+};
+
+int ReaderFailures = 0;
+
+void Expect(bool condition, const std::string& what)
+{
+  std::cout << (condition ? "ok   " : "FAIL ") << what << "\n";
+  ReaderFailures += condition ? 0 : 1;
+}
+
+std::vector<double> Values(vtkDataArray* array)
+{
+  std::vector<double> values;
+  if (array)
+  {
+    for (vtkIdType t = 0; t < array->GetNumberOfTuples(); ++t)
+    {
+      for (int c = 0; c < array->GetNumberOfComponents(); ++c)
+      {
+        values.push_back(array->GetComponent(t, c));
+      }
+    }
+  }
+  return values;
+}
+
+/// The reader's output contract (see vtkTrianglePolyReader.h), on the files
+/// in DATA_DIR and on bad files written into OUT_DIR.
+int ReaderContract(int argc, char* argv[])
+{
+  if (argc != 4)
+  {
+    Die("usage: reader DATA_DIR OUT_DIR");
+  }
+  const std::string dataDir = argv[2];
+  const std::string outDir = argv[3];
+
+  vtkNew<vtkTrianglePolyReader> reader;
+  vtkNew<ErrorRecorder> errors;
+  reader->AddObserver(vtkCommand::ErrorEvent, errors);
+  Expect(reader->GetNumberOfInputPorts() == 0, "no input port");
+
+  reader->SetFileName((dataDir + "/square_hole.poly").c_str());
+  reader->Update();
+  vtkPolyData* out = reader->GetOutput();
+  Expect(errors->Messages.empty(), "square_hole.poly read without error");
+  Expect(out->GetNumberOfPoints() == 9, "9 points");
+  double bounds[6];
+  out->GetBounds(bounds);
+  Expect(
+    bounds[0] == 0 && bounds[1] == 10 && bounds[4] == 0 && bounds[5] == 0, "x from 0 to 10, z = 0");
+  Expect(out->GetNumberOfLines() == 8, "8 line cells, one per segment");
+  Expect(out->GetNumberOfVerts() == 1, "1 vertex cell (the point on no segment)");
+  vtkNew<vtkGenericCell> cell;
+  out->GetCell(0, cell);
+  Expect(cell->GetCellType() == VTK_VERTEX && cell->GetPointId(0) == 8,
+    "the vertex cell holds point 8 (file vertex 9)");
+  out->GetCell(1, cell);
+  Expect(cell->GetCellType() == VTK_LINE && cell->GetPointId(0) == 0 && cell->GetPointId(1) == 1,
+    "the first segment is the line 0-1 (1-based file renumbered)");
+  out->GetCell(8, cell);
+  Expect(cell->GetPointId(0) == 7 && cell->GetPointId(1) == 4, "the last segment is 7-4");
+  vtkDataArray* pointMarker = out->GetPointData()->GetArray("PointMarker");
+  Expect(pointMarker && pointMarker->GetDataType() == VTK_INT &&
+      Values(pointMarker) == std::vector<double>{ 1, 1, 1, 1, 2, 2, 2, 2, 0 },
+    "PointMarker (int) from the file");
+  vtkDataArray* attribute = out->GetPointData()->GetArray("Attribute0");
+  Expect(attribute && attribute->GetDataType() == VTK_DOUBLE &&
+      Values(attribute) == std::vector<double>{ 0.5, 1.5, 2.5, 3.5, 4.5, 5.5, 6.5, 7.5, 8.5 },
+    "Attribute0 (double) from the file");
+  Expect(!out->GetPointData()->GetArray("Attribute1"), "no Attribute1");
+  vtkDataArray* segmentMarker = out->GetCellData()->GetArray("SegmentMarker");
+  Expect(segmentMarker && segmentMarker->GetDataType() == VTK_INT &&
+      Values(segmentMarker) == std::vector<double>{ 0, 1, 1, 1, 1, 2, 2, 2, 2 },
+    "SegmentMarker (int): 0 on the vertex cell, then the file's markers");
+  vtkDataArray* holes = out->GetFieldData()->GetArray("HolePoints");
+  Expect(holes && holes->GetDataType() == VTK_DOUBLE && holes->GetNumberOfComponents() == 3 &&
+      Values(holes) == std::vector<double>{ 5, 5, 0 },
+    "field data HolePoints: (5, 5, 0)");
+  vtkDataArray* regions = out->GetFieldData()->GetArray("RegionAttributes");
+  Expect(regions && regions->GetNumberOfComponents() == 4 &&
+      Values(regions) == std::vector<double>{ 1, 1, 7, 0.5 },
+    "field data RegionAttributes: (1, 1, 7, 0.5)");
+
+  // Parallel: piece 0 of 2 reads everything, piece 1 is empty with an empty HolePoints.
+  reader->UpdatePiece(1, 2, 0);
+  out = reader->GetOutput();
+  holes = out->GetFieldData()->GetArray("HolePoints");
+  Expect(out->GetNumberOfPoints() == 0 && out->GetNumberOfCells() == 0, "piece 1 of 2 is empty");
+  Expect(holes && holes->GetNumberOfComponents() == 3 && holes->GetNumberOfTuples() == 0,
+    "piece 1 of 2 still has HolePoints, with 0 tuples");
+  reader->UpdatePiece(0, 2, 0);
+  out = reader->GetOutput();
+  Expect(out->GetNumberOfPoints() == 9 && out->GetNumberOfLines() == 8,
+    "piece 0 of 2 holds the whole file");
+
+  // A .node file: points only, no markers, no holes.
+  reader->SetFileName((dataDir + "/split_pslg.node").c_str());
+  reader->UpdatePiece(0, 1, 0);
+  out = reader->GetOutput();
+  holes = out->GetFieldData()->GetArray("HolePoints");
+  Expect(
+    out->GetNumberOfPoints() == 4 && out->GetNumberOfVerts() == 4 && out->GetNumberOfLines() == 0,
+    ".node: 4 points, 4 vertex cells, no line");
+  Expect(
+    !out->GetPointData()->GetArray("PointMarker") && !out->GetCellData()->GetArray("SegmentMarker"),
+    ".node without markers: no marker arrays");
+  Expect(holes && holes->GetNumberOfTuples() == 0 && holes->GetNumberOfComponents() == 3,
+    ".node: HolePoints present, 0 tuples");
+  Expect(errors->Messages.empty(), "no error so far");
+
+  // A malformed file: the core's "file:line: reason" and an empty output.
+  const std::string bad = outDir + "/reader-bad.poly";
+  {
+    std::ofstream f(bad);
+    f << "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n1 0\n1 1 9\n0\n";
+  }
+  reader->SetFileName(bad.c_str());
+  reader->Update();
+  out = reader->GetOutput();
+  Expect(!errors->Messages.empty() &&
+      errors->Messages.front().find("reader-bad.poly:6: segment 1 refers to vertex 9") !=
+        std::string::npos,
+    "malformed file: error 'reader-bad.poly:6: segment 1 refers to vertex 9 ...'");
+  Expect(
+    out->GetNumberOfPoints() == 0 && out->GetNumberOfCells() == 0, "malformed file: empty output");
+
+  Expect(reader->CanReadFile((dataDir + "/square_hole.poly").c_str()) == 1,
+    "CanReadFile: an existing .poly");
+  Expect(reader->CanReadFile((dataDir + "/split_pslg.node").c_str()) == 1,
+    "CanReadFile: an existing .node");
+  Expect(reader->CanReadFile((dataDir + "/wedge.vtk").c_str()) == 0, "CanReadFile: not a .vtk");
+  Expect(reader->CanReadFile((dataDir + "/missing.poly").c_str()) == 0,
+    "CanReadFile: not a missing file");
+  std::ostringstream printed;
+  reader->Print(printed);
+  Expect(printed.str().find("FileName: " + bad) != std::string::npos, "PrintSelf shows FileName");
+
+  std::cout << ReaderFailures << " failure(s)\n";
+  return ReaderFailures == 0 ? 0 : 1;
+}
+
 } // namespace
 
 int main(int argc, char* argv[])
@@ -387,5 +569,9 @@ int main(int argc, char* argv[])
   {
     return Reference(argc, argv);
   }
-  Die("usage: osm_cli_helper validate|reference ...");
+  if (command == "reader")
+  {
+    return ReaderContract(argc, argv);
+  }
+  Die("usage: osm_cli_helper validate|reference|reader ...");
 }
