@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <ctime>
 #include <fstream>
 #include <functional>
 #include <sstream>
@@ -66,20 +67,33 @@ inline bool loadInput(const std::string& spec, osm::Pslg& pslg, std::string& err
 
 // ---------------------------------------------------------------- time, memory
 
+/// CPU time of the whole process (every thread), in seconds.
+inline double processCpuSeconds()
+{
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+/// Wall time and process CPU time since construction. On a loaded machine the CPU
+/// time is the steadier figure: it does not count the time the process waited for
+/// a core (it still feels the caches and memory bandwidth that others share).
 class Stopwatch
 {
 public:
   Stopwatch()
     : t0(std::chrono::steady_clock::now())
-  {
-  }
+    , cpu0(processCpuSeconds())
+  {}
   double seconds() const
   {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }
+  double cpuSeconds() const { return processCpuSeconds() - cpu0; }
 
 private:
   std::chrono::steady_clock::time_point t0;
+  double cpu0;
 };
 
 /// A field of /proc/self/status in bytes (VmRSS, VmHWM), or -1.
@@ -139,11 +153,11 @@ struct Quality
 {
   double minAngleDeg = 0.0;
   double maxAngleDeg = 0.0;
-  std::size_t degenerate = 0;       ///< triangles with a zero area (in double arithmetic)
-  std::size_t usedVertices = 0;     ///< vertices referenced by at least one triangle
-  std::size_t missingSegments = 0;  ///< not a chain of mesh edges, though inside the domain
-  std::size_t outsideSegments = 0;  ///< an endpoint lies outside the tool's domain
-  std::size_t missingVertices = 0;  ///< input points inside the domain that are not mesh vertices
+  std::size_t degenerate = 0;      ///< triangles with a zero area (in double arithmetic)
+  std::size_t usedVertices = 0;    ///< vertices referenced by at least one triangle
+  std::size_t missingSegments = 0; ///< not a chain of mesh edges, though inside the domain
+  std::size_t outsideSegments = 0; ///< an endpoint lies outside the tool's domain
+  std::size_t missingVertices = 0; ///< input points inside the domain that are not mesh vertices
 };
 
 /// Angle at b of triangle abc in degrees, from atan2(|cross|, dot): accurate near 0 and 180.
@@ -353,13 +367,14 @@ struct RunOutput
 {
   bool ok = true;
   std::string error;
-  double seconds = 0.0; ///< the meshing call only
-  MeshOut mesh;         ///< filled after the timed call (conversion not timed)
+  double seconds = 0.0;       ///< the meshing call only, wall time
+  double cpuSeconds = 0.0;    ///< the same call, process CPU time
+  MeshOut mesh;               ///< filled after the timed call (conversion not timed)
   std::vector<char> inDomain; ///< per input point, see inspect(); empty: all
   std::size_t triangles = 0;
   std::size_t vertices = 0;
   MemoryProbe memory;
-  JsonLine extra; ///< tool-specific figures (phase times, ...)
+  JsonLine extra;                ///< tool-specific figures (phase times, ...)
   std::vector<std::string> args; ///< the driver's own options (after the input)
   bool has(const std::string& arg) const
   {
@@ -404,6 +419,7 @@ inline int driverMain(int argc, char** argv, const char* tool,
   if (!out.ok)
     line.add("error", out.error);
   line.add("seconds", out.seconds)
+    .add("cpu_seconds", out.cpuSeconds)
     .add("out_vertices", out.vertices)
     .add("out_triangles", out.triangles)
     .add("base_rss", out.memory.baseRss)

@@ -8,18 +8,20 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Cdt = CGAL::Constrained_Delaunay_triangulation_2<K, CGAL::Default, CGAL::Exact_predicates_tag>;
+using Cdt =
+  CGAL::Constrained_Delaunay_triangulation_2<K, CGAL::Default, CGAL::Exact_predicates_tag>;
 
 int main(int argc, char** argv)
 {
-  return osmbench::driverMain(argc, argv, "cgal-cdt",
-    [](const osm::Pslg& input, osmbench::RunOutput& out, bool wantMesh) {
+  return osmbench::driverMain(
+    argc, argv, "cgal-cdt", [](const osm::Pslg& input, osmbench::RunOutput& out, bool wantMesh) {
       const osmbench::CgalInput<K::Point_2> in(input);
       Cdt cdt;
       out.memory.before();
       osmbench::Stopwatch clock;
       osmbench::insertAll(cdt, in);
       out.seconds = clock.seconds();
+      out.cpuSeconds = clock.cpuSeconds();
       out.memory.after();
       out.vertices = cdt.number_of_vertices();
       out.triangles = cdt.number_of_faces();

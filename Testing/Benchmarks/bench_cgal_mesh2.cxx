@@ -92,8 +92,8 @@ bool markDomain(Cdt& cdt, const std::vector<osm::Point>& holes)
 
 int main(int argc, char** argv)
 {
-  return osmbench::driverMain(argc, argv, "cgal-mesh2",
-    [](const osm::Pslg& input, osmbench::RunOutput& out, bool wantMesh) {
+  return osmbench::driverMain(
+    argc, argv, "cgal-mesh2", [](const osm::Pslg& input, osmbench::RunOutput& out, bool wantMesh) {
       const osmbench::CgalInput<K::Point_2> in(input);
       Cdt cdt;
       out.memory.before();
@@ -103,6 +103,7 @@ int main(int argc, char** argv)
       const bool enclosed = markDomain(cdt, input.holes);
       CGAL::refine_Delaunay_mesh_2(cdt, Criteria(), /*domain_specified=*/true);
       out.seconds = clock.seconds();
+      out.cpuSeconds = clock.cpuSeconds();
       out.memory.after();
       out.extra.add("cdt_seconds", cdtSeconds)
         .add("domain", enclosed ? "enclosed" : "hull")

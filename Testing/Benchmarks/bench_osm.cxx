@@ -6,8 +6,8 @@
 
 int main(int argc, char** argv)
 {
-  return osmbench::driverMain(argc, argv, "osm",
-    [](const osm::Pslg& input, osmbench::RunOutput& out, bool wantMesh) {
+  return osmbench::driverMain(
+    argc, argv, "osm", [](const osm::Pslg& input, osmbench::RunOutput& out, bool wantMesh) {
       osm::Options options;
       options.keepOverlay = false;
       options.keepEdges = false;
@@ -15,6 +15,7 @@ int main(int argc, char** argv)
       osmbench::Stopwatch clock;
       osm::Result result = osm::mesh(input, options);
       out.seconds = clock.seconds();
+      out.cpuSeconds = clock.cpuSeconds();
       out.memory.after();
       out.ok = result.ok;
       out.error = result.error;

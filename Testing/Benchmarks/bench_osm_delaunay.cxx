@@ -15,6 +15,7 @@ int main(int argc, char** argv)
       osmbench::Stopwatch clock;
       osm::Triangulation t = osm::delaunayTriangulation(input.points, vertexOf);
       out.seconds = clock.seconds();
+      out.cpuSeconds = clock.cpuSeconds();
       out.memory.after();
       // Triangles touching the four box corners (vertices 0..3) are not part of
       // the triangulation of the points.

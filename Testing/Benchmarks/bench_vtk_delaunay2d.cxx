@@ -29,6 +29,7 @@ int main(int argc, char** argv)
       osmbench::Stopwatch clock;
       delaunay->Update();
       out.seconds = clock.seconds();
+      out.cpuSeconds = clock.cpuSeconds();
       out.memory.after();
       vtkPolyData* result = delaunay->GetOutput();
       out.triangles = osmbench::countTriangles(result);

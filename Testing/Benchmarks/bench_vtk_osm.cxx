@@ -13,8 +13,8 @@
 
 int main(int argc, char** argv)
 {
-  return osmbench::driverMain(argc, argv, "vtk-osm",
-    [](const osm::Pslg& input, osmbench::RunOutput& out, bool wantMesh) {
+  return osmbench::driverMain(
+    argc, argv, "vtk-osm", [](const osm::Pslg& input, osmbench::RunOutput& out, bool wantMesh) {
       auto lines = osmbench::toPolyData(input, true);
       vtkNew<vtkOverlayStitchMesher> mesher;
       mesher->SetInputData(lines);
@@ -27,6 +27,7 @@ int main(int argc, char** argv)
       osmbench::Stopwatch clock;
       mesher->Update();
       out.seconds = clock.seconds();
+      out.cpuSeconds = clock.cpuSeconds();
       out.memory.after();
       vtkPolyData* result = mesher->GetOutput();
       out.triangles = osmbench::countTriangles(result);

@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# The benchmark suite of issue 5, in one command (from anywhere):
+#
+#   bash Testing/Benchmarks/run.sh [run_benchmarks.py options, e.g. --quick]
+#
+# 1. configures build-bench/ in the VTK-only mode (which gives the
+#    vtkOverlayStitchMesher driver) with -DOSM_BUILD_BENCHMARKS=ON, the osm-mesh
+#    command-line tool when the tree has it, and no tests;
+# 2. builds the drivers (bench/bench_*) and osm-mesh;
+# 3. runs Testing/Benchmarks/run_benchmarks.py, which writes BENCHMARKS.md at the
+#    top level and Testing/Benchmarks/benchmarks.png (about 40 minutes on 2 cores).
+#
+# Needs: cmake, ninja, a C++17 compiler, libcgal-dev (CGAL drivers), ParaView's
+# VTK (paraview-dev), valgrind (the profile), python3-matplotlib (the plot),
+# GNU time (/usr/bin/time, the osm-mesh memory figure). None of them is needed
+# by the project itself; missing ones only drop that part of the suite.
+set -euo pipefail
+
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
+build="${OSM_BENCH_BUILD:-$root/build-bench}"
+vtk_dir="${VTK_DIR:-/usr/lib/x86_64-linux-gnu/cmake/paraview-5.11/vtk}"
+
+cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+  -DOSM_BUILD_PARAVIEW_PLUGIN=OFF -DVTK_DIR="$vtk_dir" \
+  -DBUILD_TESTING=OFF -DOSM_BUILD_BENCHMARKS=ON
+cmake --build "$build" --parallel 2
+
+exec /usr/bin/python3 "$root/Testing/Benchmarks/run_benchmarks.py" --build "$build" "$@"

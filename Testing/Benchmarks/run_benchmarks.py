@@ -1,0 +1,1237 @@
+#!/usr/bin/python3
+"""Run the OSM benchmark suite and write BENCHMARKS.md and benchmarks.png.
+
+Builds nothing: it runs the drivers found in <build>/bench (see CMakeLists.txt
+here; Testing/Benchmarks/run.sh configures and builds them). Every tool runs on
+every input in its own child process with a time limit, so that a hang or a
+crash of any tool is recorded as such and the suite goes on. The first run of a
+(tool, input) pair inspects the output (angles, conformity); the repeats only
+time it, and the table gives the median.
+
+    run_benchmarks.py [--build DIR] [--data DIR] [--quick] [--report-only]
+
+Python standard library only, plus matplotlib for the plot (skipped, with a
+note, if it is missing).
+"""
+
+import argparse
+import datetime
+import json
+import os
+import platform
+import resource
+import shutil
+import signal
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
+
+# name: (executable, extra arguments, label in tables and the plot)
+TOOLS = {
+    "osm": ("bench_osm", [], "OSM core"),
+    "vtk-osm": ("bench_vtk_osm", [], "OSM VTK filter"),
+    "cgal-mesh2": ("bench_cgal_mesh2", [], "CGAL Mesh_2 (0.125)"),
+    "cgal-cdt": ("bench_cgal_cdt", [], "CGAL CDT alone"),
+    "osm-delaunay": ("bench_osm_delaunay", [], "OSM Delaunay of points"),
+    "vtk-delaunay2d": ("bench_vtk_delaunay2d", [], "vtkDelaunay2D"),
+    "osm-mesh": ("osm-mesh", [], "osm-mesh CLI (end to end)"),
+}
+TOOL_ORDER = list(TOOLS)
+
+# The generated families and their sizes (input vertices). Caps, so that the
+# whole suite stays affordable on a shared 2-core machine (about 20 minutes):
+# spread stops at 3e4 (at 1e5 OSM made 45 million triangles, 8.4 GB, 122 s,
+# and Mesh_2 took 100 s); vtkDelaunay2D stops at 2e5 (1e5 segments, 40 s);
+# the VTK filter at 1e6.
+FAMILIES = {
+    "random-segments": [1000, 10000, 100000, 200000, 1200000],
+    "points": [1000, 10000, 100000, 1000000],
+    "spread": [1000, 3000, 10000],
+}
+QUICK_FAMILIES = {
+    "random-segments": [1000, 10000],
+    "points": [1000, 10000],
+    "spread": [1000],
+}
+SEED = 1
+CAPS = {  # tool: largest generated input (vertices) it runs on
+    "vtk-delaunay2d": 200000,
+    "vtk-osm": 1200000,
+}
+VTK_OSM_FAMILIES = ("random-segments",)  # the filter's overhead needs one family only
+CLI_FAMILIES = ("random-segments",)      # osm-mesh end to end: the same, plus the real inputs
+
+TIMEOUT = 120.0        # CPU seconds per run (RLIMIT_CPU); the wall limit is WALL_FACTOR times it
+WALL_FACTOR = 6.0      # the machine is shared: a run may wait for a core that long
+RUNS_FAST = 5          # runs when one takes under FAST_SECONDS (CPU)
+RUNS = 3               # when one takes under SLOW_SECONDS
+RUNS_SLOW = 1          # otherwise: the checked run alone
+FAST_SECONDS = 1.0
+SLOW_SECONDS = 10.0
+REPEAT_BUDGET = 120.0  # no further repeat once runs so far + one more would exceed this (wall)
+MEMORY_LIMIT = 12 << 30  # address-space limit of each child (the machine is shared)
+
+
+# ----------------------------------------------------------------------------- running
+
+CPU_LIMIT = int(TIMEOUT)
+
+
+def limit_child():
+    resource.setrlimit(resource.RLIMIT_AS, (MEMORY_LIMIT, MEMORY_LIMIT))
+    # SIGXCPU at CPU_LIMIT seconds of CPU time; SIGKILL a little later.
+    resource.setrlimit(resource.RLIMIT_CPU, (CPU_LIMIT, CPU_LIMIT + 5))
+    os.setsid()  # its own process group, so a time-out kills all of it
+
+
+GNU_TIME = "/usr/bin/time"
+
+
+def spawn(cmd, timeout):
+    """Runs cmd in its own process group under GNU time (when it is there) with a
+    time limit. Returns (status, returncode, stdout, stderr, wall, maxrss bytes or None)."""
+    rss_file = None
+    if os.access(GNU_TIME, os.X_OK):
+        fd, rss_file = tempfile.mkstemp(prefix="osm-bench-rss-")
+        os.close(fd)
+        cmd = [GNU_TIME, "-f", "%M %U %S", "-o", rss_file] + cmd
+    t0 = time.monotonic()
+    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                            preexec_fn=limit_child, text=True)
+    status = "done"
+    try:
+        out, err = proc.communicate(timeout=timeout * WALL_FACTOR)
+    except subprocess.TimeoutExpired:
+        os.killpg(proc.pid, signal.SIGKILL)
+        out, err = proc.communicate()
+        status = "timeout"
+    wall = time.monotonic() - t0
+    maxrss = None
+    cpu = None
+    code = proc.returncode
+    if rss_file:
+        try:
+            with open(rss_file) as f:
+                text = f.read().split()
+            os.unlink(rss_file)
+            # GNU time reports "Command terminated by signal N" before the figures.
+            if len(text) >= 3 and text[-3].isdigit():
+                maxrss = int(text[-3]) * 1024
+                cpu = float(text[-2]) + float(text[-1])
+            if "signal" in text:
+                code = -int(text[text.index("signal") + 1])
+        except (OSError, ValueError, IndexError):
+            pass
+    if code == -signal.SIGXCPU or (code == -signal.SIGKILL and cpu and cpu >= CPU_LIMIT):
+        status = "timeout"
+    return status, code, out, err, wall, (maxrss, cpu)
+
+
+def run_once(exe, spec, args, timeout):
+    """One child process. Returns a dict: the driver's JSON plus status, wall."""
+    if os.path.basename(exe) == "osm-mesh":
+        return run_cli(exe, spec, args, timeout)
+    load = os.getloadavg()[0]
+    status, code, out, err, wall, (maxrss, _) = spawn([exe, spec] + args, timeout)
+    if status == "timeout":
+        return {"status": "timeout", "wall": wall, "load": load,
+                "detail": "no result within %d CPU s (or %d s wall)" % (
+                    timeout, timeout * WALL_FACTOR)}
+    record = None
+    for line in out.splitlines():
+        line = line.strip()
+        if line.startswith("{"):
+            try:
+                record = json.loads(line)
+            except ValueError:
+                pass
+    if code < 0:
+        name = signal.Signals(-code).name
+        return {"status": "crash", "wall": wall, "load": load,
+                "detail": "killed by %s; %s" % (name, tail(err))}
+    if record is None:
+        return {"status": "crash", "wall": wall, "load": load,
+                "detail": "exit %d, no result; %s" % (code, tail(err))}
+    record["status"] = "ok" if record.get("ok") else "error"
+    if not record.get("ok"):
+        record["detail"] = record.get("error", "")
+    record["wall"] = wall
+    record["load"] = load
+    if maxrss is not None:
+        record["process_maxrss"] = maxrss
+    warnings = [l for l in err.splitlines() if "Warning" in l or "ERROR" in l]
+    if warnings:
+        record["stderr_warnings"] = len(warnings)
+        record["stderr_example"] = warnings[0][:200]
+    return record
+
+
+# The osm-mesh command line, end to end: reading the .poly file, meshing, writing
+# the mesh. It has no JSON line of its own: the wall time of the process, GNU
+# time's peak RSS of the whole process, and the counts read back from what it wrote.
+CLI_WORK = None  # folder for generated .poly inputs and the outputs (set by run_suite)
+
+
+def cli_command(exe, poly, outdir):
+    return [exe, poly, "-o", os.path.join(outdir, "mesh.vtp"), "--stats"]
+
+
+def poly_for(spec):
+    """The input as a .poly file: a real input as it is, a generated one written once."""
+    if spec.lower().endswith(".poly"):
+        return spec
+    path = os.path.join(CLI_WORK, spec.replace(":", "_") + ".poly")
+    if not os.path.exists(path):
+        maker = os.path.join(os.path.dirname(CLI_WORK), "bench_make_poly")
+        subprocess.run([maker, spec, path + ".tmp"], check=True)
+        os.replace(path + ".tmp", path)
+    return path
+
+
+def cli_counts(outdir, stdout):
+    """(vertices, triangles) from what osm-mesh wrote: its statistics JSON if it
+    printed one, else the headers of .node/.ele or .vtp/.vtk files."""
+    try:
+        d = json.loads(stdout)
+        if isinstance(d, dict) and "OutputTriangles" in d:
+            return d.get("OutputVertices"), d["OutputTriangles"]
+    except ValueError:
+        pass
+    for line in stdout.splitlines():
+        line = line.strip()
+        if line.startswith("{"):
+            try:
+                d = json.loads(line)
+            except ValueError:
+                continue
+            for vk, tk in (("outputVertices", "outputTriangles"),
+                           ("OutputVertices", "OutputTriangles"),
+                           ("output_vertices", "output_triangles")):
+                if tk in d:
+                    return d.get(vk), d[tk]
+    verts = tris = None
+    for name in os.listdir(outdir):
+        path = os.path.join(outdir, name)
+        try:
+            if name.endswith(".ele") or name.endswith(".node"):
+                with open(path) as f:
+                    for line in f:
+                        if line.strip() and not line.lstrip().startswith("#"):
+                            n = int(line.split()[0])
+                            break
+                if name.endswith(".ele"):
+                    tris = n
+                else:
+                    verts = n
+            elif name.endswith(".vtp"):
+                with open(path, "rb") as f:
+                    head = f.read(4096).decode("latin-1")
+                import re
+                m = re.search(r'NumberOfPoints="(\d+)"', head)
+                k = re.search(r'NumberOfPolys="(\d+)"', head)
+                if m and k:
+                    verts, tris = int(m.group(1)), int(k.group(1))
+        except (OSError, ValueError, IndexError):
+            pass
+    return verts, tris
+
+
+def run_cli(exe, spec, args, timeout):
+    load = os.getloadavg()[0]
+    record = {"tool": "osm-mesh", "input": spec, "load": load}
+    try:
+        poly = poly_for(spec)
+    except (OSError, subprocess.CalledProcessError) as e:
+        record.update(status="error", wall=0.0, detail="writing the input: %s" % e)
+        return record
+    outdir = tempfile.mkdtemp(prefix="out-", dir=CLI_WORK)
+    try:
+        status, code, out, err, wall, (maxrss, cpu) = spawn(
+            cli_command(exe, poly, outdir), timeout)
+        record["wall"] = wall
+        if status == "timeout":
+            record.update(status="timeout", detail="no result within %d CPU s (or %d s wall)" % (
+                timeout, timeout * WALL_FACTOR))
+            return record
+        if code < 0:
+            record.update(status="crash", detail="killed by %s; %s" % (
+                signal.Signals(-code).name, tail(err)))
+            return record
+        if code != 0:
+            record.update(status="error", detail="exit %d; %s" % (code, tail(err)))
+            return record
+        verts, tris = cli_counts(outdir, out)
+        if not tris:
+            record.update(status="error", detail="no triangle count in its output")
+            return record
+        record.update(status="ok", ok=True, seconds=wall, cpu_seconds=cpu, out_vertices=verts,
+                      out_triangles=tris, process_maxrss=maxrss,
+                      input_bytes=os.path.getsize(poly))
+        return record
+    finally:
+        shutil.rmtree(outdir, ignore_errors=True)
+
+
+def tail(text, n=200):
+    text = " ".join(text.split())
+    return text[-n:] if text else "no error output"
+
+
+def measure(exe, spec, args, timeout):
+    """First run with the output check, then timed repeats. Returns one result."""
+    first = run_once(exe, spec, args, timeout)
+    result = {"first": first, "seconds": [], "cpu": [], "phases": []}
+    if first["status"] != "ok":
+        return result
+    result["seconds"].append(first["seconds"])
+    result["cpu"].append(first.get("cpu_seconds"))
+    result["phases"].append(phases_of(first))
+    c = first.get("cpu_seconds") or first["seconds"]
+    target = RUNS_FAST if c < FAST_SECONDS else RUNS if c < SLOW_SECONDS else RUNS_SLOW
+    spent = first["wall"]
+    last = first["wall"]
+    core = [first["core_seconds"]] if "core_seconds" in first else None
+    while len(result["seconds"]) < target and spent + last <= REPEAT_BUDGET:
+        again = run_once(exe, spec, args + ["--no-check"], timeout)
+        spent += again["wall"]
+        last = again["wall"]
+        if again["status"] != "ok":
+            result["repeat_failure"] = again
+            break
+        result["seconds"].append(again["seconds"])
+        result["cpu"].append(again.get("cpu_seconds"))
+        result["phases"].append(phases_of(again))
+        if core is not None:
+            core.append(again["core_seconds"])
+    if core is not None:
+        result["core_seconds"] = core
+    return result
+
+
+def phases_of(record):
+    keys = ["phase_clean", "phase_overlay", "phase_stitch", "phase_complete",
+            "phase_domain", "phase_total"]
+    return {k: record[k] for k in keys if k in record}
+
+
+def inputs(data_dir, families):
+    """(spec, class, display name, vertices or None) for every input."""
+    real, generated = [], []
+    if data_dir and os.path.isdir(data_dir):
+        for name in sorted(os.listdir(data_dir)):
+            if name.lower().endswith(".poly"):
+                real.append((os.path.join(data_dir, name), "real", name, None))
+    for family, sizes in families.items():
+        for n in sizes:
+            generated.append(("%s:%d:%d" % (family, n, SEED), family,
+                              "%s %s" % (family, human(n)), n))
+    # The first family (random segments: scaling, 1e5 segments, 1e7 triangles)
+    # first, then the real inputs, then the rest: a suite cut short still has
+    # the figures the targets need.
+    first = [g for g in generated if g[1] == list(families)[0]] if families else []
+    return first + real + [g for g in generated if g not in first]
+
+
+def tool_applies(tool, cls, n):
+    if tool == "vtk-osm" and cls not in ("real",) + VTK_OSM_FAMILIES:
+        return False
+    if tool == "osm-mesh" and cls not in ("real",) + CLI_FAMILIES:
+        return False
+    cap = CAPS.get(tool)
+    if cap is not None and n is not None and n > cap:
+        return False
+    return True
+
+
+def run_suite(args):
+    bench = os.path.join(args.build, "bench")
+    families = QUICK_FAMILIES if args.quick else FAMILIES
+    global CLI_WORK, CPU_LIMIT
+    CPU_LIMIT = int(args.timeout)
+    found = {t: os.path.join(bench, TOOLS[t][0]) for t in TOOL_ORDER
+             if os.access(os.path.join(bench, TOOLS[t][0]), os.X_OK)}
+    cli = find_cli(args.build)
+    if cli and os.access(os.path.join(bench, "bench_make_poly"), os.X_OK):
+        found["osm-mesh"] = cli
+        CLI_WORK = os.path.join(bench, "cli-work")
+        os.makedirs(CLI_WORK, exist_ok=True)
+    missing = [t for t in TOOL_ORDER if t not in found]
+    if args.tools:
+        wanted = args.tools.split(",")
+        found = {t: x for t, x in found.items() if t in wanted}
+    if "osm" not in found:
+        sys.exit("no bench_osm in %s: build with -DOSM_BUILD_BENCHMARKS=ON first "
+                 "(Testing/Benchmarks/run.sh)" % bench)
+    data_dir = args.data if os.path.isdir(args.data) else None
+    if data_dir is None:
+        print("note: %s is absent: real inputs skipped" % args.data)
+    results = []
+    failed_at = {}  # (tool, class): size at which it timed out or crashed
+    started = time.monotonic()
+    load_start = os.getloadavg()
+    print("load average at start: %.2f %.2f %.2f" % load_start, flush=True)
+    meta = {
+        "date": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC"),
+        "commit": git_commit(),
+        "dirty": git_dirty(),
+        "load_start": load_start,
+        "load_end": None,
+        "cli": cli,
+        "cpu": cpu_name(),
+        "cores": os.cpu_count(),
+        "memory_gib": round(os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES") / 2**30),
+        "python": platform.python_version(),
+        "suite_seconds": 0.0,
+        "quick": args.quick,
+        "missing_tools": missing,
+        "data_dir": args.data,
+        "data_present": data_dir is not None,
+        "timeout": args.timeout,
+        "families": families,
+        "caps": CAPS,
+    }
+    for spec, cls, name, n in inputs(data_dir, families):
+        for tool in TOOL_ORDER:
+            if tool not in found or not tool_applies(tool, cls, n):
+                continue
+            entry = {"tool": tool, "input": spec, "class": cls, "name": name, "n": n}
+            if (tool, cls) in failed_at and cls != "real":
+                entry["skipped"] = "%s at %s input vertices" % (
+                    failed_at[(tool, cls)][1], human(failed_at[(tool, cls)][0]))
+                results.append(entry)
+                print("%-15s %-28s skipped (%s)" % (tool, name, entry["skipped"]), flush=True)
+                continue
+            r = measure(found[tool], spec, TOOLS[tool][1], args.timeout)
+            entry.update(r)
+            status = r["first"]["status"]
+            if status in ("timeout", "crash") and n is not None:
+                failed_at[(tool, cls)] = (n, status)
+            results.append(entry)
+            if args.partial:
+                meta["suite_seconds"] = time.monotonic() - started
+                meta["load_end"] = os.getloadavg()
+                with open(args.partial, "w") as f:
+                    json.dump({"meta": meta, "results": results, "partial": True}, f)
+            if status == "ok":
+                print("%-15s %-28s %9.4f s CPU %9.4f s wall  x%d  %10d triangles" % (
+                    tool, name, median_seconds(entry), median_wall(entry), len(r["seconds"]),
+                    r["first"]["out_triangles"]), flush=True)
+            else:
+                print("%-15s %-28s %s: %s" % (tool, name, status,
+                                               r["first"].get("detail", "")), flush=True)
+    meta["suite_seconds"] = time.monotonic() - started
+    meta["load_end"] = os.getloadavg()
+    return {"meta": meta, "results": results}
+
+
+def find_cli(build):
+    """The osm-mesh executable of the build, if the tree has the command line tool."""
+    for sub in ("bin", os.path.join("Filters", "CLI"), "."):
+        path = os.path.join(build, sub, "osm-mesh")
+        if os.access(path, os.X_OK) and os.path.isfile(path):
+            return path
+    for dirpath, _, files in os.walk(build):
+        if "osm-mesh" in files and os.access(os.path.join(dirpath, "osm-mesh"), os.X_OK):
+            return os.path.join(dirpath, "osm-mesh")
+    return None
+
+
+def git_dirty():
+    """Uncommitted changes to the sources that the drivers compile (Filters/)."""
+    try:
+        out = subprocess.run(["git", "-C", ROOT, "status", "--short", "--", "Filters"],
+                             capture_output=True, text=True, check=True).stdout
+        return [l[3:] + (" (new)" if l.startswith("??") else "")
+                for l in out.splitlines() if l[:2].strip() in ("M", "MM", "A", "AM", "??")]
+    except (OSError, subprocess.CalledProcessError):
+        return []
+
+
+def git_commit():
+    try:
+        return subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"],
+                              capture_output=True, text=True, check=True).stdout.strip()
+    except (OSError, subprocess.CalledProcessError):
+        return "unknown"
+
+
+def cpu_name():
+    try:
+        with open("/proc/cpuinfo") as f:
+            for line in f:
+                if line.startswith("model name"):
+                    return line.split(":", 1)[1].strip()
+    except OSError:
+        pass
+    return platform.processor() or "unknown"
+
+
+# ----------------------------------------------------------------------------- profile
+
+PHASE_FUNCTIONS = [  # (phase, function whose inclusive cost is the phase's)
+    ("clean", "osm::cleanPslg"),
+    ("overlay", "osm::buildOverlay"),
+    ("stitch: compact", "osm::compactOverlay"),
+    ("stitch: walk", "osm::walkSegments"),
+    ("stitch: split", "osm::stitch("),
+    ("complete", "osm::complete("),
+    ("domain", "osm::carveDomain"),
+]
+PROFILE_INPUT = "random-segments:30000:1"
+
+
+def run_profile(args):
+    """callgrind on a smaller run (perf has no hardware counters on this machine)."""
+    exe = os.path.join(args.build, "bench", "bench_osm")
+    note = {"input": PROFILE_INPUT}
+    perf = shutil.which("perf")
+    if perf:
+        p = subprocess.run([perf, "stat", "-x,", "-e", "instructions", "true"],
+                           capture_output=True, text=True)
+        note["perf_instructions"] = "<not supported>" not in p.stderr and p.returncode == 0
+    else:
+        note["perf_instructions"] = False
+    if not shutil.which("valgrind") or not shutil.which("callgrind_annotate"):
+        note["error"] = "valgrind (callgrind) is not installed"
+        return note
+    out = os.path.join(args.build, "callgrind.bench_osm.out")
+    t0 = time.monotonic()
+    p = subprocess.run(["valgrind", "--tool=callgrind", "--callgrind-out-file=" + out,
+                        exe, PROFILE_INPUT, "--no-check"],
+                       capture_output=True, text=True, timeout=1800)
+    note["seconds"] = time.monotonic() - t0
+    if p.returncode != 0:
+        note["error"] = "callgrind failed: " + tail(p.stderr)
+        return note
+    for line in p.stdout.splitlines():
+        if line.startswith("{"):
+            note["run"] = json.loads(line)
+    inclusive = annotate(out, True)
+    exclusive = annotate(out, False)
+    total = inclusive.get("__total__", 0)
+    note["total_ir"] = total
+    phases = []
+    for phase, fn in PHASE_FUNCTIONS:
+        cost = sum(c for name, c in inclusive.items() if name.startswith(fn))
+        phases.append((phase, cost))
+    note["phases"] = phases
+    note["top_exclusive"] = sorted(
+        ((n, c) for n, c in exclusive.items() if n != "__total__"),
+        key=lambda x: -x[1])[:15]
+    return note
+
+
+def annotate(path, inclusive):
+    """{function: instructions} from callgrind_annotate (symbols shortened)."""
+    cmd = ["callgrind_annotate", "--threshold=100", "--inclusive=" + ("yes" if inclusive else "no"),
+           path]
+    p = subprocess.run(cmd, capture_output=True, text=True)
+    costs = {}
+    for line in p.stdout.splitlines():
+        line = line.strip()
+        parts = line.split(None, 1)
+        if len(parts) != 2:
+            continue
+        number = parts[0].replace(",", "")
+        if not number.isdigit():
+            continue
+        rest = parts[1]
+        if rest.startswith("("):  # "(32.0%)" after the count in some versions
+            rest = rest.split(None, 1)[1] if " " in rest else ""
+        if rest.startswith("PROGRAM TOTALS"):
+            costs["__total__"] = int(number)
+            continue
+        name = rest.split(" [", 1)[0]
+        if ":" in name and not name.startswith("osm::") and "::" not in name.split(":", 1)[0]:
+            name = name.split(":", 1)[1]  # drop "file:" prefix
+        costs[name] = costs.get(name, 0) + int(number)
+    return costs
+
+
+# ----------------------------------------------------------------------------- report
+
+def human(n):
+    """1000 -> 1e3, 200000 -> 2e5; other numbers as they are."""
+    if n is None:
+        return ""
+    for exp in range(9, 2, -1):
+        if n % 10**exp == 0 and n // 10**exp < 10:
+            return "%de%d" % (n // 10**exp, exp)
+        if n % 10**(exp - 1) == 0 and n // 10**exp < 10 and n >= 10**exp:
+            return "%.1fe%d" % (n / 10**exp, exp)
+    return str(n)
+
+
+SHORT_RUN = 0.05  # seconds: below it (wall), a run's CPU clock is too coarse here
+
+
+def median_seconds(e):
+    """The time every ratio uses: the median CPU time of the runs; for runs under
+    SHORT_RUN, the shortest wall time (this machine's process CPU clock sometimes
+    reads 0 for them, and the least disturbed run is the best estimate)."""
+    cpu = [c for c in e.get("cpu", []) if c is not None]
+    wall = median_wall(e)
+    if cpu and wall is not None and wall >= SHORT_RUN:
+        return statistics.median(cpu)
+    return min(e["seconds"]) if e.get("seconds") else None
+
+
+def median_wall(e):
+    return statistics.median(e["seconds"]) if e.get("seconds") else None
+
+
+def per_triangle(e):
+    s = median_seconds(e)
+    t = e["first"].get("out_triangles") if "first" in e else None
+    return s / t if s is not None and t else None
+
+
+def bytes_per_triangle(e):
+    f = e.get("first", {})
+    if f.get("status") != "ok" or not f.get("out_triangles"):
+        return None
+    if e.get("tool") == "osm-mesh":  # the whole process: GNU time's peak RSS
+        return f["process_maxrss"] / f["out_triangles"] if f.get("process_maxrss") else None
+    if f.get("peak_rss", -1) < 0 or f.get("base_rss", -1) < 0:
+        return None
+    return (f["peak_rss"] - f["base_rss"]) / f["out_triangles"]
+
+
+def peak_bytes(f):
+    if f.get("peak_rss", -1) > 0:
+        return f["peak_rss"]
+    return f.get("process_maxrss")
+
+
+def fmt(x, digits=3):
+    if x is None:
+        return "—"
+    if x == 0:
+        return "0"
+    if abs(x) >= 1000:
+        return "{:,.0f}".format(x)
+    return "%.*g" % (digits, x)
+
+
+def fmt_int(x):
+    return "—" if x is None else "{:,}".format(int(x))
+
+
+def geomean(values):
+    values = [v for v in values if v and v > 0]
+    if not values:
+        return None
+    prod = 1.0
+    for v in values:
+        prod *= v ** (1.0 / len(values))
+    return prod
+
+
+def status_text(e):
+    if "skipped" in e:
+        return "skipped (%s)" % e["skipped"]
+    f = e["first"]
+    if f["status"] == "ok":
+        return "ok"
+    if f["status"] == "timeout":
+        return "**time-out** (> %d s)" % int(f["wall"] + 0.5)
+    if f["status"] == "crash":
+        return "**crash**: " + f.get("detail", "")[:80]
+    return "**error**: " + f.get("detail", "")[:80]
+
+
+def index_results(results):
+    by = {}
+    for e in results:
+        by[(e["tool"], e["input"])] = e
+    return by
+
+
+def ok(e):
+    return e is not None and e.get("first", {}).get("status") == "ok" and e.get("seconds")
+
+
+CLASS_LABEL = {"real": "real inputs (../shared/data/pslg)", "random-segments": "random segments",
+               "points": "random points", "spread": "high spread"}
+
+
+def headline(data):
+    results = data["results"]
+    by = index_results(results)
+    specs = []
+    for e in results:
+        if e["input"] not in [s for s, _ in specs]:
+            specs.append((e["input"], e["class"]))
+    rows = []
+    for cls in ("real", "random-segments", "points", "spread"):
+        members = [s for s, c in specs if c == cls]
+        if not members:
+            continue
+        r_mesh2, r_cdt, r_mesh2_tri, r_vtk, r_tris = [], [], [], [], []
+        vtk_timeouts = 0
+        missing = {"osm": 0, "cgal-mesh2": 0, "vtk-delaunay2d": 0}
+        for s in members:
+            for tool in missing:
+                e = by.get((tool, s))
+                if ok(e):
+                    missing[tool] += e["first"].get("missing_segments", 0)
+            o = by.get(("osm", s))
+            if not ok(o):
+                continue
+            m2, cdt, vd = by.get(("cgal-mesh2", s)), by.get(("cgal-cdt", s)), by.get(("vtk-delaunay2d", s))
+            if ok(m2):
+                r_mesh2.append(median_seconds(m2) / median_seconds(o))
+                r_mesh2_tri.append(per_triangle(o) / per_triangle(m2))
+                r_tris.append(o["first"]["out_triangles"] / m2["first"]["out_triangles"])
+            if ok(cdt):
+                r_cdt.append(per_triangle(o) / per_triangle(cdt))
+            if ok(vd):
+                r_vtk.append(median_seconds(vd) / median_seconds(o))
+            elif vd is not None and vd.get("first", {}).get("status") == "timeout":
+                vtk_timeouts += 1
+        rows.append((cls, len(members), r_mesh2, r_tris, r_mesh2_tri, r_cdt, r_vtk, vtk_timeouts,
+                     missing))
+    return rows
+
+
+def range_text(values):
+    if not values:
+        return "—"
+    g = geomean(values)
+    lo, hi = min(values), max(values)
+    return "%s (%s – %s)" % (fmt(g, 2), fmt(lo, 2), fmt(hi, 2))
+
+
+def targets(data, profile):
+    results = data["results"]
+    by = index_results(results)
+    out = []
+    osm_runs = [e for e in results if e["tool"] == "osm" and ok(e)]
+
+    # 1a. faster than Mesh_2 on every input
+    worse = []
+    compared = 0
+    for o in osm_runs:
+        m2 = by.get(("cgal-mesh2", o["input"]))
+        if ok(m2):
+            compared += 1
+            if median_seconds(o) >= median_seconds(m2):
+                worse.append((o["name"], median_seconds(o) / median_seconds(m2)))
+    ratios = [median_seconds(by[("cgal-mesh2", o["input"])]) / median_seconds(o)
+              for o in osm_runs if ok(by.get(("cgal-mesh2", o["input"])))]
+    out.append(("Core faster than CGAL Mesh_2 on every input",
+                "faster on %d of %d inputs; Mesh_2 time / OSM time from %s to %s%s" % (
+                    compared - len(worse), compared, fmt(min(ratios), 2) if ratios else "—",
+                    fmt(max(ratios), 2) if ratios else "—",
+                    "" if not worse else "; slowest relative: %s (OSM takes %sx Mesh_2's time)" % (
+                        max(worse, key=lambda w: w[1])[0], fmt(max(w[1] for w in worse), 2))),
+                not worse and compared > 0))
+
+    # 1b. per triangle at most 1.5x CGAL CDT per triangle
+    rel = []
+    for o in osm_runs:
+        c = by.get(("cgal-cdt", o["input"]))
+        if ok(c) and o["first"]["out_triangles"] >= 1000:
+            rel.append((o["name"], per_triangle(o) / per_triangle(c)))
+    if rel:
+        worst = max(rel, key=lambda r: r[1])
+        best = min(rel, key=lambda r: r[1])
+        out.append(("Time per output triangle ≤ 1.5× CGAL CDT's per triangle",
+                    "OSM / CDT per triangle: geometric mean %s, from %s (%s) to %s (%s); "
+                    "inputs with ≥ 1,000 output triangles" % (
+                        fmt(geomean([r[1] for r in rel]), 2), fmt(best[1], 2), best[0],
+                        fmt(worst[1], 2), worst[0]),
+                    worst[1] <= 1.5))
+
+    # 2. per triangle flat within 1.5x from 1e4 to 1e7 triangles (generated families)
+    texts, met = [], True
+    for fam in ("random-segments", "points", "spread"):
+        pts = [(o["first"]["out_triangles"], per_triangle(o)) for o in osm_runs
+               if o["class"] == fam and 1e4 <= o["first"]["out_triangles"] <= 1.5e7]
+        if len(pts) < 2:
+            continue
+        pts.sort()
+        hi = max(p[1] for p in pts)
+        lo = min(p[1] for p in pts)
+        met = met and hi / lo <= 1.5
+        texts.append("%s: %s ns to %s ns over %s – %s triangles (×%s)" % (
+            fam, fmt(lo * 1e9), fmt(hi * 1e9), fmt_int(pts[0][0]), fmt_int(pts[-1][0]),
+            fmt(hi / lo, 2)))
+    largest = max((o["first"]["out_triangles"] for o in osm_runs), default=0)
+    if texts:
+        out.append(("Time per output triangle within 1.5× from 1e4 to 1e7 triangles",
+                    "; ".join(texts) + ("" if largest >= 1e7 else
+                                        " (largest run: %s triangles)" % fmt_int(largest)),
+                    met))
+
+    # 3. memory at >= 1e7 triangles: osm-mesh (whole process) if it ran, else the core
+    for tool, what in (("osm-mesh", "osm-mesh, whole process"),
+                       ("osm", "core, increase during the call")):
+        runs = [e for e in results if e["tool"] == tool and ok(e)]
+        if not runs:
+            continue
+        big = [o for o in runs if o["first"]["out_triangles"] >= 0.95e7 and bytes_per_triangle(o)]
+        qual = ""
+        if not big:
+            big = sorted(runs, key=lambda o: -o["first"]["out_triangles"])[:1]
+            qual = "no run reached 1e7 triangles; largest: "
+        if big and bytes_per_triangle(big[0]) is not None:
+            worst = max(big, key=bytes_per_triangle)
+            out.append(("Peak memory ≤ 200 bytes per triangle at ≥ 1e7 triangles (%s)" % what,
+                        qual + "; ".join("%s: %s B/triangle (%s triangles, peak %s MB)" % (
+                            o["name"], fmt(bytes_per_triangle(o)),
+                            fmt_int(o["first"]["out_triangles"]),
+                            fmt(peak_bytes(o["first"]) / 2**20)) for o in big),
+                        bytes_per_triangle(worst) <= 200 and not qual))
+
+    # 4. VTK filter overhead at ~1e6 triangles
+    vt = [e for e in results if e["tool"] == "vtk-osm" and ok(e) and e.get("core_seconds")]
+    if vt:
+        near = min(vt, key=lambda e: abs(e["first"]["out_triangles"] - 1e6))
+        over_same = statistics.median(
+            [(s - c) / c for s, c in zip(near["seconds"], near["core_seconds"])])
+        o = by.get(("osm", near["input"]))
+        over_sep = median_seconds(near) / median_seconds(o) - 1 if ok(o) else None
+        out.append(("VTK filter overhead ≤ 25% of core time at 1e6 triangles",
+                    "%s (%s triangles): Update() vs the core inside it, same run: +%s%%; "
+                    "vs bench_osm (separate processes): %s%%" % (
+                        near["name"], fmt_int(near["first"]["out_triangles"]),
+                        fmt(100 * over_same, 2),
+                        "—" if over_sep is None else "%+.0f" % (100 * over_sep)),
+                    over_same <= 0.25))
+
+    # 5. vtkDelaunay2D at 1e5 segments
+    cand = [e for e in results if e["tool"] == "vtk-delaunay2d" and
+            e["class"] == "random-segments" and e.get("n") == 200000 and "first" in e]
+    if cand:
+        v = cand[0]
+        o = by.get(("osm", v["input"]))
+        if ok(o):
+            om = o["first"].get("missing_segments")
+            if ok(v):
+                ratio = median_seconds(v) / median_seconds(o)
+                vm = v["first"].get("missing_segments")
+                text = "%s (1e5 segments): vtkDelaunay2D %s s, OSM %s s: %s× faster; missing " \
+                       "segments: OSM %s, vtkDelaunay2D %s" % (
+                           v["name"], fmt(median_seconds(v)), fmt(median_seconds(o)),
+                           fmt(ratio, 2), om, vm)
+                good = ratio >= 50 and om == 0
+            elif v["first"]["status"] == "timeout":
+                ratio = args_timeout(data) / median_seconds(o)
+                text = "vtkDelaunay2D timed out (> %d s): OSM at least %s× faster; OSM missing " \
+                       "segments: %s" % (args_timeout(data), fmt(ratio, 2), om)
+                good = ratio >= 50 and om == 0
+            else:
+                text = "vtkDelaunay2D: " + status_text(v)
+                good = om == 0
+            out.append(("≥ 50× faster than vtkDelaunay2D at 1e5 segments, zero missing segments",
+                        text, good))
+    return out
+
+
+def args_timeout(data):
+    return int(data["meta"]["timeout"])
+
+
+def scaling_text(data):
+    """OSM's time and memory per output triangle along the generated families."""
+    results = data["results"]
+    by = index_results(results)
+    L = ["Time per output triangle of the OSM core along each generated family (CPU time "
+         "of the median run; *vs smallest ≥ 1e4*: its ratio to the first size with at least "
+         "10,000 output triangles), with CGAL's per-triangle times on the same inputs, and "
+         "the memory per output triangle (core: peak RSS increase during the call; osm-mesh: "
+         "peak RSS of the whole process).", "",
+         "| family | input vertices | OSM triangles | OSM ns/tri | vs smallest ≥ 1e4 | "
+         "Mesh_2 ns/tri | CDT ns/tri | filter ns/tri | osm-mesh ns/tri | core B/tri | "
+         "osm-mesh B/tri |",
+         "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
+    for fam in ("random-segments", "points", "spread"):
+        runs = sorted((e for e in results if e["tool"] == "osm" and e["class"] == fam and ok(e)),
+                      key=lambda e: e["n"])
+        base = None
+        for o in runs:
+            t = o["first"]["out_triangles"]
+            pt = per_triangle(o)
+            if base is None and t >= 1e4:
+                base = pt
+            def other(tool, what):
+                x = by.get((tool, o["input"]))
+                if not ok(x):
+                    return "—" if x is None else status_text(x).split(":")[0]
+                return fmt(what(x))
+            L.append("| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
+                fam, human(o["n"]), fmt_int(t), fmt(pt * 1e9),
+                fmt(pt / base, 2) if base and t >= 1e4 else "—",
+                other("cgal-mesh2", lambda x: per_triangle(x) * 1e9),
+                other("cgal-cdt", lambda x: per_triangle(x) * 1e9),
+                other("vtk-osm", lambda x: per_triangle(x) * 1e9),
+                other("osm-mesh", lambda x: per_triangle(x) * 1e9),
+                fmt(bytes_per_triangle(o)),
+                other("osm-mesh", bytes_per_triangle)))
+    return "\n".join(L)
+
+
+def phase_table(data):
+    """Per-phase seconds of the OSM core runs whose output is nearest 1e6 triangles."""
+    rows = []
+    for e in data["results"]:
+        if e["tool"] != "osm" or not ok(e):
+            continue
+        t = e["first"]["out_triangles"]
+        if 5e5 <= t <= 2.5e6 and e.get("phases"):
+            # the run whose total is the median one
+            ph = sorted(e["phases"], key=lambda p: p.get("phase_total", 0))[len(e["phases"]) // 2]
+            rows.append((e["name"], t, ph, e["input"]))
+    return rows
+
+
+def write_report(data, profile, md_path, png_path, plot_note):
+    meta = data["meta"]
+    results = data["results"]
+    by = index_results(results)
+    L = []
+    w = L.append
+    w("# Benchmarks")
+    w("")
+    w("Generated by `bash Testing/Benchmarks/run.sh` (which runs "
+      "`Testing/Benchmarks/run_benchmarks.py`); do not edit by hand. "
+      "Run on %s, commit `%s`, %s (%d cores, %d GiB), shared with other builds: "
+      "timings are noisy, so ratios measured in the same suite run are what to read. "
+      "The suite took %.0f minutes." % (
+          meta["date"], meta["commit"], meta["cpu"], meta["cores"], meta["memory_gib"],
+          meta["suite_seconds"] / 60.0))
+    ls, le = meta.get("load_start"), meta.get("load_end")
+    if ls and le:
+        w("")
+        w("Load average (1, 5, 15 min) at the start of the suite: %.2f, %.2f, %.2f; at its "
+          "end: %.2f, %.2f, %.2f. On 2 cores, anything above about 1 means that other jobs "
+          "(other builds in the same tree) competed with the benchmark; each figure is the "
+          "median of several runs, and every tool ran interleaved with the others on the same "
+          "input, so the ratios suffer less than the absolute times." % (tuple(ls) + tuple(le)))
+    if meta.get("dirty"):
+        w("")
+        w("The drivers were built from commit `%s` plus uncommitted changes to: %s." % (
+            meta["commit"], ", ".join("`%s`" % d for d in meta["dirty"])))
+    if meta.get("quick"):
+        w("")
+        w("**Quick run (`--quick`): small sizes only; the targets need the full run.**")
+    w("")
+    w("![time per output triangle](Testing/Benchmarks/benchmarks.png)")
+    w("")
+    w("## Headline (ratios)")
+    w("")
+    w("Per input class: geometric mean over its inputs, with the range (min – max). "
+      "*Mesh_2 time / OSM time* and *vtkDelaunay2D time / OSM time* above 1 favour OSM; "
+      "the per-triangle columns are OSM's time per output triangle divided by the other "
+      "tool's (below 1 favours OSM). Missing segments are summed over the class.")
+    w("")
+    w("| inputs | count | Mesh_2 time / OSM time | OSM / Mesh_2 triangles | "
+      "OSM / Mesh_2 per triangle | OSM / CGAL CDT per triangle | "
+      "vtkDelaunay2D time / OSM time | missing segments: OSM, Mesh_2, vtkDelaunay2D |")
+    w("|---|---:|---:|---:|---:|---:|---:|---|")
+    for cls, count, r_m2, r_tris, r_m2t, r_cdt, r_vtk, vto, missing in headline(data):
+        vt = range_text(r_vtk)
+        if vto:
+            vt += " + %d time-out(s)" % vto
+        if cls == "points":
+            vt += " (no constraints)"
+        w("| %s | %d | %s | %s | %s | %s | %s | %s |" % (
+            CLASS_LABEL.get(cls, cls), count, range_text(r_m2), range_text(r_tris),
+            range_text(r_m2t), range_text(r_cdt), vt,
+            ", ".join(fmt_int(missing[t]) for t in ("osm", "cgal-mesh2", "vtk-delaunay2d"))))
+    w("")
+    w("OSM makes more triangles than Mesh_2 on the same input (its overlay keeps every "
+      "angle near the input at 30° or more, Mesh_2 asks for 20.7°, and OSM bounds the "
+      "largest angle, not the smallest): compare the triangle counts in the tables below.")
+    w("")
+    w("## Targets (issue 5)")
+    w("")
+    w("| target | measured | met |")
+    w("|---|---|---|")
+    for name, text, good in targets(data, profile):
+        w("| %s | %s | %s |" % (name, text, "**yes**" if good else "**no**"))
+    w("")
+    w("## Scaling")
+    w("")
+    w(scaling_text(data))
+    w("")
+    w("## Where the time goes")
+    w("")
+    rows = phase_table(data)
+    if rows:
+        w("Per phase, from the core's own `Result::stats` (wall seconds of the median run, "
+          "so inflated by the load like every wall time here; the shares are what to read), "
+          "for the OSM runs with 0.5 to 2.5 million output triangles. *VTK conversion*: "
+          "the VTK filter's `Update()` minus the core's own total inside that same call "
+          "(median over its runs; vtkPolyData in, mesh with its arrays out), as a share of "
+          "that core total:")
+        w("")
+        w("| input | triangles | clean | overlay | stitch | complete | domain | total | "
+          "VTK conversion |")
+        w("|---|---:|---:|---:|---:|---:|---:|---:|---:|")
+        by = index_results(results)
+        for name, t, ph, spec in rows:
+            tot = ph.get("phase_total", 0) or 1
+            cells = []
+            for k in ("phase_clean", "phase_overlay", "phase_stitch", "phase_complete",
+                      "phase_domain"):
+                cells.append("%s s (%.0f%%)" % (fmt(ph.get(k, 0)), 100 * ph.get(k, 0) / tot))
+            v = by.get(("vtk-osm", spec))
+            conv = "—"
+            if ok(v) and v.get("core_seconds"):
+                d = [(a - c, c) for a, c in zip(v["seconds"], v["core_seconds"])]
+                mid = sorted(d, key=lambda x: x[0] / x[1])[len(d) // 2]
+                conv = "%s s (%.0f%%)" % (fmt(mid[0]), 100 * mid[0] / mid[1])
+            w("| %s | %s | %s | %s s | %s |" % (name, fmt_int(t), " | ".join(cells), fmt(tot),
+                                                conv))
+        w("")
+    if profile:
+        w("Profile: %s" % profile_text(profile))
+        w("")
+    w("## Results")
+    w("")
+    w("*CPU s*: median process CPU time of the meshing call only (no reading, generating or "
+      "converting), over the runs counted in *runs*; *wall s*: the median wall time of the "
+      "same calls (inflated by the other jobs on the machine). Each run is a separate "
+      "process with a limit of %d CPU seconds. "
+      "*missing*: input segments that are not a chain of output edges (checked "
+      "independently of every tool, from exact input coordinates); *out*: segments "
+      "outside the domain the tool meshed (legitimately absent). *peak*: peak RSS during "
+      "the call (its increase over the RSS before it, per output triangle, in "
+      "*B/tri*)." % args_timeout(data))
+    w("")
+    w("| input | tool | runs | CPU s | wall s | ns / triangle | vertices | triangles | "
+      "min angle | max angle | missing | out | peak MB | B/tri | status |")
+    w("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|")
+    seen = []
+    for e in results:
+        if e["input"] not in seen:
+            seen.append(e["input"])
+    for spec in seen:
+        entries = [by[(t, spec)] for t in TOOL_ORDER if (t, spec) in by]
+        for e in entries:
+            f = e.get("first", {})
+            good = ok(e)
+            missing = f.get("missing_segments") if good else None
+            if e["tool"] == "osm-delaunay":
+                missing_text, out_text = "n/a", "n/a"
+            else:
+                missing_text = "—" if missing is None else fmt_int(missing)
+                out_text = "—" if not good else fmt_int(f.get("outside_segments", 0))
+            w("| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
+                e["name"], TOOLS[e["tool"]][2], len(e.get("seconds", [])) or "—",
+                fmt(median_seconds(e), 4) if good else "—",
+                fmt(median_wall(e), 4) if good else "—",
+                fmt(per_triangle(e) * 1e9) if good else "—",
+                fmt_int(f.get("out_vertices")) if good else "—",
+                fmt_int(f.get("out_triangles")) if good else "—",
+                fmt(f.get("min_angle"), 4) if good else "—",
+                fmt(f.get("max_angle"), 5) if good else "—",
+                missing_text, out_text,
+                fmt(peak_bytes(f) / 2**20) if good and peak_bytes(f) else "—",
+                fmt(bytes_per_triangle(e)) if good else "—",
+                status_text(e)))
+    w("")
+    w("## What was run, and how")
+    w("")
+    w(notes_text(data, plot_note))
+    with open(md_path, "w") as f:
+        f.write("\n".join(L) + "\n")
+
+
+def profile_text(p):
+    if p.get("error"):
+        return "not available: %s." % p["error"]
+    total = p.get("total_ir") or 1
+    s = ("callgrind (`perf stat -e instructions` is %s here) on `bench_osm %s` "
+         "(%s output triangles), instructions per phase, inclusive: " % (
+             "supported" if p.get("perf_instructions") else "not supported",
+             p["input"], fmt_int(p.get("run", {}).get("out_triangles"))))
+    s += ", ".join("%s %.0f%%" % (name, 100.0 * cost / total) for name, cost in p["phases"])
+    s += ". Most expensive functions by their own instructions: "
+    s += "; ".join("`%s` %.1f%%" % (short_name(n), 100.0 * c / total)
+                   for n, c in p["top_exclusive"][:8])
+    s += "."
+    return s
+
+
+def short_name(name):
+    # Drop argument lists and template arguments, keep the qualified name.
+    out, depth = [], 0
+    for ch in name:
+        if ch in "<(":
+            depth += 1
+        elif ch in ">)":
+            depth -= 1
+        elif depth == 0:
+            out.append(ch)
+    return "".join(out).strip() or name[:60]
+
+
+def notes_text(data, plot_note):
+    meta = data["meta"]
+    fams = meta["families"]
+    lines = [
+        "- **Tools.** *OSM core*: `osm::mesh()` with default options (θ1 = 30°, domain Auto), "
+        "without keeping the overlay and the edge classes (the mesh only, like the others). "
+        "*OSM VTK filter*: `vtkOverlayStitchMesher::Update()` on the same input as vtkPolyData "
+        "lines, Edges and Overlay outputs off; the core's own time inside the same call comes "
+        "from the field data `SecondsTotal`. *CGAL Mesh_2*: CGAL 5.5 "
+        "`refine_Delaunay_mesh_2` with `Delaunay_mesh_size_criteria_2` defaults (shape "
+        "0.125, about 20.7°; no size bound), Epick kernel, timed from the input (CDT "
+        "construction included); its domain follows OSM's Auto (enclosed regions if the "
+        "segments enclose any, else the convex hull with its edges as constraints), with the "
+        "input's holes as seeds. *CGAL CDT alone*: the constrained Delaunay triangulation of "
+        "the input (bulk insertion in spatial order), all of its convex hull. *OSM Delaunay "
+        "of points*: `osm::delaunayTriangulation` of the points only (segments ignored), the "
+        "core's triangulation layer next to CGAL's. *vtkDelaunay2D*: ParaView 5.11's VTK, the "
+        "segments as line cells given to `SetSourceData`, default Tolerance (1e-5 of the "
+        "bounding box, which merges closer points), the convex hull.",
+        "- **Inputs.** Every `.poly` in `../shared/data/pslg` (%s), and generated families "
+        "(Testing/Benchmarks/Generators.h, seed %d): `random-segments` (N/2 segments, each "
+        "inside its own cell of a grid), `points` (N uniform points, no segments), `spread` "
+        "(like random-segments, lengths log-uniform over 6 decades). Sizes N: %s." % (
+            "present" if meta["data_present"] else "absent here: skipped", SEED,
+            "; ".join("%s %s" % (k, ", ".join(human(n) for n in v)) for k, v in fams.items())),
+        "- **Caps** (to keep the suite near 20 minutes on 2 shared cores): spread stops at "
+        "3e4 vertices (at 1e5 OSM made 45 million triangles in 122 s using 8.4 GB and Mesh_2 "
+        "took 100 s); vtkDelaunay2D runs up to %s vertices (1e5 segments), the VTK filter up to "
+        "%s and on random segments and the real inputs only. After a time-out or a crash a "
+        "tool is not run on the larger members of that family (shown as skipped)." % (
+            human(meta["caps"].get("vtk-delaunay2d")), human(meta["caps"].get("vtk-osm"))),
+        "- **Runs.** %d runs when one takes under %g s, else %d, fewer when they would exceed "
+        "%d s together; the first run also checks the output. Time limit %d s per run, "
+        "address space %d GiB." % (RUNS_FAST, FAST_SECONDS, RUNS, REPEAT_BUDGET,
+                                  meta["timeout"], MEMORY_LIMIT >> 30),
+        "- **Memory.** Peak RSS of the child during the meshing call (the kernel's peak mark "
+        "is reset just before it); *B/tri* is its increase over the RSS before the call, so "
+        "the input's own memory is not counted, the output and all working memory are.",
+    ]
+    if meta.get("cli"):
+        lines.append(
+            "- **osm-mesh** (end to end): the whole process, timed from outside: reading the "
+            "`.poly` file (generated inputs are first written as `.poly` files with 17 digits "
+            "by `bench_make_poly`), meshing, writing the mesh (`%s`). Its memory is GNU "
+            "time's peak RSS of the whole process (input, mesh and writing included), so "
+            "*B/tri* for it is that peak divided by the output triangles." % " ".join(
+                os.path.basename(x) if i == 0 else x
+                for i, x in enumerate(cli_command("osm-mesh", "IN.poly", "OUT"))))
+    else:
+        lines.append("- **Not measured: the `osm-mesh` command-line tool** (end to end, with "
+                     "I/O). It was not in the tree when this suite ran (it was being written); "
+                     "rerunning the command measures it once it is built.")
+    lines.append("- **Plot.** Made with matplotlib (Debian: `apt-get install python3-matplotlib`; "
+                 "it is not a dependency of the project or its CI). Without it the report is "
+                 "written without the plot.")
+    if meta.get("missing_tools"):
+        lines.append("- **Missing drivers** in this build (not run): %s." %
+                     ", ".join(meta["missing_tools"]))
+    if plot_note:
+        lines.append("- " + plot_note)
+    return "\n".join(lines)
+
+
+MARKERS = {"real": "o", "random-segments": "s", "points": "^", "spread": "D"}
+COLORS = {"osm": "#d62728", "vtk-osm": "#ff9896", "osm-mesh": "#8c564b", "cgal-mesh2": "#1f77b4",
+          "cgal-cdt": "#aec7e8", "osm-delaunay": "#ffbb78", "vtk-delaunay2d": "#2ca02c"}
+
+
+def write_plot(data, png_path):
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        from matplotlib.lines import Line2D
+    except ImportError:
+        return "The plot was not made: matplotlib is missing (python3-matplotlib)."
+    fig, ax = plt.subplots(figsize=(9.5, 5.2), dpi=90)
+    for tool in TOOL_ORDER:
+        for cls, marker in MARKERS.items():
+            pts = sorted((e["first"]["out_triangles"], per_triangle(e) * 1e9)
+                         for e in data["results"]
+                         if e["tool"] == tool and e["class"] == cls and ok(e)
+                         and e["first"]["out_triangles"] >= 100)
+            if not pts:
+                continue
+            xs, ys = zip(*pts)
+            ax.plot(xs, ys, linestyle="-" if cls != "real" else "none", marker=marker,
+                    color=COLORS[tool], markersize=4, linewidth=1, alpha=0.9)
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("output triangles")
+    ax.set_ylabel("time per output triangle (ns)")
+    ax.set_title("Time per output triangle (median of runs; lower is better)")
+    ax.grid(True, which="both", alpha=0.25)
+    handles = [Line2D([], [], color=COLORS[t], marker="o", linestyle="-", label=TOOLS[t][2])
+               for t in TOOL_ORDER if any(e["tool"] == t and ok(e) for e in data["results"])]
+    handles += [Line2D([], [], color="gray", marker=m, linestyle="none", label=c)
+                for c, m in MARKERS.items()
+                if any(e["class"] == c for e in data["results"])]
+    ax.legend(handles=handles, fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    fig.tight_layout()
+    fig.savefig(png_path)
+    plt.close(fig)
+    return None
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    p.add_argument("--build", default=os.path.join(ROOT, "build-bench"),
+                   help="build directory holding bench/ (default: build-bench)")
+    p.add_argument("--data", default=os.path.join(ROOT, "..", "shared", "data", "pslg"),
+                   help="folder of .poly inputs (default: ../shared/data/pslg; skipped if absent)")
+    p.add_argument("--quick", action="store_true", help="small sizes only (to try the suite)")
+    p.add_argument("--timeout", type=float, default=TIMEOUT, help="seconds per run (120)")
+    p.add_argument("--report-only", action="store_true",
+                   help="rewrite the report from the saved results, run nothing")
+    p.add_argument("--no-profile", action="store_true", help="skip the callgrind profile")
+    p.add_argument("--profile-only", default=None, metavar="OUT.json",
+                   help="only run the callgrind profile and save it (its instruction counts "
+                        "do not depend on the load, so it may run beside the suite)")
+    p.add_argument("--profile-from", default=None, metavar="FILE.json",
+                   help="with --report-only: take the profile from this file")
+    p.add_argument("--partial", default=None,
+                   help="also save the results after every run to this file")
+    p.add_argument("--tools", default="",
+                   help="comma-separated tools to run (default: all): " + ",".join(TOOL_ORDER))
+    p.add_argument("--results", default=None,
+                   help="raw results (written, or read with --report-only; default: "
+                        "<build>/bench/results.json, too large to commit)")
+    p.add_argument("--markdown", default=os.path.join(ROOT, "BENCHMARKS.md"))
+    p.add_argument("--png", default=os.path.join(HERE, "benchmarks.png"))
+    args = p.parse_args()
+    args.data = os.path.normpath(args.data)
+    if args.results is None:
+        args.results = os.path.join(args.build, "bench", "results.json")
+
+    if args.profile_only:
+        with open(args.profile_only, "w") as f:
+            json.dump(run_profile(args), f, indent=1)
+        return
+    if args.report_only:
+        with open(args.results) as f:
+            data = json.load(f)
+        if args.profile_from:
+            with open(args.profile_from) as f:
+                data["profile"] = json.load(f)
+    else:
+        data = run_suite(args)
+        if not args.no_profile:
+            print("profiling bench_osm under callgrind ...", flush=True)
+            data["profile"] = run_profile(args)
+        with open(args.results, "w") as f:
+            json.dump(data, f, indent=1)
+            f.write("\n")
+    plot_note = write_plot(data, args.png)
+    write_report(data, data.get("profile"), args.markdown, args.png, plot_note)
+    print("wrote %s, %s and %s" % (args.markdown, args.png, args.results))
+
+
+if __name__ == "__main__":
+    main()
