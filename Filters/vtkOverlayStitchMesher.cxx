@@ -74,13 +74,20 @@ public:
     this->Filter->UpdateProgress(this->Begin + (this->End - this->Begin) * fraction);
   }
 
-  bool aborted() override { return this->Filter->GetAbortExecute() != 0; }
+  bool aborted() override
+  {
+    this->Aborted = this->Aborted || this->Filter->GetAbortExecute() != 0;
+    return this->Aborted;
+  }
+
+  bool WasAborted() const { return this->Aborted; }
 
 private:
   vtkOverlayStitchMesher* Filter;
   double Begin;
   double End;
   std::string Phase;
+  bool Aborted = false;
 };
 
 std::string FormatPoint3(const osm::Vec3& p)
@@ -737,6 +744,7 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   if (this->GetAbortExecute())
   {
     vtkErrorMacro("Meshing failed: aborted by the user");
+    this->AbortExecute = 0; // the executive does not reset it: the next run must not abort
     return 1;
   }
   this->UpdateProgress(0.05);
@@ -782,15 +790,38 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   {
     vtkWarningMacro(<< ExplainSegments(warning, segmentSources));
   }
+  if (progress.WasAborted())
+  {
+    // Handled: the executive does not reset the flag, and the next run must not abort.
+    // (Assigned directly: SetAbortExecute() would mark the filter modified.)
+    this->AbortExecute = 0;
+  }
   if (!result.ok)
   {
     vtkErrorMacro("Meshing failed: " << ExplainSegments(result.error, segmentSources));
     return 1;
   }
 
-  // Phase "output": the three polydata, built in bulk.
+  // Phase "output": the three polydata, built in bulk; the abort flag is
+  // polled between them (an abort empties every output).
+  auto aborted = [&]() {
+    if (!this->GetAbortExecute())
+    {
+      return false;
+    }
+    mesh->Initialize();
+    edges->Initialize();
+    overlay->Initialize();
+    vtkErrorMacro("Meshing failed: aborted by the user");
+    this->AbortExecute = 0;
+    return true;
+  };
   this->SetProgressText("output");
   this->UpdateProgress(0.9);
+  if (aborted())
+  {
+    return 1;
+  }
   FillMesh(result, map, mesh);
   auto addCount = [mesh](const char* name, double value) {
     auto array = MakeArray<vtkDoubleArray>(name, 1);
@@ -802,13 +833,26 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   addCount("InputPlaneFitted", map.IsFitted() ? 1.0 : 0.0);
   addCount("InputProjectedToXY", map.IsProjected() ? 1.0 : 0.0);
   this->UpdateProgress(0.95);
+  if (aborted())
+  {
+    return 1;
+  }
   if (this->GenerateEdges)
   {
     FillEdges(result, map, edges);
   }
+  this->UpdateProgress(0.98);
+  if (aborted())
+  {
+    return 1;
+  }
   if (this->GenerateOverlay)
   {
     MakeTriangles(result.overlay, map, overlay);
+  }
+  if (aborted())
+  {
+    return 1;
   }
   this->SetProgressText(nullptr);
   this->UpdateProgress(1.0);

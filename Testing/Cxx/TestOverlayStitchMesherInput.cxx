@@ -1,0 +1,834 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026, the Overlay Stitch Meshing authors
+//
+// C++ tests of what vtkOverlayStitchMesher accepts, run as
+//   TestOverlayStitchMesherInput <name>
+// with <name> one of:
+//   merge-tolerance  near-duplicate points merged only within MergeTolerance
+//   tilted-plane     coplanar 3D input meshed in its plane, input vertices bit-identical
+//   non-coplanar     points off one plane: an error naming the farthest point
+//   project-xy       ProjectToXYPlane meshes the XY projection at the mean z
+//   field-holes      hole seeds from the input's field data "HolePoints"
+//   ignored-cells    cells that give no segment: ONE warning counting them by kind
+//   progress         progress through every phase, monotone, ending at 1
+//   abort            an abort requested from a progress observer on a big input
+//   matrix           the bad-input matrix of issue 6, through the filter
+// Every check prints "ok" or "FAILED"; the exit status is the number of failures (capped).
+#include "MesherTestUtils.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkCommand.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkIdList.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <iostream>
+#include <limits>
+#include <map>
+#include <random>
+#include <set>
+#include <sstream>
+#include <string>
+#include <tuple>
+#include <vector>
+
+namespace
+{
+
+using osmtest::Check;
+using osmtest::MakeLines;
+using osmtest::MessageObserver;
+using osmtest::Statistic;
+using Xyz = std::array<double, 3>;
+
+std::string Num(double value)
+{
+  std::ostringstream out;
+  out.precision(10);
+  out << value;
+  return out.str();
+}
+
+/// A mesher with an observer keeping its errors and warnings.
+struct Harness
+{
+  vtkNew<vtkOverlayStitchMesher> Mesher;
+  vtkNew<MessageObserver> Messages;
+  Harness()
+  {
+    this->Mesher->AddObserver(vtkCommand::ErrorEvent, this->Messages);
+    this->Mesher->AddObserver(vtkCommand::WarningEvent, this->Messages);
+  }
+  vtkPolyData* Run(vtkPolyData* input, const std::string& label)
+  {
+    this->Messages->Clear();
+    this->Mesher->SetInputData(input);
+    this->Mesher->Update();
+    vtkPolyData* mesh = this->Mesher->GetOutput();
+    std::cout << "-- " << label << ": " << mesh->GetNumberOfPoints() << " points, "
+              << mesh->GetNumberOfCells() << " triangles, " << this->Messages->Errors.size()
+              << " error(s), " << this->Messages->Warnings.size() << " warning(s)\n";
+    this->Messages->Print(label);
+    return mesh;
+  }
+  bool NoError() const { return this->Messages->Errors.empty(); }
+};
+
+/// The closed square [0, s]^2 as one polyline, in the plane z.
+vtkSmartPointer<vtkPolyData> Square(double s = 10.0, double z = 0.0)
+{
+  return MakeLines({ { 0, 0, z }, { s, 0, z }, { s, s, z }, { 0, s, z } }, { { 0, 1, 2, 3, 0 } });
+}
+
+/// The square [0, 10]^2 with inner squares [lo, hi]^2 (each a closed polyline).
+vtkSmartPointer<vtkPolyData> SquareWithInnerSquares(const std::vector<std::array<double, 2>>& inner)
+{
+  std::vector<Xyz> xyz = { { 0, 0, 0 }, { 10, 0, 0 }, { 10, 10, 0 }, { 0, 10, 0 } };
+  std::vector<std::vector<vtkIdType>> lines = { { 0, 1, 2, 3, 0 } };
+  for (const auto& box : inner)
+  {
+    const vtkIdType first = static_cast<vtkIdType>(xyz.size());
+    xyz.push_back({ box[0], box[0], 0 });
+    xyz.push_back({ box[1], box[0], 0 });
+    xyz.push_back({ box[1], box[1], 0 });
+    xyz.push_back({ box[0], box[1], 0 });
+    lines.push_back({ first, first + 1, first + 2, first + 3, first });
+  }
+  return MakeLines(xyz, lines);
+}
+
+void AddFieldHoles(vtkPolyData* data, const std::vector<Xyz>& seeds, int components = 3)
+{
+  vtkNew<vtkDoubleArray> holes;
+  holes->SetName("HolePoints");
+  holes->SetNumberOfComponents(components);
+  holes->SetNumberOfTuples(static_cast<vtkIdType>(seeds.size()));
+  for (vtkIdType i = 0; i < static_cast<vtkIdType>(seeds.size()); ++i)
+  {
+    for (int c = 0; c < components; ++c)
+    {
+      holes->SetComponent(i, c, c < 3 ? seeds[static_cast<std::size_t>(i)][c] : 0.0);
+    }
+  }
+  data->GetFieldData()->AddArray(holes);
+}
+
+/// Points of the polydata as exact (bit-for-bit) keys.
+std::set<std::tuple<double, double, double>> PointSet(vtkPolyData* data)
+{
+  std::set<std::tuple<double, double, double>> set;
+  for (vtkIdType i = 0; i < data->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    data->GetPoint(i, p);
+    set.insert({ p[0], p[1], p[2] });
+  }
+  return set;
+}
+
+vtkIdType CountOrigin(vtkPolyData* mesh, int origin)
+{
+  vtkDataArray* array = mesh->GetPointData()->GetArray("VertexOrigin");
+  vtkIdType n = 0;
+  for (vtkIdType i = 0; array && i < array->GetNumberOfTuples(); ++i)
+  {
+    n += array->GetTuple1(i) == origin ? 1 : 0;
+  }
+  return n;
+}
+
+/// The number of triangles whose centroid (in x, y) lies strictly inside the box.
+vtkIdType CentroidsInside(vtkPolyData* mesh, double lo, double hi)
+{
+  vtkIdType n = 0;
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+  {
+    mesh->GetCellPoints(c, ids);
+    double centroid[2] = { 0, 0 };
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+    {
+      double p[3];
+      mesh->GetPoint(ids->GetId(k), p);
+      centroid[0] += p[0] / 3;
+      centroid[1] += p[1] / 3;
+    }
+    n += (centroid[0] > lo && centroid[0] < hi && centroid[1] > lo && centroid[1] < hi) ? 1 : 0;
+  }
+  return n;
+}
+
+//------------------------------------------------------------------------------
+int TestMergeTolerance()
+{
+  // The square plus two isolated points 1e-7 apart (no cell: every point is meshed).
+  auto input = MakeLines(
+    { { 0, 0, 0 }, { 10, 0, 0 }, { 10, 10, 0 }, { 0, 10, 0 }, { 5, 5, 0 }, { 5 + 1e-7, 5, 0 } },
+    { { 0, 1, 2, 3, 0 } });
+  Harness h;
+  Check(h.Mesher->GetMergeTolerance() == 0.0, "MergeTolerance defaults to 0");
+  h.Mesher->SetMergeTolerance(-1.0);
+  Check(h.Mesher->GetMergeTolerance() == 0.0, "a negative MergeTolerance is clamped to 0");
+
+  vtkPolyData* mesh = h.Run(input, "tolerance 0");
+  Check(h.NoError(), "tolerance 0: no error");
+  Check(Statistic(mesh, "DuplicatePointsMerged") == 0, "tolerance 0: nothing merged");
+  Check(CountOrigin(mesh, 0) == 6, "tolerance 0: all 6 input points are mesh vertices");
+
+  h.Mesher->SetMergeTolerance(1e-6);
+  mesh = h.Run(input, "tolerance 1e-6");
+  Check(h.NoError(), "tolerance 1e-6: no error");
+  Check(Statistic(mesh, "DuplicatePointsMerged") == 1,
+    "tolerance 1e-6: one point merged (DuplicatePointsMerged = " +
+      Num(Statistic(mesh, "DuplicatePointsMerged")) + ")");
+  Check(CountOrigin(mesh, 0) == 5, "tolerance 1e-6: 5 input vertices left");
+  Check(h.Messages->HasWarning({ "merged 1 duplicate point(s)", "point 5 with point 4" }),
+    "tolerance 1e-6: a warning says point 5 was merged with point 4");
+  const auto points = PointSet(mesh);
+  Check(points.count({ 5.0, 5.0, 0.0 }) == 1 && points.count({ 5 + 1e-7, 5.0, 0.0 }) == 0,
+    "the first of the merged points is kept, at its exact coordinates");
+
+  h.Mesher->SetMergeTolerance(1e-8);
+  mesh = h.Run(input, "tolerance 1e-8");
+  Check(Statistic(mesh, "DuplicatePointsMerged") == 0,
+    "tolerance 1e-8 (below the gap): nothing merged");
+  return 0;
+}
+
+//------------------------------------------------------------------------------
+/// The plane through O spanned by the orthonormal A and B (a tilted plane).
+struct Tilt
+{
+  Xyz O{ 3.0, -2.0, 5.0 };
+  Xyz A, B, N;
+  Tilt()
+  {
+    const double a[3] = { 0.8, 0.36, 0.48 }; // unit length
+    double b[3] = { -0.6, 0.48, 0.64 };      // unit length, orthogonal to a
+    for (int k = 0; k < 3; ++k)
+    {
+      this->A[k] = a[k];
+      this->B[k] = b[k];
+    }
+    this->N = { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
+  }
+  Xyz At(double x, double y) const
+  {
+    return { O[0] + x * A[0] + y * B[0], O[1] + x * A[1] + y * B[1], O[2] + x * A[2] + y * B[2] };
+  }
+  double Distance(const double p[3]) const
+  {
+    return std::fabs((p[0] - O[0]) * N[0] + (p[1] - O[1]) * N[1] + (p[2] - O[2]) * N[2]);
+  }
+};
+
+/// The largest distance of the points of a polydata from the tilted plane.
+double FarthestFromPlane(vtkPolyData* data, const Tilt& tilt)
+{
+  double farthest = 0.0;
+  for (vtkIdType i = 0; i < data->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    data->GetPoint(i, p);
+    farthest = std::max(farthest, tilt.Distance(p));
+  }
+  return farthest;
+}
+
+/// The square [0,10]^2 with the inner square [3,7]^2, mapped into the tilted plane.
+vtkSmartPointer<vtkPolyData> TiltedSquareWithHole(const Tilt& tilt)
+{
+  vtkSmartPointer<vtkPolyData> flat = SquareWithInnerSquares({ { 3, 7 } });
+  for (vtkIdType i = 0; i < flat->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    flat->GetPoint(i, p);
+    const Xyz q = tilt.At(p[0], p[1]);
+    flat->GetPoints()->SetPoint(i, q[0], q[1], q[2]);
+  }
+  return flat;
+}
+
+int TestTiltedPlane()
+{
+  const Tilt tilt;
+  auto input = TiltedSquareWithHole(tilt);
+  Harness h;
+  vtkPolyData* mesh = h.Run(input, "tilted plane");
+  Check(h.NoError(), "coplanar 3D input meshes without error");
+  Check(Statistic(mesh, "InputPlaneFitted") == 1, "the input was meshed in its fitted plane");
+  Check(mesh->GetNumberOfCells() > 0, "the mesh has triangles");
+  const double area = osmtest::TotalArea(mesh);
+  Check(std::fabs(area - 100.0) < 1e-9,
+    "the mesh covers the tilted square (3D area " + Num(area) + ", expected 100)");
+  Check(osmtest::LargestAngle(mesh) <= 170.0,
+    "no angle above 170 degrees (" + Num(osmtest::LargestAngle(mesh)) + ")");
+
+  // Every input vertex comes back bit for bit.
+  const auto points = PointSet(mesh);
+  int exact = 0;
+  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    input->GetPoint(i, p);
+    exact += points.count({ p[0], p[1], p[2] }) ? 1 : 0;
+  }
+  Check(exact == input->GetNumberOfPoints(),
+    "every input vertex is an output point with its exact coordinates (" + std::to_string(exact) +
+      " of " + std::to_string(input->GetNumberOfPoints()) + ")");
+  Check(CountOrigin(mesh, 0) == input->GetNumberOfPoints(), "VertexOrigin 0 for each input vertex");
+
+  // Every output point lies in the plane.
+  const double d0 = FarthestFromPlane(mesh, tilt);
+  Check(d0 < 1e-12, "every mesh point lies in the tilted plane (farthest " + Num(d0) + ")");
+  const double d1 = FarthestFromPlane(h.Mesher->GetEdgesOutput(), tilt);
+  Check(h.Mesher->GetEdgesOutput()->GetNumberOfCells() > 0 && d1 < 1e-12,
+    "every Edges point lies in the plane (farthest " + Num(d1) + ")");
+  const double d2 = FarthestFromPlane(h.Mesher->GetOverlayOutput(), tilt);
+  Check(h.Mesher->GetOverlayOutput()->GetNumberOfCells() > 0 && d2 < 1e-12,
+    "every Overlay point lies in the plane (farthest " + Num(d2) + ")");
+
+  // Hole seeds: from the field data (3D, projected onto the plane) ...
+  const Xyz center = tilt.At(5, 5);
+  AddFieldHoles(input, { { center[0], center[1], center[2] + 0.25 } });
+  mesh = h.Run(input, "tilted plane, field data hole");
+  const double holed = osmtest::TotalArea(mesh);
+  Check(h.NoError() && std::fabs(holed - 84.0) < 1e-9,
+    "a field data seed off the plane is projected onto it: the hole is cut (area " + Num(holed) +
+      ")");
+  // ... and from the property (x, y), moved along z onto the plane.
+  input->GetFieldData()->RemoveArray("HolePoints");
+  h.Mesher->AddHolePoint(center[0], center[1]);
+  mesh = h.Run(input, "tilted plane, property hole");
+  const double holed2 = osmtest::TotalArea(mesh);
+  Check(h.NoError() && std::fabs(holed2 - 84.0) < 1e-9,
+    "a property seed (x, y) is lifted onto the plane: the hole is cut (area " + Num(holed2) + ")");
+  return 0;
+}
+
+//------------------------------------------------------------------------------
+int TestNonCoplanar()
+{
+  auto input = MakeLines(
+    { { 0, 0, 0 }, { 10, 0, 0 }, { 10, 10, 0 }, { 0, 10, 0 }, { 5, 5, 0.5 }, { 6, 5, 0 } },
+    { { 0, 1, 2, 3, 0 } });
+  Harness h;
+  h.Run(input, "non-coplanar");
+  Check(h.Messages->Errors.size() == 1, "exactly one error");
+  Check(h.Messages->HasError({ "not coplanar", "point 4 at (5, 5, 0.5)",
+          "from their best-fitting plane", "ProjectToXYPlane" }),
+    "the error names point 4, its coordinates, the plane and the way out");
+  // The distance of point 4 from the least-squares plane, within a few percent of 0.5 * 5/6.
+  bool distanceOk = false;
+  if (!h.Messages->Errors.empty())
+  {
+    const std::string& e = h.Messages->Errors.front();
+    const std::size_t at = e.find(") is ");
+    distanceOk = at != std::string::npos && std::fabs(std::stod(e.substr(at + 5)) - 0.41) < 0.05;
+  }
+  Check(distanceOk, "the error gives the point's distance from the plane (about 0.41)");
+  Check(osmtest::AllOutputsEmpty(h.Mesher), "all outputs empty");
+  return 0;
+}
+
+//------------------------------------------------------------------------------
+int TestProjectToXY()
+{
+  std::vector<Xyz> xyz = { { 0, 0, 1 }, { 10, 0, 2 }, { 10, 10, 0.5 }, { 0, 10, 4 }, { 2, 6, 3 },
+    { 7, 6, 1.5 } };
+  auto input = MakeLines(xyz, { { 0, 1, 2, 3, 0 }, { 4, 5 } });
+  Harness h;
+  Check(!h.Mesher->GetProjectToXYPlane(), "ProjectToXYPlane defaults to off");
+  h.Run(input, "non-coplanar, projection off");
+  Check(h.Messages->HasError({ "not coplanar" }), "off: non-coplanar input is an error");
+
+  h.Mesher->ProjectToXYPlaneOn();
+  vtkPolyData* mesh = h.Run(input, "non-coplanar, projection on");
+  Check(h.NoError(), "on: no error");
+  Check(h.Messages->HasWarning({ "projected onto the XY plane", "z = 2" }),
+    "on: a warning says the input was projected and the outputs lie at the mean z = 2");
+  Check(Statistic(mesh, "InputProjectedToXY") == 1, "on: statistic InputProjectedToXY = 1");
+  double bounds[6];
+  mesh->GetBounds(bounds);
+  Check(bounds[4] == 2.0 && bounds[5] == 2.0, "on: every output point at z = 2, the mean z");
+  const auto points = PointSet(mesh);
+  int kept = 0;
+  for (const Xyz& p : xyz)
+  {
+    kept += points.count({ p[0], p[1], 2.0 }) ? 1 : 0;
+  }
+  Check(kept == 6, "on: every input point keeps its exact x and y");
+  Check(std::fabs(osmtest::TotalArea(mesh) - 100.0) < 1e-9, "on: the projected square is meshed");
+
+  // A plane z = constant is never changed by the option.
+  mesh = h.Run(Square(10.0, 7.5), "z = 7.5, projection on");
+  mesh->GetBounds(bounds);
+  Check(h.NoError() && bounds[4] == 7.5 && bounds[5] == 7.5, "on: a plane z = 7.5 stays at 7.5");
+  return 0;
+}
+
+//------------------------------------------------------------------------------
+int TestFieldHoles()
+{
+  auto input = SquareWithInnerSquares({ { 3, 7 } });
+  AddFieldHoles(input, { { 5, 5, 0 } });
+  Harness h;
+  Check(h.Mesher->GetUseInputHolePoints(), "UseInputHolePoints defaults to on");
+
+  h.Mesher->UseInputHolePointsOff();
+  vtkPolyData* mesh = h.Run(input, "field data seed, UseInputHolePoints off");
+  const vtkIdType without = mesh->GetNumberOfCells();
+  Check(h.NoError() && std::fabs(osmtest::TotalArea(mesh) - 100.0) < 1e-9,
+    "off: the inner square is meshed (area 100)");
+  Check(CentroidsInside(mesh, 3, 7) > 0, "off: triangles inside the inner square");
+  Check(Statistic(mesh, "InputHolePoints") == 0, "off: InputHolePoints = 0");
+
+  h.Mesher->UseInputHolePointsOn();
+  mesh = h.Run(input, "field data seed, UseInputHolePoints on");
+  const vtkIdType with = mesh->GetNumberOfCells();
+  const double area = osmtest::TotalArea(mesh);
+  Check(h.NoError() && std::fabs(area - 84.0) < 1e-9,
+    "on: the hole is cut (area " + Num(area) + ", expected 84)");
+  Check(with < without,
+    "on: fewer triangles (" + std::to_string(with) + " < " + std::to_string(without) + ")");
+  Check(CentroidsInside(mesh, 3, 7) == 0, "on: no triangle centroid inside the hole");
+  Check(Statistic(mesh, "InputHolePoints") == 1, "on: InputHolePoints = 1");
+
+  // Field data seeds add to the property's seeds.
+  auto two = SquareWithInnerSquares({ { 2, 4 }, { 6, 8 } });
+  AddFieldHoles(two, { { 3, 3, 0 } });
+  h.Mesher->AddHolePoint(7, 7);
+  mesh = h.Run(two, "one field data seed and one property seed");
+  const double area2 = osmtest::TotalArea(mesh);
+  Check(h.NoError() && std::fabs(area2 - 92.0) < 1e-9,
+    "both seeds are used: two holes (area " + Num(area2) + ", expected 92)");
+  Check(CentroidsInside(mesh, 2, 4) == 0 && CentroidsInside(mesh, 6, 8) == 0,
+    "no triangle centroid in either hole");
+  h.Mesher->RemoveAllHolePoints();
+
+  // An array of the wrong shape is ignored with a warning.
+  auto bad = SquareWithInnerSquares({ { 3, 7 } });
+  AddFieldHoles(bad, { { 5, 5, 0 } }, 4);
+  mesh = h.Run(bad, "HolePoints with 4 components");
+  Check(h.NoError() && std::fabs(osmtest::TotalArea(mesh) - 100.0) < 1e-9,
+    "a 4-component HolePoints array is not used");
+  Check(h.Messages->HasWarning({ "HolePoints", "4 components", "ignored" }),
+    "a warning says why it was ignored");
+  return 0;
+}
+
+//------------------------------------------------------------------------------
+int TestIgnoredCells()
+{
+  auto input = Square();
+  vtkPoints* points = input->GetPoints();
+  const vtkIdType p4 = points->InsertNextPoint(2, 2, 0);
+  const vtkIdType p5 = points->InsertNextPoint(3, 2, 0);
+  const vtkIdType p6 = points->InsertNextPoint(2, 3, 0);
+  const vtkIdType p7 = points->InsertNextPoint(3, 3, 0);
+  vtkNew<vtkCellArray> strips;
+  const vtkIdType strip[] = { p4, p5, p6, p7 };
+  strips->InsertNextCell(4, strip);
+  strips->InsertNextCell(3, strip);
+  input->SetStrips(strips);
+  input->GetLines()->InsertNextCell(0, static_cast<const vtkIdType*>(nullptr)); // empty cell
+  const vtkIdType single[] = { p4 };
+  input->GetLines()->InsertNextCell(1, single); // a line with one point
+  vtkNew<vtkCellArray> polys;
+  const vtkIdType twoPoints[] = { p5, p6 };
+  polys->InsertNextCell(2, twoPoints); // a polygon with two points
+  const vtkIdType closed[] = { p4, p5, p7, p6, p4 };
+  polys->InsertNextCell(5, closed); // a polygon repeating its first point: used
+  input->SetPolys(polys);
+
+  Harness h;
+  vtkPolyData* mesh = h.Run(input, "ignored cells");
+  Check(h.NoError(), "no error");
+  Check(MessageObserver::Count(h.Messages->Warnings, { "Ignored" }) == 1,
+    "exactly one warning about ignored cells");
+  Check(
+    h.Messages->HasWarning({ "Ignored 5 input cell(s)", "2 triangle strip(s)", "1 empty cell(s)",
+      "1 line(s) with a single point", "1 polygon(s) with fewer than 3 points" }),
+    "it counts them by kind: 2 strips, 1 empty cell, 1 single-point line, 1 two-point polygon");
+  Check(Statistic(mesh, "IgnoredCells") == 5, "statistic IgnoredCells = 5");
+  Check(Statistic(mesh, "ZeroLengthSegmentsDropped") == 0,
+    "the repeated closing point of a polygon gives no zero-length segment");
+  Check(std::fabs(osmtest::TotalArea(mesh) - 100.0) < 1e-9, "the square is meshed");
+  return 0;
+}
+
+//------------------------------------------------------------------------------
+/// Records the progress events of an algorithm and may abort it.
+class ProgressRecorder : public vtkCommand
+{
+public:
+  static ProgressRecorder* New() { return new ProgressRecorder; }
+  void Execute(vtkObject* caller, unsigned long, void* data) override
+  {
+    auto* algorithm = static_cast<vtkAlgorithm*>(caller);
+    const double progress = *static_cast<double*>(data);
+    this->Values.push_back(progress);
+    if (const char* text = algorithm->GetProgressText())
+    {
+      if (this->Phases.empty() || this->Phases.back() != text)
+      {
+        this->Phases.push_back(text);
+      }
+    }
+    if (this->AbortAt >= 0 && progress >= this->AbortAt && !this->AbortRequested)
+    {
+      this->AbortRequested = true;
+      this->AbortTime = std::chrono::steady_clock::now();
+      this->AbortPhase = algorithm->GetProgressText() ? algorithm->GetProgressText() : "";
+      algorithm->SetAbortExecute(1);
+    }
+  }
+  std::vector<double> Values;
+  std::vector<std::string> Phases;
+  double AbortAt = -1.0;
+  bool AbortRequested = false;
+  std::string AbortPhase;
+  std::chrono::steady_clock::time_point AbortTime;
+};
+
+int TestProgress()
+{
+  auto input = SquareWithInnerSquares({ { 3, 7 } });
+  Harness h;
+  vtkNew<ProgressRecorder> recorder;
+  h.Mesher->AddObserver(vtkCommand::ProgressEvent, recorder);
+  h.Run(input, "progress");
+  Check(h.NoError(), "no error");
+  std::string phases;
+  for (const std::string& p : recorder->Phases)
+  {
+    phases += p + " ";
+  }
+  std::cout << "phases: " << phases << "\n";
+  for (const char* phase :
+    { "input", "clean", "overlay", "stitch", "complete", "domain", "output" })
+  {
+    Check(
+      std::find(recorder->Phases.begin(), recorder->Phases.end(), phase) != recorder->Phases.end(),
+      std::string("progress reported in phase ") + phase);
+  }
+  Check(
+    std::is_sorted(recorder->Values.begin(), recorder->Values.end()), "progress never goes back");
+  Check(!recorder->Values.empty() && recorder->Values.back() == 1.0, "progress ends at 1");
+  return 0;
+}
+
+/// Random points in the unit square with a few long segments: about 10^6
+/// triangles at the default settings (see the figures printed below).
+vtkSmartPointer<vtkPolyData> BigInput(int points)
+{
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  std::vector<Xyz> xyz = { { -0.1, -0.1, 0 }, { 1.1, -0.1, 0 }, { 1.1, 1.1, 0 }, { -0.1, 1.1, 0 } };
+  for (int i = 0; i < points; ++i)
+  {
+    xyz.push_back({ uniform(rng), uniform(rng), 0 });
+  }
+  return MakeLines(xyz, { { 0, 1, 2, 3, 0 } });
+}
+
+int TestAbort(int points)
+{
+  auto input = BigInput(points);
+  Harness h;
+  // Progress 0.3, 0.7 and 0.9 fall in the overlay, complete and output phases.
+  for (const double at : { 0.3, 0.7, 0.9 })
+  {
+    vtkNew<ProgressRecorder> recorder;
+    recorder->AbortAt = at;
+    const unsigned long tag = h.Mesher->AddObserver(vtkCommand::ProgressEvent, recorder);
+    h.Mesher->Modified();
+    const auto start = std::chrono::steady_clock::now();
+    h.Run(input, "abort requested at progress " + Num(at));
+    const auto end = std::chrono::steady_clock::now();
+    h.Mesher->RemoveObserver(tag);
+    const std::string row = "abort at " + Num(at);
+    Check(recorder->AbortRequested, row + ": the observer requested the abort");
+    if (recorder->AbortRequested)
+    {
+      std::cout << row << ": requested in phase '" << recorder->AbortPhase << "' after "
+                << std::chrono::duration<double>(recorder->AbortTime - start).count()
+                << " s; Update() returned "
+                << std::chrono::duration<double>(end - recorder->AbortTime).count() << " s later\n";
+    }
+    Check(h.Messages->Errors.size() == 1 && h.Messages->HasError({ "aborted by the user" }),
+      row + ": the run ends with the error 'aborted by the user'");
+    Check(osmtest::AllOutputsEmpty(h.Mesher), row + ": all outputs are empty");
+  }
+
+  // The flag was handled: the next run is not aborted.
+  vtkPolyData* mesh = h.Run(SquareWithInnerSquares({ { 3, 7 } }), "the run after the aborts");
+  Check(h.NoError() && mesh->GetNumberOfCells() > 0, "the next run meshes normally");
+  return 0;
+}
+
+/// Meshes the big input without aborting, to measure its size (not a ctest).
+int MeasureBig(int points)
+{
+  auto input = BigInput(points);
+  Harness h;
+  const auto start = std::chrono::steady_clock::now();
+  vtkPolyData* mesh = h.Run(input, "big input, not aborted");
+  std::cout << points << " random points: " << mesh->GetNumberOfCells() << " triangles in "
+            << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
+            << " s\n";
+  return h.NoError() ? 0 : 1;
+}
+
+//------------------------------------------------------------------------------
+// The bad-input matrix (issue 6) through the filter. Each row states its
+// expected outcome: an error naming the offending item (and empty outputs), or
+// a mesh with a documented repair counted in the statistics (field data).
+int TestMatrix()
+{
+  Harness h;
+  auto meshOk = [&](vtkPolyData* mesh, const std::string& row) {
+    Check(h.NoError(), row + ": no error");
+    Check(mesh->GetNumberOfCells() > 0 && osmtest::AllPointsFinite(mesh),
+      row + ": a mesh with finite points");
+    Check(osmtest::LargestAngle(mesh) <= 170.0,
+      row + ": no angle above 170 degrees (" + Num(osmtest::LargestAngle(mesh)) + ")");
+  };
+  auto errorOnly = [&](const std::vector<std::string>& texts, const std::string& row) {
+    Check(h.Messages->Errors.size() == 1 && h.Messages->HasError(texts),
+      row + ": one error naming the problem");
+    Check(osmtest::AllOutputsEmpty(h.Mesher), row + ": all outputs empty");
+  };
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+
+  // 1. NaN coordinate -> error naming the point.
+  auto input = Square();
+  input->GetPoints()->SetPoint(2, 10, nan, 0);
+  h.Run(input, "NaN");
+  errorOnly({ "input point 2 has a non-finite coordinate (10, nan, 0)" }, "NaN");
+
+  // 2. Infinite coordinate (in z too) -> error naming the point.
+  input = Square();
+  input->GetPoints()->SetPoint(3, 0, 10, -inf);
+  h.Run(input, "inf");
+  errorOnly({ "input point 3 has a non-finite coordinate (0, 10, -inf)" }, "inf");
+
+  // 3. Exact duplicate point -> merged, counted, warned.
+  input = MakeLines({ { 0, 0, 0 }, { 10, 0, 0 }, { 10, 10, 0 }, { 0, 10, 0 }, { 10, 10, 0 } },
+    { { 0, 1, 4, 3, 0 } });
+  vtkPolyData* mesh = h.Run(input, "exact duplicate");
+  meshOk(mesh, "exact duplicate");
+  Check(
+    Statistic(mesh, "DuplicatePointsMerged") == 1, "exact duplicate: DuplicatePointsMerged = 1");
+  Check(h.Messages->HasWarning({ "merged 1 duplicate point(s)", "point 4 with point 2" }),
+    "exact duplicate: the warning names points 4 and 2");
+
+  // 4. Near duplicate (1e-9 apart): kept apart at MergeTolerance 0, merged at 1e-6.
+  input = MakeLines(
+    { { 0, 0, 0 }, { 10, 0, 0 }, { 10, 10, 0 }, { 0, 10, 0 }, { 5, 5, 0 }, { 5, 5 + 1e-9, 0 } },
+    { { 0, 1, 2, 3, 0 }, { 4, 0 } });
+  mesh = h.Run(input, "near duplicate, tolerance 0");
+  meshOk(mesh, "near duplicate, tolerance 0");
+  Check(Statistic(mesh, "DuplicatePointsMerged") == 0 && CountOrigin(mesh, 0) == 6,
+    "near duplicate, tolerance 0: both points kept");
+  h.Mesher->SetMergeTolerance(1e-6);
+  mesh = h.Run(input, "near duplicate, tolerance 1e-6");
+  meshOk(mesh, "near duplicate, tolerance 1e-6");
+  Check(Statistic(mesh, "DuplicatePointsMerged") == 1 && CountOrigin(mesh, 0) == 5,
+    "near duplicate, tolerance 1e-6: merged and counted");
+  Check(h.Messages->HasWarning({ "merged 1 duplicate point(s)", "point 5 with point 4" }),
+    "near duplicate, tolerance 1e-6: the warning names points 5 and 4");
+  h.Mesher->SetMergeTolerance(0.0);
+
+  // 5. Zero-length segments: a repeated id, and two ids at the same place -> dropped, counted.
+  input = MakeLines({ { 0, 0, 0 }, { 10, 0, 0 }, { 10, 10, 0 }, { 0, 10, 0 }, { 0, 0, 0 } },
+    { { 0, 1, 2, 3, 0 }, { 2, 2 }, { 0, 4 } });
+  mesh = h.Run(input, "zero-length segments");
+  meshOk(mesh, "zero-length segments");
+  Check(Statistic(mesh, "ZeroLengthSegmentsDropped") == 2,
+    "zero-length segments: ZeroLengthSegmentsDropped = 2 (got " +
+      Num(Statistic(mesh, "ZeroLengthSegmentsDropped")) + ")");
+  Check(h.Messages->HasWarning({ "dropped 2 zero-length segment(s)", "is cell " }),
+    "zero-length segments: the warning says which cell the example segment is");
+
+  // 6. Crossing segments, ResolveIntersections on -> split, counted.
+  input = MakeLines({ { 0, 0, 0 }, { 10, 0, 0 }, { 10, 10, 0 }, { 0, 10, 0 } },
+    { { 0, 1, 2, 3, 0 }, { 0, 2 }, { 1, 3 } });
+  mesh = h.Run(input, "crossing, resolve on");
+  meshOk(mesh, "crossing, resolve on");
+  Check(Statistic(mesh, "CrossingsSplit") == 1, "crossing, resolve on: CrossingsSplit = 1");
+  Check(PointSet(mesh).count({ 5.0, 5.0, 0.0 }) == 1,
+    "crossing, resolve on: the crossing (5, 5) is a mesh vertex");
+  Check(CountOrigin(mesh, 3) >= 1, "crossing, resolve on: it has VertexOrigin 3 (other)");
+
+  // 7. Crossing segments, ResolveIntersections off -> error naming both segments.
+  h.Mesher->ResolveIntersectionsOff();
+  h.Run(input, "crossing, resolve off");
+  errorOnly({ "input segment 4 and input segment 5 cross near (5, 5)",
+              "segment 4 is cell 1 from point 0 to point 2",
+              "segment 5 is cell 2 from point 1 to point 3" },
+    "crossing, resolve off");
+  h.Mesher->ResolveIntersectionsOn();
+
+  // 8. Collinear overlapping segments -> split at each other's endpoints, counted.
+  input = MakeLines({ { 0, 0, 0 }, { 10, 0, 0 }, { 10, 10, 0 }, { 0, 10, 0 }, { 2, 5, 0 },
+                      { 6, 5, 0 }, { 4, 5, 0 }, { 8, 5, 0 } },
+    { { 0, 1, 2, 3, 0 }, { 4, 5 }, { 6, 7 } });
+  mesh = h.Run(input, "collinear overlap");
+  meshOk(mesh, "collinear overlap");
+  Check(Statistic(mesh, "SegmentsSplitAtVertices") >= 2,
+    "collinear overlap: SegmentsSplitAtVertices >= 2 (got " +
+      Num(Statistic(mesh, "SegmentsSplitAtVertices")) + ")");
+
+  // 9. A vertex on a segment (a T-junction) -> the segment is split there, counted.
+  input = MakeLines(
+    { { 0, 0, 0 }, { 10, 0, 0 }, { 10, 10, 0 }, { 0, 10, 0 }, { 5, 0, 0 } }, { { 0, 1, 2, 3, 0 } });
+  mesh = h.Run(input, "vertex on segment");
+  meshOk(mesh, "vertex on segment");
+  Check(Statistic(mesh, "SegmentsSplitAtVertices") >= 1,
+    "vertex on segment: SegmentsSplitAtVertices >= 1");
+  Check(CountOrigin(mesh, 0) == 5, "vertex on segment: the vertex is in the mesh");
+
+  // 10-12. One point, two points, all points collinear: no area to enclose or
+  // hull, so the padded box is meshed, with a warning saying why.
+  for (int n : { 1, 2, 5 })
+  {
+    std::vector<Xyz> xyz;
+    for (int i = 0; i < n; ++i)
+    {
+      xyz.push_back({ 1.0 + i, 2.0 + 2 * i, 0 });
+    }
+    const std::string row = std::to_string(n) + (n == 5 ? " collinear points" : " point(s)");
+    mesh = h.Run(MakeLines(xyz, {}), row);
+    meshOk(mesh, row);
+    Check(CountOrigin(mesh, 0) == n, row + ": every point is a mesh vertex");
+    if (n > 1)
+    {
+      Check(h.Messages->HasWarning({ "collinear", "padded bounding box" }),
+        row + ": a warning says the box is meshed instead of the hull");
+    }
+  }
+
+  // 13. Empty input -> empty outputs, a warning, no error.
+  vtkNew<vtkPolyData> empty;
+  h.Run(empty, "empty");
+  Check(h.NoError() && osmtest::AllOutputsEmpty(h.Mesher), "empty: no error, empty outputs");
+  Check(h.Messages->HasWarning({ "no points" }), "empty: a warning says there are no points");
+
+  // 14. 10,000 segments through one vertex -> meshed within the bound.
+  {
+    std::vector<Xyz> xyz = { { 0, 0, 0 } };
+    std::vector<std::vector<vtkIdType>> lines;
+    const double pi = std::acos(-1.0);
+    for (int i = 0; i < 10000; ++i)
+    {
+      xyz.push_back({ std::cos(2 * pi * i / 10000), std::sin(2 * pi * i / 10000), 0 });
+      lines.push_back({ 0, static_cast<vtkIdType>(i + 1) });
+    }
+    mesh = h.Run(MakeLines(xyz, lines), "10,000 segments through one vertex");
+    meshOk(mesh, "10,000 segments through one vertex");
+    Check(CountOrigin(mesh, 0) == 10001, "10,000 segments: every input point is a mesh vertex");
+  }
+
+  // 15. Coordinates of magnitude 1e300 -> meshed, points finite, exact corners.
+  mesh = h.Run(Square(1e300), "coordinates 1e300");
+  meshOk(mesh, "coordinates 1e300");
+  double bounds[6];
+  mesh->GetBounds(bounds);
+  Check(bounds[0] == 0 && bounds[1] == 1e300 && bounds[2] == 0 && bounds[3] == 1e300,
+    "coordinates 1e300: the mesh spans the square exactly");
+  // ... and 1e308, too close to overflow to pad the domain -> clear error.
+  h.Run(Square(1e308), "coordinates 1e308");
+  errorOnly({ "too large" }, "coordinates 1e308");
+
+  // 16. A spread of 1e-300 -> meshed, exact corners; a 1e-300 detail next to 1 -> clear error.
+  mesh = h.Run(Square(1e-300), "spread 1e-300");
+  meshOk(mesh, "spread 1e-300");
+  mesh->GetBounds(bounds);
+  Check(bounds[0] == 0 && bounds[1] == 1e-300 && bounds[3] == 1e-300,
+    "spread 1e-300: the mesh spans the square exactly");
+  input = Square(1.0);
+  input->GetPoints()->InsertNextPoint(0.5, 1e-300, 0);
+  h.Run(input, "1e-300 next to 1");
+  errorOnly({ "point 4", "too small next to the largest coordinate" }, "1e-300 next to 1");
+
+  // 17. Non-line cells: a triangle strip -> ignored with one warning, its points still meshed.
+  input = Square();
+  vtkNew<vtkCellArray> strips;
+  const vtkIdType strip[] = { 0, 1, 3, 2 };
+  strips->InsertNextCell(4, strip);
+  input->SetStrips(strips);
+  mesh = h.Run(input, "triangle strip");
+  meshOk(mesh, "triangle strip");
+  Check(h.Messages->HasWarning({ "Ignored 1 input cell(s): 1 triangle strip(s)" }),
+    "triangle strip: one warning counting it");
+  // ... a polygon cell: its edges are segments.
+  input = Square();
+  vtkNew<vtkCellArray> polys;
+  const vtkIdType quad[] = { 0, 1, 2, 3 };
+  polys->InsertNextCell(4, quad);
+  input->SetLines(nullptr);
+  input->SetPolys(polys);
+  h.Mesher->SetDomainToEnclosed();
+  mesh = h.Run(input, "polygon");
+  meshOk(mesh, "polygon");
+  Check(std::fabs(osmtest::TotalArea(mesh) - 100.0) < 1e-9,
+    "polygon: its edges enclose the meshed region");
+  h.Mesher->SetDomainToAuto();
+
+  // 18. Non-coplanar 3D points -> error naming the farthest point (see also non-coplanar).
+  input = Square();
+  input->GetPoints()->InsertNextPoint(5, 5, 3);
+  h.Run(input, "non-coplanar");
+  errorOnly({ "not coplanar", "point 4 at (5, 5, 3)" }, "non-coplanar");
+  return 0;
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  const std::string test = argc > 1 ? argv[1] : "";
+  const int points = argc > 2 ? std::stoi(argv[2]) : 100000;
+  const std::map<std::string, std::function<int()>> tests = {
+    { "merge-tolerance", TestMergeTolerance },
+    { "tilted-plane", TestTiltedPlane },
+    { "non-coplanar", TestNonCoplanar },
+    { "project-xy", TestProjectToXY },
+    { "field-holes", TestFieldHoles },
+    { "ignored-cells", TestIgnoredCells },
+    { "progress", TestProgress },
+    { "abort", [points] { return TestAbort(points); } },
+    { "measure-big", [points] { return MeasureBig(points); } },
+    { "matrix", TestMatrix },
+  };
+  const auto it = tests.find(test);
+  if (it == tests.end())
+  {
+    std::cerr << "usage: " << argv[0] << " <test> [points]; tests:";
+    for (const auto& t : tests)
+    {
+      std::cerr << " " << t.first;
+    }
+    std::cerr << "\n";
+    return 2;
+  }
+  const int status = it->second();
+  const int failures = osmtest::Failures();
+  std::cout << (status == 0 && failures == 0 ? "PASSED" : "FAILED") << " (" << failures
+            << " failed check(s))\n";
+  return status != 0 ? status : std::min(failures, 100);
+}
