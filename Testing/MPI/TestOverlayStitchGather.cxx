@@ -1,0 +1,190 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026, the Overlay Stitch Meshing authors
+//
+// Unit test of the combination done on rank 0 after the gather (no MPI needed):
+// points and cells shared between pieces are merged, duplicates inside one piece
+// are kept, arrays follow their points and cells, hole seeds come from every piece.
+#include "OverlayStitchGather.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDataObject.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkIdList.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+
+#include <array>
+#include <cmath>
+#include <iostream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace
+{
+
+int Failures = 0;
+
+void Check(bool condition, const std::string& what)
+{
+  std::cout << (condition ? "  ok    " : "  FAIL  ") << what << "\n";
+  if (!condition)
+  {
+    ++Failures;
+  }
+}
+
+/// A piece: points (x, y), 2-point lines, vertex cells, a point marker per point,
+/// a segment marker per cell, hole seeds.
+vtkSmartPointer<vtkPolyData> MakePiece(const std::vector<std::array<double, 2>>& points,
+  const std::vector<std::pair<vtkIdType, vtkIdType>>& lines, const std::vector<vtkIdType>& verts,
+  const std::vector<int>& pointMarkers, const std::vector<int>& cellMarkers,
+  const std::vector<std::array<double, 2>>& holes)
+{
+  auto piece = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> pts;
+  for (const auto& p : points)
+  {
+    pts->InsertNextPoint(p[0], p[1], 0.0);
+  }
+  piece->SetPoints(pts);
+  vtkNew<vtkCellArray> vertCells;
+  for (vtkIdType v : verts)
+  {
+    vertCells->InsertNextCell(1, &v);
+  }
+  vtkNew<vtkCellArray> lineCells;
+  for (const auto& l : lines)
+  {
+    const vtkIdType ids[2] = { l.first, l.second };
+    lineCells->InsertNextCell(2, ids);
+  }
+  piece->SetVerts(vertCells);
+  piece->SetLines(lineCells);
+  vtkNew<vtkIntArray> pointMarker;
+  pointMarker->SetName("PointMarker");
+  for (int m : pointMarkers)
+  {
+    pointMarker->InsertNextValue(m);
+  }
+  piece->GetPointData()->AddArray(pointMarker);
+  vtkNew<vtkIntArray> cellMarker;
+  cellMarker->SetName("SegmentMarker");
+  for (int m : cellMarkers)
+  {
+    cellMarker->InsertNextValue(m);
+  }
+  piece->GetCellData()->AddArray(cellMarker);
+  vtkNew<vtkDoubleArray> seeds;
+  seeds->SetName("HolePoints");
+  seeds->SetNumberOfComponents(3);
+  for (const auto& h : holes)
+  {
+    seeds->InsertNextTuple3(h[0], h[1], 0.0);
+  }
+  piece->GetFieldData()->AddArray(seeds);
+  return piece;
+}
+
+std::array<double, 2> PointOf(vtkPolyData* data, vtkIdType id)
+{
+  double x[3];
+  data->GetPoint(id, x);
+  return { x[0], x[1] };
+}
+
+} // namespace
+
+int main()
+{
+  // Piece 0: a corner (0,0) - (1,0) - (1,1), one hole seed, an extra field array.
+  auto piece0 = MakePiece({ { 0, 0 }, { 1, 0 }, { 1, 1 } }, { { 0, 1 }, { 1, 2 } }, {},
+    { 10, 11, 12 }, { 100, 101 }, { { 0.5, 0.25 } });
+  vtkNew<vtkIntArray> other;
+  other->SetName("Other");
+  other->InsertNextValue(7);
+  piece0->GetFieldData()->AddArray(other);
+  // Piece 1 shares (1,1), (0,0), (1,0) with piece 0 (ids 0, 2, 4), holds the point
+  // (0,1) twice (ids 1 and 3: the user's duplicate, kept), repeats piece 0's
+  // segment (1,0)-(1,1) reversed (dropped), and marks (0,1) copy 3 with a vertex cell.
+  // Its hole seeds repeat piece 0's and add one; -0.0 is the same as 0.0.
+  auto piece1 = MakePiece({ { 1, 1 }, { 0, 1 }, { -0.0, 0 }, { 0, 1 }, { 1, 0 } },
+    { { 0, 1 }, { 1, 2 }, { 0, 4 } }, { 3 }, { 20, 21, 22, 23, 24 }, { 200, 201, 202, 203 },
+    { { 0.5, 0.25 }, { 0.25, 0.5 } });
+  // Piece 2 is empty (no points) but carries a hole seed; piece 3 is missing.
+  auto piece2 = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkDoubleArray> seeds2;
+  seeds2->SetName("HolePoints");
+  seeds2->SetNumberOfComponents(3);
+  seeds2->InsertNextTuple3(0.75, 0.5, 0.0);
+  piece2->GetFieldData()->AddArray(seeds2);
+
+  std::vector<vtkSmartPointer<vtkDataObject>> pieces = { piece0, piece1, piece2, nullptr };
+  OverlayStitchGatherSummary summary;
+  vtkSmartPointer<vtkPolyData> combined = OverlayStitchCombinePieces(pieces, &summary);
+
+  std::cout << "combine four pieces\n";
+  Check(combined->GetNumberOfPoints() == 5, "5 points (3 shared merged, the in-piece copy kept)");
+  Check(summary.SharedPointsMerged == 3, "3 shared points counted");
+  Check(combined->GetNumberOfLines() == 4, "4 lines (the repeated segment dropped)");
+  Check(summary.SharedCellsDropped == 1, "1 shared cell counted");
+  Check(combined->GetNumberOfVerts() == 1, "1 vertex cell");
+  const std::vector<std::array<double, 2>> expectedPoints = { { 0, 0 }, { 1, 0 }, { 1, 1 },
+    { 0, 1 }, { 0, 1 } };
+  bool pointsOk = combined->GetNumberOfPoints() == 5;
+  for (vtkIdType i = 0; pointsOk && i < 5; ++i)
+  {
+    pointsOk = PointOf(combined, i) == expectedPoints[static_cast<std::size_t>(i)];
+  }
+  Check(pointsOk, "points in first-seen order");
+
+  auto* pointMarker = vtkIntArray::SafeDownCast(combined->GetPointData()->GetArray("PointMarker"));
+  Check(pointMarker && pointMarker->GetNumberOfTuples() == 5 && pointMarker->GetValue(0) == 10 &&
+      pointMarker->GetValue(2) == 12 && pointMarker->GetValue(3) == 21 &&
+      pointMarker->GetValue(4) == 23,
+    "point data follows the first copy of each point");
+
+  // Cell ids: the vertex cell first, then the lines in piece order.
+  auto* cellMarker = vtkIntArray::SafeDownCast(combined->GetCellData()->GetArray("SegmentMarker"));
+  Check(cellMarker && cellMarker->GetNumberOfTuples() == 5 && cellMarker->GetValue(0) == 200 &&
+      cellMarker->GetValue(1) == 100 && cellMarker->GetValue(2) == 101 &&
+      cellMarker->GetValue(3) == 201 && cellMarker->GetValue(4) == 202,
+    "cell data follows its cells (verts, then lines)");
+  vtkNew<vtkIdList> ids;
+  combined->GetCellPoints(0, ids);
+  Check(ids->GetNumberOfIds() == 1 && ids->GetId(0) == 4, "the vertex cell is on the kept copy");
+  combined->GetCellPoints(4, ids);
+  Check(ids->GetNumberOfIds() == 2 && ids->GetId(0) == 3 && ids->GetId(1) == 0,
+    "piece 1's second line uses the merged (0,0)");
+
+  auto* holes = vtkDoubleArray::SafeDownCast(combined->GetFieldData()->GetArray("HolePoints"));
+  Check(holes && holes->GetNumberOfComponents() == 3 && holes->GetNumberOfTuples() == 3 &&
+      holes->GetComponent(0, 0) == 0.5 && holes->GetComponent(1, 0) == 0.25 &&
+      holes->GetComponent(2, 0) == 0.75,
+    "3 distinct hole seeds from every piece, the empty one included");
+  Check(summary.HolePoints == 3, "3 hole seeds counted");
+  Check(combined->GetFieldData()->GetArray("Other") != nullptr, "other field data kept");
+
+  std::cout << "no piece at all\n";
+  std::vector<vtkSmartPointer<vtkDataObject>> none = { nullptr,
+    vtkSmartPointer<vtkPolyData>::New() };
+  vtkSmartPointer<vtkPolyData> empty = OverlayStitchCombinePieces(none, &summary);
+  Check(empty && empty->GetNumberOfPoints() == 0 && empty->GetNumberOfCells() == 0,
+    "empty pieces give an empty polydata");
+  Check(empty->GetFieldData()->GetArray("HolePoints") == nullptr, "no HolePoints invented");
+
+  std::cout << "one process\n";
+  vtkSmartPointer<vtkPolyData> same;
+  const bool meshes = OverlayStitchGatherInput(nullptr, piece0, same, &summary);
+  Check(meshes && same == piece0, "without a controller the input passes through, uncopied");
+  Check(summary.CellsPerRank.size() == 1 && summary.CellsPerRank[0] == 2, "its cells counted");
+
+  std::cout << (Failures ? "FAILED\n" : "passed\n");
+  return Failures ? 1 : 0;
+}

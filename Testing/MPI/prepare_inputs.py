@@ -1,0 +1,182 @@
+"""Writes the inputs of the MPI tests as .vtp files (run with pvpython or pvbatch).
+
+    pvpython prepare_inputs.py --output-dir DIR [--wedge wedge.vtk] [--poly a.poly ...]
+        [--pieces 2 3]
+
+Every input becomes line data in the convention of the project's .poly reader:
+points with z = 0, one 2-point line cell per segment, one vertex cell per point
+that is on no segment, and the field data "HolePoints" (3-component doubles).
+Single segments (not polylines) let a redistribution spread the lines evenly
+over the ranks. Prints one line per file written.
+"""
+import argparse
+import os
+import sys
+
+from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+from vtkmodules.vtkIOLegacy import vtkPolyDataReader
+from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
+
+
+def make_polydata(points, segments, holes):
+    """points: [(x, y)], segments: [(a, b)] 0-based, holes: [(x, y)]."""
+    vtk_points = vtkPoints()
+    vtk_points.SetDataTypeToDouble()
+    for x, y in points:
+        vtk_points.InsertNextPoint(x, y, 0.0)
+    lines = vtkCellArray()
+    on_segment = [False] * len(points)
+    for a, b in segments:
+        lines.InsertNextCell(2)
+        lines.InsertCellPoint(a)
+        lines.InsertCellPoint(b)
+        on_segment[a] = on_segment[b] = True
+    verts = vtkCellArray()
+    for i, used in enumerate(on_segment):
+        if not used:
+            verts.InsertNextCell(1)
+            verts.InsertCellPoint(i)
+    data = vtkPolyData()
+    data.SetPoints(vtk_points)
+    data.SetLines(lines)
+    if verts.GetNumberOfCells():
+        data.SetVerts(verts)
+    hole_array = vtkDoubleArray()
+    hole_array.SetName("HolePoints")
+    hole_array.SetNumberOfComponents(3)
+    for x, y in holes:
+        hole_array.InsertNextTuple3(x, y, 0.0)
+    data.GetFieldData().AddArray(hole_array)
+    return data
+
+
+def read_poly(path):
+    """A minimal reader of Triangle's .poly format (test-side, independent of the core's)."""
+    rows = []
+    with open(path) as f:
+        for line in f:
+            fields = line.split("#", 1)[0].split()
+            if fields:
+                rows.append(fields)
+    count, dim, nattr, nmark = (int(v) for v in rows[0][:4])
+    if count == 0 or dim != 2:
+        raise ValueError("%s: needs its vertices inline and dim 2" % path)
+    ids = {}
+    points = []
+    for r in rows[1 : 1 + count]:
+        ids[int(r[0])] = len(points)
+        points.append((float(r[1]), float(r[2])))
+    k = 1 + count
+    nseg = int(rows[k][0])
+    segments = [(ids[int(r[1])], ids[int(r[2])]) for r in rows[k + 1 : k + 1 + nseg]]
+    k += 1 + nseg
+    holes = []
+    if k < len(rows):
+        nholes = int(rows[k][0])
+        holes = [(float(r[1]), float(r[2])) for r in rows[k + 1 : k + 1 + nholes]]
+    return points, segments, holes
+
+
+def read_legacy_lines(path):
+    """Line data from a legacy .vtk file, polylines split into single segments."""
+    reader = vtkPolyDataReader()
+    reader.SetFileName(path)
+    reader.Update()
+    data = reader.GetOutput()
+    points = [data.GetPoint(i)[:2] for i in range(data.GetNumberOfPoints())]
+    segments = []
+    lines = data.GetLines()
+    ids = lines.GetConnectivityArray()
+    offsets = lines.GetOffsetsArray()
+    for c in range(lines.GetNumberOfCells()):
+        start, end = int(offsets.GetValue(c)), int(offsets.GetValue(c + 1))
+        cell = [int(ids.GetValue(k)) for k in range(start, end)]
+        segments += [(cell[k], cell[k + 1]) for k in range(len(cell) - 1) if cell[k] != cell[k + 1]]
+    return points, segments, []
+
+
+def square_with_hole():
+    """Project-made: a 10 x 10 square with a 4 x 4 square hole (one seed), an inner
+    slit through the ring, and two isolated points (vertex cells)."""
+    points = [(0, 0), (10, 0), (10, 10), (0, 10), (3, 3), (7, 3), (7, 7), (3, 7),
+              (1, 5), (2.5, 5.5), (8.5, 1.5), (1.5, 8.5)]
+    segments = [(0, 1), (1, 2), (2, 3), (3, 0), (4, 5), (5, 6), (6, 7), (7, 4), (8, 9)]
+    return points, segments, [(5.0, 5.0)]
+
+
+def write(data, path):
+    writer = vtkXMLPolyDataWriter()
+    writer.SetFileName(path)
+    writer.SetInputData(data)
+    writer.SetDataModeToBinary()
+    if not writer.Write():
+        sys.exit("cannot write " + path)
+    print("wrote %s: %d points, %d cells, %d hole seeds" % (
+        path, data.GetNumberOfPoints(), data.GetNumberOfCells(),
+        data.GetFieldData().GetArray("HolePoints").GetNumberOfTuples()))
+
+
+def write_pieces(points, segments, holes, count, path):
+    """A partitioned .pvtp: the segments in `count` slabs of x (each piece holds the
+    points its cells use, so pieces repeat the points on their common boundary);
+    points on no segment go to the piece of their slab; the hole seeds are only
+    in the LAST piece, so that they reach rank 0 from another rank."""
+    xs = sorted(set(x for x, _ in points))
+    cut = [xs[min(len(xs) - 1, (k * len(xs)) // count)] for k in range(1, count)]
+    slab = lambda x: sum(1 for c in cut if x >= c)
+    pieces = [([], []) for _ in range(count)]
+    on_segment = [False] * len(points)
+    for a, b in segments:
+        on_segment[a] = on_segment[b] = True
+        k = slab(0.5 * (points[a][0] + points[b][0]))
+        pieces[k][0].append((a, b))
+    for i, used in enumerate(on_segment):
+        if not used:
+            pieces[slab(points[i][0])][1].append(i)
+    base = os.path.splitext(path)[0]
+    sources = []
+    for k, (piece_segments, lonely) in enumerate(pieces):
+        local = {}
+        local_points = []
+        for i in [i for s in piece_segments for i in s] + lonely:
+            if i not in local:
+                local[i] = len(local_points)
+                local_points.append(points[i])
+        data = make_polydata(local_points, [(local[a], local[b]) for a, b in piece_segments],
+                             holes if k == count - 1 else [])
+        name = "%s_%d.vtp" % (os.path.basename(base), k)
+        write(data, os.path.join(os.path.dirname(path), name))
+        sources.append(name)
+    with open(path, "w") as f:
+        f.write('<?xml version="1.0"?>\n<VTKFile type="PPolyData" version="1.0" '
+                'byte_order="LittleEndian" header_type="UInt64">\n <PPolyData GhostLevel="0">\n'
+                '  <PPoints><PDataArray type="Float64" NumberOfComponents="3"/></PPoints>\n')
+        for name in sources:
+            f.write('  <Piece Source="%s"/>\n' % name)
+        f.write(" </PPolyData>\n</VTKFile>\n")
+    print("wrote %s: %d pieces" % (path, count))
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--output-dir", required=True)
+    parser.add_argument("--wedge")
+    parser.add_argument("--poly", nargs="*", default=[])
+    parser.add_argument("--pieces", type=int, nargs="*", default=[],
+                        help="also write NAME-<k>.pvtp partitioned in k pieces")
+    args = parser.parse_args()
+    os.makedirs(args.output_dir, exist_ok=True)
+    inputs = [("square_hole", square_with_hole())]
+    if args.wedge:
+        inputs.append(("wedge", read_legacy_lines(args.wedge)))
+    for path in args.poly:
+        inputs.append((os.path.splitext(os.path.basename(path))[0], read_poly(path)))
+    for name, pslg in inputs:
+        write(make_polydata(*pslg), os.path.join(args.output_dir, name + ".vtp"))
+        for count in args.pieces:
+            write_pieces(*pslg, count, os.path.join(args.output_dir, "%s-%d.pvtp" % (name, count)))
+
+
+if __name__ == "__main__":
+    main()

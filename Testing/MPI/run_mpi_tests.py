@@ -1,0 +1,328 @@
+"""The MPI tests of the Overlay Stitch Mesher (label mpi), run by CTest with /usr/bin/python3.
+
+    run_mpi_tests.py GROUP --plugin OverlayStitchMesher.so --validator osm_cli_helper
+        --pvbatch P --pvpython P --pvserver P --mpirun M --wedge wedge.vtk
+        --shared ../shared/data/pslg --out DIR
+
+GROUP
+  bundled       project-made inputs (always run)
+  realdata      inputs from --shared (exit 77, CTest's skip, when the folder is absent)
+  clientserver  `mpirun -np 2 pvserver` on a free loopback port, pvpython client
+
+Each input is meshed once serially (pvbatch, one process), then under
+`mpirun -np 2` and `-np 3`, its lines genuinely spread over the ranks (a
+partitioned .pvtp read in parallel, or ParaView's RedistributeDataSet). A parallel
+run passes when every rank held part of the input (its probe printed a cell
+count > 0), the statistics from the Mesh output's field data equal the serial
+ones (triangles, vertices, input points and segments, repairs, regions, min and
+max angle), only one rank's worth of triangles exists, and the fetched mesh
+passes the core's independent validator (osm_cli_helper validate).
+"""
+import argparse
+import json
+import os
+import re
+import shutil
+import signal
+import socket
+import subprocess
+import sys
+import threading
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+MESH_SCRIPT = os.path.join(HERE, "mesh_parallel.py")
+PREPARE_SCRIPT = os.path.join(HERE, "prepare_inputs.py")
+SKIP = 77
+# Statistics that must be equal to the serial run's.
+COMPARED = ("InputPoints", "InputSegments", "DuplicatePointsMerged", "DuplicateSegmentsMerged",
+            "ZeroLengthSegmentsDropped", "OutputTriangles", "OutputVertices", "Regions",
+            "MinAngleDeg", "MaxAngleDeg")
+# The real inputs used (small to mid-sized, with holes, isolated points, many segments).
+REAL_INPUTS = ("face.poly", "lake_superior.poly", "square_circle_hole.poly",
+               "Constrained_Sweden.poly")
+
+failures = []
+
+
+def check(condition, message):
+    print(("  ok    " if condition else "  FAIL  ") + message, flush=True)
+    if not condition:
+        failures.append(message)
+    return condition
+
+
+def run(cmd, timeout, log=None):
+    print("$ " + " ".join(cmd), flush=True)
+    proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                          timeout=timeout, start_new_session=True)
+    if log:
+        with open(log, "w") as f:
+            f.write(proc.stdout)
+    if proc.returncode != 0:
+        print(proc.stdout[-4000:])
+        raise RuntimeError("exit code %d: %s" % (proc.returncode, " ".join(cmd)))
+    return proc.stdout
+
+
+def rank_cells(text):
+    """{rank: cells} from the probes' lines (the last line of each rank wins)."""
+    cells = {}
+    for rank, count in re.findall(r"^OSM-RANK-CELLS (\d+) (\d+)", text, re.M):
+        cells[int(rank)] = int(count)
+    return cells
+
+
+class Runner:
+    def __init__(self, args):
+        self.args = args
+        self.out = args.out
+
+    def mpi_prefix(self, ranks):
+        return [self.args.mpirun, "--allow-run-as-root", "--oversubscribe", "-np", str(ranks)]
+
+    def mesh(self, tag, ranks, vtp, distribute="none", fail_first=False):
+        json_path = os.path.join(self.out, tag + ".json")
+        mesh_path = os.path.join(self.out, tag + "-mesh.vtp")
+        cmd = [self.args.pvbatch, MESH_SCRIPT, "--plugin", self.args.plugin, "--input", vtp,
+               "--json", json_path, "--mesh", mesh_path, "--distribute", distribute]
+        if fail_first:
+            cmd.append("--fail-first")
+        if ranks > 1:
+            cmd = self.mpi_prefix(ranks) + cmd
+        start = time.perf_counter()
+        text = run(cmd, timeout=600, log=os.path.join(self.out, tag + ".log"))
+        wall = time.perf_counter() - start
+        with open(json_path) as f:
+            result = json.load(f)
+        result["process_seconds"] = wall
+        result["rank_cells"] = rank_cells(text)
+        result["mesh_path"] = mesh_path
+        result["log"] = text
+        return result
+
+    def validate(self, vtp, result):
+        text = run([self.args.validator, "validate", vtp, result["mesh_path"], "--allow-missing"],
+                   timeout=600)
+        return check(text.startswith("ok"), "validator: " + text.strip().splitlines()[0])
+
+    def compare(self, name, serial, parallel, ranks, input_cells, distribute="none", spread=True):
+        label = "%s -np %d" % (name, ranks)
+        cells = parallel["rank_cells"]
+        check(sorted(cells) == list(range(ranks)),
+              "%s: every rank probed its input (%s)" % (label, cells))
+        if spread:
+            check(all(cells.get(r, 0) > 0 for r in range(ranks)),
+                  "%s: every rank held part of the input, cells per rank %s" % (label, cells))
+        else:
+            check(cells.get(0, 0) == input_cells and sum(cells.values()) == input_cells,
+                  "%s: rank 0 alone read the input, once: cells per rank %s" % (label, cells))
+        check(sum(cells.values()) >= input_cells,
+              "%s: the pieces hold all %d input cells (%d)" % (
+                  label, input_cells, sum(cells.values())))
+        check(parallel["ranks"] == ranks, "%s: %d data partitions" % (label, parallel["ranks"]))
+        compared = COMPARED
+        if distribute == "all":
+            # RedistributeDataSet's "Assign to all regions" copies boundary cells, at times
+            # twice into the same rank and without ghost marks: the gather cannot tell
+            # those from the user's duplicates, so the core merges and counts them.
+            compared = [k for k in COMPARED if k not in ("InputSegments", "DuplicateSegmentsMerged")]
+            distinct = lambda r: r["stats"]["InputSegments"] - r["stats"]["DuplicateSegmentsMerged"]
+            check(distinct(parallel) == distinct(serial),
+                  "%s: %s distinct segments (serial %s)" % (label, distinct(parallel),
+                                                            distinct(serial)))
+        for key in compared:
+            a, b = serial["stats"][key], parallel["stats"][key]
+            check(a is not None and b is not None and abs(a - b) <= 1e-9 * max(1.0, abs(a)),
+                  "%s: %s %s (serial %s)" % (label, key, b, a))
+        triangles = serial["stats"]["OutputTriangles"]
+        check(parallel["outputs"][0]["cells"] == triangles,
+              "%s: the Mesh output holds %d triangles over all ranks (%d)" % (
+                  label, triangles, parallel["outputs"][0]["cells"]))
+        check(parallel.get("fetched_triangles") == triangles,
+              "%s: the fetched mesh has %s triangles" % (label, parallel.get("fetched_triangles")))
+        for port in (1, 2):
+            check(parallel["outputs"][port] == serial["outputs"][port],
+                  "%s: output %d equals the serial one %s" % (label, port, parallel["outputs"][port]))
+
+    def case(self, name, runs):
+        """runs: [(ranks, input file, distribute mode)] after the serial run."""
+        vtp = os.path.join(self.out, name + ".vtp")
+        print("== %s" % name, flush=True)
+        serial = self.mesh(name + "-np1", 1, vtp)
+        print("  serial: %s triangles, angles %.4f..%.4f, %.2f s in the mesher, %.2f s pvbatch" % (
+            serial["stats"]["OutputTriangles"], serial["stats"]["MinAngleDeg"],
+            serial["stats"]["MaxAngleDeg"], serial["wall_seconds"], serial["process_seconds"]))
+        check(serial["stats"]["OutputTriangles"] and serial["stats"]["OutputTriangles"] > 0,
+              "%s serial: meshed" % name)
+        self.validate(vtp, serial)
+        input_cells = serial["rank_cells"].get(0, 0)
+        figures = {"serial": serial}
+        for ranks, source, distribute, fail_first in runs:
+            kind = os.path.splitext(source)[1][1:]
+            tag = "%s-np%d-%s-%s" % (name, ranks, kind, distribute)
+            path = source if os.path.isabs(source) else os.path.join(self.out, source)
+            parallel = self.mesh(tag, ranks, path, distribute, fail_first)
+            print("  -np %d (%s): %.2f s in the mesher, %.2f s pvbatch" % (
+                ranks, tag, parallel["wall_seconds"], parallel["process_seconds"]))
+            if fail_first:
+                check("OSM-FAILED-RUN-CELLS [0, 0, 0]" in parallel["log"],
+                      "%s: the run that failed on rank 0 left every output empty" % tag)
+            self.compare(tag, serial, parallel, ranks, input_cells, distribute,
+                         spread=distribute != "none" or kind == "pvtp")
+            self.validate(vtp, parallel)
+            figures[tag] = parallel
+        return figures
+
+    def prepare(self, polys):
+        cmd = [self.args.pvpython, PREPARE_SCRIPT, "--output-dir", self.out, "--wedge",
+               self.args.wedge, "--pieces", "2", "3", "--poly"] + polys
+        run(cmd, timeout=600)
+
+
+def bundled(runner):
+    runner.prepare([])
+    for name in ("square_hole", "wedge"):
+        runner.case(name, [
+            (2, name + "-2.pvtp", "none", False),
+            (3, name + "-3.pvtp", "none", True),
+            (2, name + ".vtp", "one", False),
+            (3, name + ".vtp", "all", False),
+        ])
+
+
+def realdata(runner):
+    shared = runner.args.shared
+    polys = [os.path.join(shared, n) for n in REAL_INPUTS
+             if os.path.isfile(os.path.join(shared, n))]
+    if not polys:
+        print("skipped: no real inputs in %s" % shared)
+        return SKIP
+    runner.prepare(polys)
+    table = []
+    for path in polys:
+        name = os.path.splitext(os.path.basename(path))[0]
+        figures = runner.case(name, [
+            (2, name + ".vtp", "one", False),
+            (3, name + "-3.pvtp", "none", False),
+            (3, name + ".vtp", "all", False),
+            # The plugin's .poly reader: on rank 0 only, then spread by RedistributeDataSet.
+            (2, path, "none", False),
+            (3, path, "one", False),
+        ])
+        table.append((name, figures))
+    print("\n| input | run | triangles | min angle | max angle | mesher s | pvbatch s |")
+    print("|---|---|---:|---:|---:|---:|---:|")
+    for name, figures in table:
+        for tag, r in figures.items():
+            print("| %s | %s | %d | %.4f | %.4f | %.3f | %.2f |" % (
+                name, tag, r["stats"]["OutputTriangles"], r["stats"]["MinAngleDeg"],
+                r["stats"]["MaxAngleDeg"], r["wall_seconds"], r["process_seconds"]))
+    return 0
+
+
+def free_port():
+    with socket.socket(socket.AF_INET, socket.SOCK_STREAM) as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+def clientserver(runner):
+    args = runner.args
+    runner.prepare([])
+    name = "square_hole"
+    vtp = os.path.join(runner.out, name + ".vtp")
+    serial = runner.mesh(name + "-np1", 1, vtp)
+    port = free_port()
+    connect_id = 1000 + os.getpid() % 30000
+    server_log_path = os.path.join(runner.out, "pvserver.log")
+    server_log = open(server_log_path, "w")
+    # The server ends by itself when the client disconnects; `timeout` and the
+    # finally clause below make sure it ends anyway.
+    server_cmd = ["timeout", "-s", "KILL", "300"] + runner.mpi_prefix(2) + [
+        args.pvserver, "--server-port=%d" % port, "--hostname=localhost",
+        "--connect-id=%d" % connect_id, "--timeout=5"]
+    print("$ " + " ".join(server_cmd), flush=True)
+    server = subprocess.Popen(server_cmd, stdout=server_log, stderr=subprocess.STDOUT,
+                              start_new_session=True)
+
+    def stop_server(*_):
+        if server.poll() is None:
+            try:
+                os.killpg(server.pid, signal.SIGTERM)
+                server.wait(timeout=10)
+            except (subprocess.TimeoutExpired, ProcessLookupError):
+                try:
+                    os.killpg(server.pid, signal.SIGKILL)
+                except ProcessLookupError:
+                    pass
+                server.wait()
+
+    def on_signal(signum, _frame):
+        stop_server()
+        sys.exit(128 + signum)
+
+    signal.signal(signal.SIGTERM, on_signal)
+    signal.signal(signal.SIGINT, on_signal)
+    try:
+        deadline = time.time() + 120
+        while "Accepting connection" not in open(server_log_path).read():
+            if server.poll() is not None or time.time() > deadline:
+                print(open(server_log_path).read())
+                raise RuntimeError("pvserver did not start")
+            time.sleep(0.5)
+        json_path = os.path.join(runner.out, "clientserver.json")
+        mesh_path = os.path.join(runner.out, "clientserver-mesh.vtp")
+        env = dict(os.environ, PARAVIEW_CONNECT_ID=str(connect_id))
+        cmd = [args.pvpython, "--connect-id=%d" % connect_id, MESH_SCRIPT, "--server",
+               "localhost:%d" % port, "--plugin", args.plugin, "--input", vtp, "--json",
+               json_path, "--mesh", mesh_path, "--distribute", "one"]
+        print("$ " + " ".join(cmd), flush=True)
+        client = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                                timeout=300, env=env)
+        print(client.stdout[-3000:])
+        check(client.returncode == 0, "client exit code %d" % client.returncode)
+        if client.returncode == 0:
+            # The server leaves when its client disconnects.
+            try:
+                server.wait(timeout=60)
+            except subprocess.TimeoutExpired:
+                pass
+            check(server.poll() is not None, "pvserver ended after the client disconnected")
+            server_text = open(server_log_path).read()
+            with open(json_path) as f:
+                result = json.load(f)
+            result["rank_cells"] = rank_cells(server_text)
+            result["mesh_path"] = mesh_path
+            runner.compare("client-server", serial, result, 2, serial["rank_cells"].get(0, 0))
+            runner.validate(vtp, result)
+    finally:
+        stop_server()
+        server_log.close()
+    check(server.poll() is not None, "no pvserver left running")
+    return 0
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("group", choices=["bundled", "realdata", "clientserver"])
+    for option in ("plugin", "validator", "pvbatch", "pvpython", "pvserver", "mpirun", "wedge",
+                   "shared", "out"):
+        parser.add_argument("--" + option, required=True)
+    args = parser.parse_args()
+    if os.path.isdir(args.out):
+        shutil.rmtree(args.out)
+    os.makedirs(args.out)
+    runner = Runner(args)
+    status = {"bundled": bundled, "realdata": realdata, "clientserver": clientserver}[args.group](
+        runner)
+    if status == SKIP:
+        return SKIP
+    print("\n%d failure(s)" % len(failures))
+    for f in failures:
+        print("  " + f)
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
