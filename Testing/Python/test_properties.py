@@ -1,0 +1,240 @@
+"""pvpython / pvbatch test of the OverlayStitchMesher properties and inputs.
+
+Usage: pvpython|pvbatch test_properties.py <OverlayStitchMesher.so> <Testing/Data> <scratch dir>
+
+Through paraview.simple only (no rendering): the properties MergeTolerance,
+ProjectToXYPlane and UseInputHolePoints and their defaults; coplanar input in
+a tilted plane (meshed in its plane, input points exact); non-coplanar input
+(an error naming the point, empty output) and ProjectToXYPlane; near duplicate
+points merged within MergeTolerance; and, when the plugin has the reader
+TrianglePolyReader, a .poly file with a hole read and meshed, the hole honoured
+only when UseInputHolePoints is on. Inputs are written as .vtp files into the
+scratch directory and read back with XMLPolyDataReader.
+"""
+import contextlib
+import math
+import os
+import sys
+import tempfile
+
+from paraview import servermanager
+from paraview.simple import *  # noqa: F401,F403
+from vtkmodules.vtkCommonCore import vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
+
+failures = []
+
+
+def check(condition, what):
+    print(("ok      " if condition else "FAILED  ") + what, flush=True)
+    if not condition:
+        failures.append(what)
+
+
+@contextlib.contextmanager
+def stderr_captured(into):
+    """Collect what the process writes to file descriptor 2 (VTK's errors) into the list."""
+    sys.stderr.flush()
+    saved = os.dup(2)
+    with tempfile.TemporaryFile(mode="w+b") as tmp:
+        os.dup2(tmp.fileno(), 2)
+        try:
+            yield
+        finally:
+            sys.stderr.flush()
+            os.dup2(saved, 2)
+            os.close(saved)
+            tmp.seek(0)
+            text = tmp.read().decode("utf-8", "replace")
+            sys.stderr.write(text)
+            into.append(text)
+
+
+def write_lines(path, points, lines):
+    """Write points (x, y, z) and line cells (lists of ids) as a .vtp file."""
+    data = vtkPolyData()
+    pts = vtkPoints()
+    pts.SetDataTypeToDouble()
+    for p in points:
+        pts.InsertNextPoint(p)
+    cells = vtkCellArray()
+    for line in lines:
+        cells.InsertNextCell(len(line))
+        for i in line:
+            cells.InsertCellPoint(i)
+    data.SetPoints(pts)
+    data.SetLines(cells)
+    writer = vtkXMLPolyDataWriter()
+    writer.SetFileName(path)
+    writer.SetInputData(data)
+    writer.SetDataModeToAscii()  # keeps every double digit readable for the exactness check
+    check(writer.Write() == 1, "wrote " + os.path.basename(path))
+    return path
+
+
+def mesh_of(mesher, errors=None):
+    """Run the mesher; return the Mesh output (port 0) as a local vtkPolyData."""
+    if errors is None:
+        mesher.UpdatePipeline()
+    else:
+        with stderr_captured(errors):
+            mesher.UpdatePipeline()
+    return servermanager.Fetch(mesher, idx=0)
+
+
+def area3d(poly):
+    total = 0.0
+    points = poly.GetPoints()
+    for c in range(poly.GetNumberOfCells()):
+        ids = poly.GetCell(c).GetPointIds()
+        a, b, p = (points.GetPoint(ids.GetId(k)) for k in range(3))
+        u = [b[i] - a[i] for i in range(3)]
+        v = [p[i] - a[i] for i in range(3)]
+        n = (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])
+        total += 0.5 * math.sqrt(sum(x * x for x in n))
+    return total
+
+
+def statistic(poly, name):
+    array = poly.GetFieldData().GetArray(name)
+    return array.GetValue(0) if array is not None else None
+
+
+def point_set(poly):
+    return {tuple(poly.GetPoint(i)) for i in range(poly.GetNumberOfPoints())}
+
+
+def centroids_inside(poly, lo, hi):
+    count = 0
+    for c in range(poly.GetNumberOfCells()):
+        ids = poly.GetCell(c).GetPointIds()
+        xs = [poly.GetPoint(ids.GetId(k)) for k in range(3)]
+        cx = sum(p[0] for p in xs) / 3
+        cy = sum(p[1] for p in xs) / 3
+        count += 1 if lo < cx < hi and lo < cy < hi else 0
+    return count
+
+
+def test_defaults(mesher):
+    names = mesher.ListProperties()
+    for name, value in (("MergeTolerance", 0.0), ("ProjectToXYPlane", 0), ("UseInputHolePoints", 1)):
+        check(name in names, "property %s exists" % name)
+        if name in names:
+            check(mesher.GetPropertyValue(name) == value,
+                  "%s defaults to %r (got %r)" % (name, value, mesher.GetPropertyValue(name)))
+
+
+def test_tilted(scratch):
+    # The square [0,10]^2 in the plane through o spanned by the orthonormal a, b.
+    o, a, b = (3.0, -2.0, 5.0), (0.8, 0.36, 0.48), (-0.6, 0.48, 0.64)
+    at = [tuple(o[k] + x * a[k] + y * b[k] for k in range(3))
+          for x, y in ((0, 0), (10, 0), (10, 10), (0, 10), (2, 6), (7, 6))]
+    path = write_lines(os.path.join(scratch, "tilted.vtp"), at, [[0, 1, 2, 3, 0], [4, 5]])
+    reader = XMLPolyDataReader(FileName=[path])
+    mesher = OverlayStitchMesher(Input=reader)
+    mesh = mesh_of(mesher)
+    check(mesh.GetNumberOfCells() > 0, "tilted plane: meshed (%d triangles)" % mesh.GetNumberOfCells())
+    check(statistic(mesh, "InputPlaneFitted") == 1, "tilted plane: InputPlaneFitted = 1")
+    check(abs(area3d(mesh) - 100.0) < 1e-9, "tilted plane: 3D area 100 (got %.12g)" % area3d(mesh))
+    # The input as read back (the .vtp round trip is exact in ASCII with 17 digits or not:
+    # compare with what the reader gives, which is what the mesher saw).
+    original = servermanager.Fetch(reader)
+    given = {tuple(original.GetPoint(i)) for i in range(original.GetNumberOfPoints())}
+    check(given <= point_set(mesh), "tilted plane: every input point is an output point, bit for bit")
+    n = (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+    far = max(abs(sum((p[k] - o[k]) * n[k] for k in range(3))) for p in point_set(mesh))
+    check(far < 1e-12, "tilted plane: every output point lies in the plane (farthest %.3g)" % far)
+    Delete(mesher)
+    Delete(reader)
+
+
+def test_non_coplanar(scratch):
+    points = [(0, 0, 1), (10, 0, 2), (10, 10, 0.5), (0, 10, 4), (5, 5, 3)]
+    path = write_lines(os.path.join(scratch, "bumpy.vtp"), points, [[0, 1, 2, 3, 0]])
+    reader = XMLPolyDataReader(FileName=[path])
+    mesher = OverlayStitchMesher(Input=reader)
+    errors = []
+    mesh = mesh_of(mesher, errors)
+    check(mesh.GetNumberOfCells() == 0 and mesh.GetNumberOfPoints() == 0,
+          "non-coplanar: empty output")
+    check("not coplanar" in errors[0] and "ProjectToXYPlane" in errors[0],
+          "non-coplanar: the error says so and names the way out")
+    mesher.ProjectToXYPlane = 1
+    mesh = mesh_of(mesher)
+    bounds = mesh.GetBounds()
+    check(mesh.GetNumberOfCells() > 0, "ProjectToXYPlane=1: meshed")
+    check(bounds[4] == bounds[5] == 2.1, "ProjectToXYPlane=1: at z = 2.1, the mean z (got %r)"
+          % (bounds[4:6],))
+    check(abs(area3d(mesh) - 100.0) < 1e-9, "ProjectToXYPlane=1: the XY square is meshed")
+    Delete(mesher)
+    Delete(reader)
+
+
+def test_merge_tolerance(scratch):
+    points = [(0, 0, 0), (10, 0, 0), (10, 10, 0), (0, 10, 0), (5, 5, 0), (5 + 1e-7, 5, 0)]
+    path = write_lines(os.path.join(scratch, "near.vtp"), points, [[0, 1, 2, 3, 0]])
+    reader = XMLPolyDataReader(FileName=[path])
+    mesher = OverlayStitchMesher(Input=reader)
+    check(statistic(mesh_of(mesher), "DuplicatePointsMerged") == 0,
+          "MergeTolerance=0: the points 1e-7 apart are kept")
+    mesher.MergeTolerance = 1e-6
+    check(statistic(mesh_of(mesher), "DuplicatePointsMerged") == 1,
+          "MergeTolerance=1e-6: they are merged and counted")
+    Delete(mesher)
+    Delete(reader)
+
+
+def test_poly_with_hole(data_dir):
+    if "TrianglePolyReader" not in globals():
+        print("skipped: the plugin has no TrianglePolyReader")
+        return
+    path = os.path.join(data_dir, "square_hole.poly")
+    reader = TrianglePolyReader(FileName=path)
+    check(reader.GetXMLName() == "TrianglePolyReader", "the .poly file is read by TrianglePolyReader")
+    data = servermanager.Fetch(reader)
+    holes = data.GetFieldData().GetArray("HolePoints")
+    check(holes is not None and holes.GetNumberOfTuples() == 1 and holes.GetNumberOfComponents() == 3,
+          "the reader gives the file's hole seed as field data HolePoints")
+    mesher = OverlayStitchMesher(Input=reader)
+    mesh = mesh_of(mesher)
+    area = area3d(mesh)
+    check(abs(area - 96.0) < 1e-9, ".poly with a hole: the hole is cut (area %.9g, expected 96)" % area)
+    check(centroids_inside(mesh, 4, 6) == 0, ".poly with a hole: no triangle centroid in the hole")
+    check(statistic(mesh, "InputHolePoints") == 1, ".poly with a hole: InputHolePoints = 1")
+    with_hole = mesh.GetNumberOfCells()
+    mesher.UseInputHolePoints = 0
+    mesh = mesh_of(mesher)
+    check(abs(area3d(mesh) - 100.0) < 1e-9 and centroids_inside(mesh, 4, 6) > 0,
+          "UseInputHolePoints=0: the file's hole is meshed")
+    check(mesh.GetNumberOfCells() > with_hole, "UseInputHolePoints=0: more triangles")
+    Delete(mesher)
+    Delete(reader)
+
+
+def main(plugin, data_dir, scratch):
+    os.makedirs(scratch, exist_ok=True)
+    LoadPlugin(plugin, remote=False, ns=globals())
+    check("OverlayStitchMesher" in globals(), "LoadPlugin defines OverlayStitchMesher")
+    if failures:
+        return 1
+    square = write_lines(os.path.join(scratch, "square.vtp"),
+                         [(0, 0, 0), (10, 0, 0), (10, 10, 0), (0, 10, 0)], [[0, 1, 2, 3, 0]])
+    reader = XMLPolyDataReader(FileName=[square])
+    mesher = OverlayStitchMesher(Input=reader)
+    test_defaults(mesher)
+    Delete(mesher)
+    Delete(reader)
+    test_tilted(scratch)
+    test_non_coplanar(scratch)
+    test_merge_tolerance(scratch)
+    test_poly_with_hole(data_dir)
+    print("%d failure(s)" % len(failures))
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 4:
+        print(__doc__)
+        sys.exit(2)
+    sys.exit(main(*sys.argv[1:]))
