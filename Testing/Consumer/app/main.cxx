@@ -1,14 +1,17 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Copyright (c) 2026, the Overlay Stitch Meshing authors
 //
-// A user's C++ program: build line data, mesh it with vtkOverlayStitchMesher,
-// write the mesh as .vtp and print its size. Exits non-zero on any error.
-#include <vtkCellArray.h>
+// A user's C++ program: read a Triangle .poly file with vtkTrianglePolyReader,
+// mesh it with vtkOverlayStitchMesher (the file's holes are used as hole
+// seeds), write the mesh as .vtp and print its size. Exits non-zero on any
+// error.
+//
+//   osm_consumer INPUT.poly OUTPUT.vtp
 #include <vtkCommand.h>
 #include <vtkNew.h>
 #include <vtkOverlayStitchMesher.h>
-#include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkTrianglePolyReader.h>
 #include <vtkXMLPolyDataWriter.h>
 
 #include <iostream>
@@ -30,38 +33,32 @@ public:
 
 int main(int argc, char* argv[])
 {
-  const char* output = argc > 1 ? argv[1] : "consumer-mesh.vtp";
+  if (argc != 3)
+  {
+    std::cerr << "usage: osm_consumer INPUT.poly OUTPUT.vtp\n";
+    return 2;
+  }
+  vtkNew<ErrorCounter> errors;
 
-  // A unit square outline with an interior slit.
-  vtkNew<vtkPoints> points;
-  points->InsertNextPoint(0.0, 0.0, 0.0);
-  points->InsertNextPoint(1.0, 0.0, 0.0);
-  points->InsertNextPoint(1.0, 1.0, 0.0);
-  points->InsertNextPoint(0.0, 1.0, 0.0);
-  points->InsertNextPoint(0.2, 0.5, 0.0);
-  points->InsertNextPoint(0.7, 0.55, 0.0);
-  vtkNew<vtkCellArray> lines;
-  const vtkIdType outline[] = { 0, 1, 2, 3, 0 };
-  lines->InsertNextCell(5, outline);
-  const vtkIdType slit[] = { 4, 5 };
-  lines->InsertNextCell(2, slit);
-  vtkNew<vtkPolyData> input;
-  input->SetPoints(points);
-  input->SetLines(lines);
+  vtkNew<vtkTrianglePolyReader> reader;
+  reader->AddObserver(vtkCommand::ErrorEvent, errors);
+  reader->SetFileName(argv[1]);
 
   vtkNew<vtkOverlayStitchMesher> mesher;
-  vtkNew<ErrorCounter> errors;
   mesher->AddObserver(vtkCommand::ErrorEvent, errors);
-  mesher->SetInputData(input);
+  mesher->SetInputConnection(reader->GetOutputPort());
   mesher->SetMinimumAngle(30.0);
 
   vtkNew<vtkXMLPolyDataWriter> writer;
+  writer->AddObserver(vtkCommand::ErrorEvent, errors);
   writer->SetInputConnection(mesher->GetOutputPort(0));
-  writer->SetFileName(output);
+  writer->SetFileName(argv[2]);
   writer->Write();
 
   const vtkIdType triangles = mesher->GetOutput()->GetNumberOfCells();
+  std::cout << "read " << reader->GetOutput()->GetNumberOfPoints() << " points and "
+            << reader->GetOutput()->GetNumberOfLines() << " segments from " << argv[1] << "\n";
   std::cout << "triangles: " << triangles << "\n";
-  std::cout << "wrote " << output << "\n";
+  std::cout << "wrote " << argv[2] << "\n";
   return (errors->Errors == 0 && triangles > 0) ? 0 : 1;
 }
