@@ -5,7 +5,8 @@ would have it. Inputs and outputs come through the environment (--script
 takes no arguments):
   OSM_GUI_DATA        the line data to open
   OSM_GUI_SCREENSHOT  the PNG to save
-  OSM_GUI_REPORT      a text file: the number of triangles the filter produced
+  OSM_GUI_REPORT      a text file: the number of triangles the filter produced and
+                      the array the Edges output is colored by when it is shown
 """
 import os
 
@@ -26,8 +27,16 @@ with open(report, "w") as out:
     ColorBy(display, ("CELLS", "MinAngle"))
     display.RescaleTransferFunctionToDataRange(True)
     Hide(reader, view)
+    # The Edges output opens colored by EdgeClass (the filter makes it the
+    # active cell scalars; ParaView's XML has no hint for a default coloring).
+    edges = Show(OutputPort(mesher, 1), view)
+    color = edges.ColorArrayName
+    out.write("edges_color %s %s\n" % (color[0], color[1]))
+    Hide(OutputPort(mesher, 1), view)
     view.OrientationAxesVisibility = 0
     ResetCamera(view)
     Render(view)
-    SaveScreenshot(screenshot, view, ImageResolution=[800, 600])
+    # Compared with Baseline/gui-screenshot.png by compare_images.py: keep the
+    # resolution, camera and coloring in step with it.
+    SaveScreenshot(screenshot, view, ImageResolution=[640, 480])
     out.write("triangles %d\n" % mesher.GetDataInformation().GetNumberOfCells())

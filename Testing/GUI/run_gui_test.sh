@@ -1,7 +1,10 @@
 #!/bin/bash
 # The GUI test: start the real `paraview` under a virtual X server with the
-# plugin on PV_PLUGIN_PATH, run gui_script.py in it, then check its report
-# and that its screenshot is not blank.
+# plugin on PV_PLUGIN_PATH, run gui_script.py in it, then check its report,
+# that its screenshot is not blank, and that it matches the project's
+# baseline image Baseline/gui-screenshot.png within a tolerance
+# (compare_images.py, which also says how to regenerate the baseline:
+# OSM_GUI_REGENERATE_BASELINE=1 copies the new screenshot over it).
 #
 # usage: run_gui_test.sh <paraview> <pvpython> <plugin-dir> <data-file> <output-dir>
 set -euo pipefail
@@ -43,7 +46,19 @@ if [ ! -s "$OSM_GUI_SCREENSHOT" ]; then
   echo "FAILED: no screenshot"
   exit 1
 fi
+edges_color=$(awk '$1 == "edges_color" { print $2 " " $3 }' "$OSM_GUI_REPORT")
+if [ "$edges_color" != "CELLS EdgeClass" ]; then
+  echo "FAILED: the Edges output opened colored by '$edges_color', not 'CELLS EdgeClass'"
+  exit 1
+fi
 "$pvpython" "$here/check_screenshot.py" "$OSM_GUI_SCREENSHOT"
+baseline=$here/Baseline/gui-screenshot.png
+if [ "${OSM_GUI_REGENERATE_BASELINE:-0}" = 1 ]; then
+  mkdir -p "$(dirname "$baseline")"
+  cp "$OSM_GUI_SCREENSHOT" "$baseline"
+  echo "regenerated the baseline $baseline: look at it, then commit it"
+fi
+"$pvpython" "$here/compare_images.py" "$OSM_GUI_SCREENSHOT" "$baseline"
 if [ "$status" -ne 0 ]; then
   echo "FAILED: paraview exited with status $status"
   exit 1
