@@ -19,9 +19,10 @@
  *   plane and the output is mapped back to 3D: input vertices keep their
  *   original coordinates bit for bit, new points lie in the fitted plane;
  * - otherwise the run fails with an error naming the point farthest from the
- *   plane and its distance, unless ProjectToXYPlane is on: then z is dropped
- *   (the points are projected onto the XY plane) and the outputs lie in the
- *   plane z = the mean z of the input points.
+ *   plane and its distance.
+ * With ProjectToXYPlane on, any input not in a plane z = constant is instead
+ * projected onto the XY plane (z dropped) and the outputs lie in the plane
+ * z = the mean z of the input points.
  *
  * Hole seeds come from the HolePoints property and, when UseInputHolePoints
  * is on, from the input's field data array "HolePoints" (3 components, x y z;
@@ -139,10 +140,12 @@ public:
 
   ///@{
   /**
-   * If on, input points that are not all in one plane are projected onto the
-   * XY plane (z dropped) instead of being an error; the outputs then lie in the
-   * plane z = mean z of the input points. Points in a plane z = constant are
-   * never changed. Default off.
+   * If on, input points that are not in a plane z = constant (whether they
+   * lie in a tilted plane or in no plane at all) are projected onto the XY
+   * plane: z is dropped, x and y are meshed as they are, and the outputs lie
+   * in the plane z = the mean z of the input points (a warning says so).
+   * Points in a plane z = constant are never changed. Default off: tilted
+   * coplanar input is meshed in its own plane, other input is an error.
    */
   vtkSetMacro(ProjectToXYPlane, vtkTypeBool);
   vtkGetMacro(ProjectToXYPlane, vtkTypeBool);
