@@ -73,9 +73,14 @@ void Triangulation::link(int t, int u)
 int Triangulation::locate(const Point& p, int t, int* exitEdge) const
 {
   // Visibility walk. It terminates on Delaunay triangulations; the step
-  // counter rotates the first edge tried, which keeps it deterministic.
+  // counter rotates the first edge tried, which keeps it deterministic. A walk
+  // longer than the number of triangles can only mean a broken mesh: give up
+  // (-2) rather than hang.
+  const auto maxSteps = static_cast<unsigned>(slots()) + 3;
   for (unsigned step = 0;; ++step)
   {
+    if (step > maxSteps)
+      return -2;
     bool moved = false;
     for (int k = 0; k < 3; ++k)
     {

@@ -37,7 +37,8 @@ public:
 
   /// Walk from triangle start towards p. Returns a triangle whose closure
   /// contains p, or -1 if p is outside the hull; then exitEdge holds the
-  /// triangle and local edge through which the walk left (3t + i).
+  /// triangle and local edge through which the walk left (3t + i). Returns -2
+  /// if the walk exceeds one step per triangle (never on a valid Delaunay mesh).
   int locate(const Point& p, int start, int* exitEdge = nullptr) const;
 
   /// Triangles whose circumcircle strictly contains p, found from a triangle
