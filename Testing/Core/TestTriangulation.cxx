@@ -129,3 +129,21 @@ TEST(Overlay, SteinerCapStops)
   o.maxSteinerPoints = 5;
   EXPECT_THROW(buildOverlay(randomPoints(100, 4), o, run), Stop);
 }
+
+TEST(Triangulation, LocateGivesUpOnACycleInsteadOfHanging)
+{
+  // Two triangles whose neighbour links point at each other although they do
+  // not touch: the walk towards (3, 3) would bounce between them forever.
+  Triangulation T;
+  const int a = T.addPoint({ 0, 0 }), b = T.addPoint({ 1, 0 }), c = T.addPoint({ 0, 1 });
+  const int d = T.addPoint({ 5, 5 }), e = T.addPoint({ 6, 5 }), f = T.addPoint({ 5, 6 });
+  const int t0 = T.newTriangle(a, b, c), t1 = T.newTriangle(d, e, f);
+  for (int i = 0; i < 3; ++i)
+  {
+    T.tn[3 * t0 + i] = t1;
+    T.tn[3 * t1 + i] = t0;
+  }
+  EXPECT_EQ(T.locate({ 3, 3 }, t0), -2);
+  // On the same triangles a point inside t0 is still found at once.
+  EXPECT_EQ(T.locate({ 0.2, 0.2 }, t0), t0);
+}
