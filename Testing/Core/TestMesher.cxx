@@ -341,6 +341,11 @@ TEST(Mesher, DegenerateHullsFallBackToTheBox)
   Result r = meshAndValidate(p, "one point");
   EXPECT_GT(r.mesh.triangles.size(), 0u);
   EXPECT_TRUE(mentions(r.warnings, "collinear"));
+  p.points = { { 1, 2 }, { 4, -1 } };
+  p.segments = { { 0, 1 } };
+  r = meshAndValidate(p, "two points");
+  EXPECT_GT(r.mesh.triangles.size(), 0u);
+  EXPECT_TRUE(mentions(r.warnings, "collinear"));
   p.points = { { 0, 0 }, { 1, 2 }, { 2, 4 }, { 3, 6 } };
   p.segments = { { 0, 3 } };
   r = meshAndValidate(p, "collinear");
