@@ -188,6 +188,12 @@ int TestMergeTolerance()
   Check(CountOrigin(mesh, 0) == 6, "tolerance 0: all 6 input points are mesh vertices");
 
   h.Mesher->SetMergeTolerance(1e-6);
+  std::ostringstream printed;
+  h.Mesher->Print(printed);
+  Check(printed.str().find("MergeTolerance: 1e-06") != std::string::npos &&
+      printed.str().find("ProjectToXYPlane: Off") != std::string::npos &&
+      printed.str().find("UseInputHolePoints: On") != std::string::npos,
+    "PrintSelf shows MergeTolerance, ProjectToXYPlane and UseInputHolePoints");
   mesh = h.Run(input, "tolerance 1e-6");
   Check(h.NoError(), "tolerance 1e-6: no error");
   Check(Statistic(mesh, "DuplicatePointsMerged") == 1,
