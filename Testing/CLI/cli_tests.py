@@ -279,6 +279,29 @@ def group_options():
     # No -o: nothing written, still a success.
     p = mesh_ok(square)
     check(p.stdout == "", "no -o and no --stats: nothing on stdout")
+    # Warnings: one line each, prefixed, no VTK formatting; also in --stats.
+    outside = out("outside.poly")
+    with open(outside, "w") as f:
+        f.write("5 2 0 0\n0 0 0\n1 4 0\n2 4 4\n3 0 4\n4 10 10\n"
+                "4 0\n0 0 1\n1 1 2\n2 2 3\n3 3 0\n0\n")
+    p = run(outside, "--stats", "-o", out("outside.node"))
+    lines = p.stderr.splitlines()
+    check(p.returncode == 0 and lines and
+          all(l.startswith("osm-mesh: warning: ") for l in lines),
+          "a point outside the enclosed domain: warnings only, each 'osm-mesh: warning: ...'",
+          repr(p.stderr))
+    check("outside the meshed domain" in p.stderr, "the warning says the point is left out",
+          repr(p.stderr))
+    check(not any(noise in p.stderr for noise in ("Warning: In ", "(0x", ".cxx", "WARN|")),
+          "no VTK formatting noise in warnings", repr(p.stderr))
+    try:
+        w = json.loads(p.stdout).get("Warnings", [])
+    except ValueError:
+        w = []
+    check(len(w) == len(lines) and all(("osm-mesh: warning: " + x) in lines for x in w),
+          "--stats lists the same warnings", repr(w))
+    validate(outside, out("outside.node"), "--allow-missing",
+             what="mesh without the outside point is valid")
     # --option=value spelling.
     a = stats_of(square, "--min-angle=25", "--domain=hull")
     check(abs(a.get("Theta1Deg", 0) - 25) < 1e-9, "--min-angle=25 spelling accepted")
