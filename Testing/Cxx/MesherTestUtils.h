@@ -14,6 +14,7 @@
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
+#include "vtkIdList.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
