@@ -145,6 +145,12 @@ void FillOutput(const osm::PolyFile& file, vtkPolyData* output)
 
   AddHolePoints(&file, output);
 
+  // The numbering the file used (0 or 1), so that tools can quote its numbers.
+  vtkNew<vtkIntArray> firstIndex;
+  firstIndex->SetName("FileFirstIndex");
+  firstIndex->InsertNextValue(file.firstIndex);
+  output->GetFieldData()->AddArray(firstIndex);
+
   if (!file.regions.empty())
   {
     vtkNew<vtkDoubleArray> regions;

@@ -22,7 +22,8 @@
  *   the vertex cells);
  * - field data `HolePoints`: a 3-component double array (x, y, 0) with the
  *   file's hole seeds, always present, possibly with 0 tuples (the mesher
- *   uses it as hole seeds); and, when the file has regional attributes,
+ *   uses it as hole seeds); `FileFirstIndex` (int, 1 value: 0 or 1, the
+ *   numbering the file used); and, when the file has regional attributes,
  *   `RegionAttributes`: 4 components (x, y, attribute, maximum area).
  *
  * A malformed file gives an error "file:line: reason" and an empty output.

@@ -10,6 +10,7 @@
 #include "vtkCellData.h"
 #include "vtkCellType.h"
 #include "vtkDataArray.h"
+#include "vtkDataObject.h"
 #include "vtkFieldData.h"
 #include "vtkLogger.h"
 #include "vtkNew.h"
@@ -177,12 +178,13 @@ public:
   void DisplayGenericWarningText(const char* text) override { this->Warn(text); }
 
   /// Fails with the first error, if any was reported since the last call,
-  /// after prefix (e.g. "cannot read 'a.vtp': ").
-  void Check(const std::string& prefix, const std::string& context)
+  /// between prefix (e.g. "cannot read 'a.vtp': ") and suffix.
+  void Check(const std::string& prefix, const std::string& context, const std::string& suffix = "")
   {
     if (this->Errors > 0)
     {
-      const std::string message = prefix + (this->FirstError.empty() ? context : this->FirstError);
+      const std::string message =
+        prefix + (this->FirstError.empty() ? context : this->FirstError) + suffix;
       this->Errors = 0;
       this->FirstError.clear();
       Fail(message);
@@ -755,7 +757,18 @@ int Run(int argc, char* argv[], OsmOutputWindow* window)
   mesher->SetGenerateEdges(true);
   mesher->SetGenerateOverlay(false);
   mesher->Update();
-  window->Check("", "meshing failed");
+  // The mesher numbers points, segments and cells from 0 in input order; say
+  // so when the .poly/.node file counts from 1, as Triangle's files often do.
+  std::string numbering;
+  if (vtkDataObject* read = reader->GetOutputDataObject(0))
+  {
+    vtkDataArray* first = read->GetFieldData()->GetArray("FileFirstIndex");
+    if (first && first->GetNumberOfTuples() == 1 && first->GetComponent(0, 0) == 1.0)
+    {
+      numbering = " (numbers in this message count from 0; " + args.input + " counts from 1)";
+    }
+  }
+  window->Check("", "meshing failed", numbering);
 
   vtkPolyData* mesh = mesher->GetOutput(0);
   vtkPolyData* edges = mesher->GetEdgesOutput();

@@ -406,6 +406,12 @@ def group_errors():
     # Crossing segments with --no-resolve name both segments (0-based, file order).
     expect_error([data("crossing.poly"), "--no-resolve"], 1,
                  ["input segment 4", "input segment 5", "cross"], "crossing segments with --no-resolve")
+    # The same in a 1-based file: the message says how it numbers.
+    one_based = write("crossing1.poly", "6 2 0 0\n1 0 0\n2 4 0\n3 4 4\n4 0 4\n5 1 1\n6 3 3.5\n"
+                      "6 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n5 5 6\n6 2 4\n0\n")
+    expect_error([one_based, "--no-resolve"], 1,
+                 ["input segment 4", "input segment 5", "count from 0",
+                  one_based + " counts from 1"], "crossing segments in a 1-based file")
     # A NaN coordinate in a .vtk input.
     # Binary legacy file: VTK's ASCII parser would refuse the word "nan" itself.
     nan_vtk = out("nan.vtk")

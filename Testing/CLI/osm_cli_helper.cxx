@@ -493,6 +493,9 @@ int ReaderContract(int argc, char* argv[])
   Expect(holes && holes->GetDataType() == VTK_DOUBLE && holes->GetNumberOfComponents() == 3 &&
       Values(holes) == std::vector<double>{ 5, 5, 0 },
     "field data HolePoints: (5, 5, 0)");
+  vtkDataArray* firstIndex = out->GetFieldData()->GetArray("FileFirstIndex");
+  Expect(firstIndex && Values(firstIndex) == std::vector<double>{ 1 },
+    "field data FileFirstIndex: 1 (the file counts from 1)");
   vtkDataArray* regions = out->GetFieldData()->GetArray("RegionAttributes");
   Expect(regions && regions->GetNumberOfComponents() == 4 &&
       Values(regions) == std::vector<double>{ 1, 1, 7, 0.5 },
@@ -523,6 +526,8 @@ int ReaderContract(int argc, char* argv[])
     ".node without markers: no marker arrays");
   Expect(holes && holes->GetNumberOfTuples() == 0 && holes->GetNumberOfComponents() == 3,
     ".node: HolePoints present, 0 tuples");
+  firstIndex = out->GetFieldData()->GetArray("FileFirstIndex");
+  Expect(firstIndex && Values(firstIndex) == std::vector<double>{ 1 }, ".node: FileFirstIndex 1");
   Expect(errors->Messages.empty(), "no error so far");
 
   // A malformed file: the core's "file:line: reason" and an empty output.
