@@ -15,12 +15,14 @@
 #include "vtkPolyData.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <functional>
+#include <numeric>
 #include <set>
 #include <string>
 #include <unordered_map>
@@ -153,19 +155,31 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
   vtkIdType sharedCells = 0;
   if (numberOfUsed > 0)
   {
-    // Points: a point equal to one of an earlier piece is that point.
-    vtkNew<vtkPoints> points;
-    points->SetDataTypeToDouble();
-    points->Allocate(totalPoints);
-    vtkPointData* outPointData = combined->GetPointData();
-    outPointData->CopyAllocate(pointFields, totalPoints);
+    // Points: a point equal to one of an earlier piece is that point. Ids are
+    // first given in first-seen order, then, when every piece numbers its points
+    // with global ids, in global id order: the input's order, which the mesh may
+    // depend on (see the header).
+    struct Source
+    {
+      std::size_t Piece;
+      vtkIdType Id;
+      double GlobalId;
+    };
+    std::vector<Source> sources;
+    sources.reserve(static_cast<std::size_t>(totalPoints));
+    bool globalIds = true;
+    for (vtkPolyData* piece : used)
+    {
+      globalIds = globalIds && piece->GetPointData()->GetGlobalIds() &&
+        piece->GetPointData()->GetGlobalIds()->GetNumberOfComponents() == 1;
+    }
     std::unordered_map<PointKey, FirstSeen, PointKeyHash> firstPoint;
     firstPoint.reserve(static_cast<std::size_t>(totalPoints));
     std::vector<std::vector<vtkIdType>> newId(used.size());
     for (std::size_t u = 0; u < used.size(); ++u)
     {
       vtkPolyData* piece = used[u];
-      vtkPointData* pieceData = piece->GetPointData();
+      vtkDataArray* ids = globalIds ? piece->GetPointData()->GetGlobalIds() : nullptr;
       newId[u].resize(static_cast<std::size_t>(piece->GetNumberOfPoints()));
       for (vtkIdType i = 0; i < piece->GetNumberOfPoints(); ++i)
       {
@@ -180,13 +194,45 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
           ++sharedPoints;
           continue;
         }
-        const vtkIdType id = points->InsertNextPoint(x);
-        outPointData->CopyData(pointFields, pieceData, static_cast<int>(u), i, id);
+        const auto id = static_cast<vtkIdType>(sources.size());
+        sources.push_back({ u, i, ids ? ids->GetComponent(i, 0) : 0.0 });
         newId[u][static_cast<std::size_t>(i)] = id;
         if (finite && found == firstPoint.end())
         {
           firstPoint.emplace(key, FirstSeen{ u, id });
         }
+      }
+    }
+    std::vector<vtkIdType> order(sources.size());
+    std::iota(order.begin(), order.end(), vtkIdType(0));
+    if (globalIds)
+    {
+      std::stable_sort(order.begin(), order.end(), [&sources](vtkIdType a, vtkIdType b) {
+        return sources[static_cast<std::size_t>(a)].GlobalId <
+          sources[static_cast<std::size_t>(b)].GlobalId;
+      });
+    }
+    std::vector<vtkIdType> finalId(sources.size());
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    points->SetNumberOfPoints(static_cast<vtkIdType>(sources.size()));
+    vtkPointData* outPointData = combined->GetPointData();
+    outPointData->CopyAllocate(pointFields, static_cast<vtkIdType>(sources.size()));
+    for (std::size_t k = 0; k < order.size(); ++k)
+    {
+      const Source& source = sources[static_cast<std::size_t>(order[k])];
+      finalId[static_cast<std::size_t>(order[k])] = static_cast<vtkIdType>(k);
+      double x[3];
+      used[source.Piece]->GetPoint(source.Id, x);
+      points->SetPoint(static_cast<vtkIdType>(k), x);
+      outPointData->CopyData(pointFields, used[source.Piece]->GetPointData(),
+        static_cast<int>(source.Piece), source.Id, static_cast<vtkIdType>(k));
+    }
+    for (auto& pieceIds : newId)
+    {
+      for (vtkIdType& id : pieceIds)
+      {
+        id = finalId[static_cast<std::size_t>(id)];
       }
     }
     combined->SetPoints(points);

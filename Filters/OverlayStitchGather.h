@@ -21,6 +21,13 @@
 // are taken from the first piece that has each name, except "HolePoints"
 // (3-component doubles), whose tuples are collected from every piece and
 // deduplicated.
+//
+// Point order: the mesh the core makes can depend on the order of the input
+// points (not only on the point set), and a distribution loses the input's
+// order. When every piece carries global point ids (the point data's GlobalIds
+// attribute, e.g. the input's point index), the combined points are put back in
+// global id order, and a parallel run meshes exactly the serial run's input;
+// otherwise they come in rank order, each piece's in its own order.
 #ifndef OverlayStitchGather_h
 #define OverlayStitchGather_h
 

@@ -12,6 +12,7 @@
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkIdList.h"
+#include "vtkIdTypeArray.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -178,6 +179,41 @@ int main()
   Check(empty && empty->GetNumberOfPoints() == 0 && empty->GetNumberOfCells() == 0,
     "empty pieces give an empty polydata");
   Check(empty->GetFieldData()->GetArray("HolePoints") == nullptr, "no HolePoints invented");
+
+  std::cout << "global point ids give the order\n";
+  // The input was (0,0) (1,0) (2,0) (3,0), ids 0..3; piece 0 holds (2,0) (1,0), piece 1
+  // holds (3,0) (2,0) (0,0): the combination must list them in id order.
+  auto idsPiece0 = MakePiece({ { 2, 0 }, { 1, 0 } }, { { 0, 1 } }, {}, { 2, 1 }, { 0 }, {});
+  auto idsPiece1 =
+    MakePiece({ { 3, 0 }, { 2, 0 }, { 0, 0 } }, { { 0, 1 } }, { 2 }, { 3, 2, 0 }, { 1, 2 }, {});
+  for (auto& piece : { idsPiece0, idsPiece1 })
+  {
+    vtkNew<vtkIdTypeArray> globalIds;
+    globalIds->SetName("GlobalPointIds");
+    auto* markers = vtkIntArray::SafeDownCast(piece->GetPointData()->GetArray("PointMarker"));
+    for (vtkIdType i = 0; i < piece->GetNumberOfPoints(); ++i)
+    {
+      globalIds->InsertNextValue(markers->GetValue(i)); // the marker doubles as the id here
+    }
+    piece->GetPointData()->SetGlobalIds(globalIds);
+  }
+  std::vector<vtkSmartPointer<vtkDataObject>> withIds = { idsPiece0, idsPiece1 };
+  vtkSmartPointer<vtkPolyData> ordered = OverlayStitchCombinePieces(withIds, &summary);
+  bool inOrder = ordered->GetNumberOfPoints() == 4;
+  for (vtkIdType i = 0; inOrder && i < 4; ++i)
+  {
+    inOrder = PointOf(ordered, i)[0] == static_cast<double>(i);
+  }
+  Check(inOrder, "points (0,0) (1,0) (2,0) (3,0) in global id order");
+  auto* orderedMarker = vtkIntArray::SafeDownCast(ordered->GetPointData()->GetArray("PointMarker"));
+  Check(orderedMarker && orderedMarker->GetValue(0) == 0 && orderedMarker->GetValue(3) == 3,
+    "point data reordered with the points");
+  ordered->GetCellPoints(1, ids); // piece 0's line, after piece 1's vertex cell
+  const bool line0 = ids->GetNumberOfIds() == 2 && ids->GetId(0) == 2 && ids->GetId(1) == 1;
+  ordered->GetCellPoints(2, ids);
+  const bool line1 = ids->GetNumberOfIds() == 2 && ids->GetId(0) == 3 && ids->GetId(1) == 2;
+  ordered->GetCellPoints(0, ids);
+  Check(line0 && line1 && ids->GetId(0) == 0, "cells follow the reordered points");
 
   std::cout << "one process\n";
   vtkSmartPointer<vtkPolyData> same;

@@ -3,6 +3,7 @@ MPI ranks) or, with --server, through a pvserver from pvpython.
 
     [mpirun -np N] pvbatch mesh_parallel.py --plugin P --input in.vtp|in.pvtp --json out.json
         [--mesh mesh.vtp] [--distribute none|one|all] [--server HOST:PORT] [--fail-first]
+        [--pvtp mesh.pvtp] [--png shot.png]
 
 A .pvtp input (a partitioned file) is read in parallel: each rank reads its own
 pieces. A .vtp input, or a .poly one (the plugin's TrianglePolyReader), is read
@@ -52,6 +53,8 @@ def main():
     parser.add_argument("--mesh")
     parser.add_argument("--distribute", default="none", choices=["none", "one", "all"])
     parser.add_argument("--server", help="HOST:PORT of a running pvserver")
+    parser.add_argument("--pvtp", help="also save the Mesh output with ParaView's .pvtp writer")
+    parser.add_argument("--png", help="also render the Mesh output and save a screenshot")
     parser.add_argument("--fail-first", action="store_true",
                         help="first run the mesher with settings that make it fail")
     args = parser.parse_args()
@@ -121,6 +124,20 @@ def main():
         writer.SetDataModeToBinary()
         if not writer.Write():
             sys.exit("cannot write " + args.mesh)
+
+    if args.pvtp:
+        # ParaView's parallel writer: one piece file per rank (empty ones included).
+        SaveData(args.pvtp, proxy=mesh_port)
+    if args.png:
+        # ParaView's parallel rendering of the distributed output (needs an X server).
+        view = CreateView("RenderView")
+        view.ViewSize = [500, 400]
+        display = Show(mesh_port, view)
+        display.SetRepresentationType("Surface With Edges")
+        ColorBy(display, ("CELLS", "MaxAngle"))
+        ResetCamera(view)
+        Render(view)
+        SaveScreenshot(args.png, view)
 
     with open(args.json, "w") as f:
         json.dump(result, f, indent=1)

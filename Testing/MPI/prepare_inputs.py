@@ -1,7 +1,7 @@
 """Writes the inputs of the MPI tests as .vtp files (run with pvpython or pvbatch).
 
     pvpython prepare_inputs.py --output-dir DIR [--wedge wedge.vtk] [--poly a.poly ...]
-        [--pieces 2 3]
+        [--pieces 2 3] [--global-ids]
 
 Every input becomes line data in the convention of the project's .poly reader:
 points with z = 0, one 2-point line cell per segment, one vertex cell per point
@@ -13,14 +13,15 @@ import argparse
 import os
 import sys
 
-from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints
+from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkIdTypeArray, vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
 from vtkmodules.vtkIOLegacy import vtkPolyDataReader
 from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
 
 
-def make_polydata(points, segments, holes):
-    """points: [(x, y)], segments: [(a, b)] 0-based, holes: [(x, y)]."""
+def make_polydata(points, segments, holes, global_ids=None):
+    """points: [(x, y)], segments: [(a, b)] 0-based, holes: [(x, y)]; global_ids: per
+    point, its index in the whole input (the point data's GlobalIds attribute)."""
     vtk_points = vtkPoints()
     vtk_points.SetDataTypeToDouble()
     for x, y in points:
@@ -48,6 +49,12 @@ def make_polydata(points, segments, holes):
     for x, y in holes:
         hole_array.InsertNextTuple3(x, y, 0.0)
     data.GetFieldData().AddArray(hole_array)
+    if global_ids is not None:
+        ids = vtkIdTypeArray()
+        ids.SetName("GlobalPointIds")
+        for i in global_ids:
+            ids.InsertNextValue(i)
+        data.GetPointData().SetGlobalIds(ids)
     return data
 
 
@@ -117,7 +124,7 @@ def write(data, path):
         data.GetFieldData().GetArray("HolePoints").GetNumberOfTuples()))
 
 
-def write_pieces(points, segments, holes, count, path):
+def write_pieces(points, segments, holes, count, path, global_ids):
     """A partitioned .pvtp: the segments in `count` slabs of x (each piece holds the
     points its cells use, so pieces repeat the points on their common boundary);
     points on no segment go to the piece of their slab; the hole seeds are only
@@ -143,8 +150,9 @@ def write_pieces(points, segments, holes, count, path):
             if i not in local:
                 local[i] = len(local_points)
                 local_points.append(points[i])
+        order = sorted(local, key=local.get)
         data = make_polydata(local_points, [(local[a], local[b]) for a, b in piece_segments],
-                             holes if k == count - 1 else [])
+                             holes if k == count - 1 else [], order if global_ids else None)
         name = "%s_%d.vtp" % (os.path.basename(base), k)
         write(data, os.path.join(os.path.dirname(path), name))
         sources.append(name)
@@ -152,6 +160,9 @@ def write_pieces(points, segments, holes, count, path):
         f.write('<?xml version="1.0"?>\n<VTKFile type="PPolyData" version="1.0" '
                 'byte_order="LittleEndian" header_type="UInt64">\n <PPolyData GhostLevel="0">\n'
                 '  <PPoints><PDataArray type="Float64" NumberOfComponents="3"/></PPoints>\n')
+        if global_ids:
+            f.write('  <PPointData GlobalIds="GlobalPointIds">'
+                    '<PDataArray type="Int64" Name="GlobalPointIds"/></PPointData>\n')
         for name in sources:
             f.write('  <Piece Source="%s"/>\n' % name)
         f.write(" </PPolyData>\n</VTKFile>\n")
@@ -165,6 +176,8 @@ def main():
     parser.add_argument("--poly", nargs="*", default=[])
     parser.add_argument("--pieces", type=int, nargs="*", default=[],
                         help="also write NAME-<k>.pvtp partitioned in k pieces")
+    parser.add_argument("--global-ids", action="store_true",
+                        help="number the points with global ids (their index in the input)")
     args = parser.parse_args()
     os.makedirs(args.output_dir, exist_ok=True)
     inputs = [("square_hole", square_with_hole())]
@@ -173,9 +186,11 @@ def main():
     for path in args.poly:
         inputs.append((os.path.splitext(os.path.basename(path))[0], read_poly(path)))
     for name, pslg in inputs:
-        write(make_polydata(*pslg), os.path.join(args.output_dir, name + ".vtp"))
+        ids = list(range(len(pslg[0]))) if args.global_ids else None
+        write(make_polydata(*pslg, ids), os.path.join(args.output_dir, name + ".vtp"))
         for count in args.pieces:
-            write_pieces(*pslg, count, os.path.join(args.output_dir, "%s-%d.pvtp" % (name, count)))
+            write_pieces(*pslg, count, os.path.join(args.output_dir, "%s-%d.pvtp" % (name, count)),
+                         args.global_ids)
 
 
 if __name__ == "__main__":

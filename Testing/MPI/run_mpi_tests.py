@@ -8,6 +8,7 @@ GROUP
   bundled       project-made inputs (always run)
   realdata      inputs from --shared (exit 77, CTest's skip, when the folder is absent)
   clientserver  `mpirun -np 2 pvserver` on a free loopback port, pvpython client
+  render        -np 2: ParaView's parallel .pvtp writer and renderer on the output
 
 Each input is meshed once serially (pvbatch, one process), then under
 `mpirun -np 2` and `-np 3`, its lines genuinely spread over the ranks (a
@@ -174,9 +175,11 @@ class Runner:
             figures[tag] = parallel
         return figures
 
-    def prepare(self, polys):
+    def prepare(self, polys, global_ids=False):
         cmd = [self.args.pvpython, PREPARE_SCRIPT, "--output-dir", self.out, "--wedge",
                self.args.wedge, "--pieces", "2", "3", "--poly"] + polys
+        if global_ids:
+            cmd.append("--global-ids")
         run(cmd, timeout=600)
 
 
@@ -198,7 +201,10 @@ def realdata(runner):
     if not polys:
         print("skipped: no real inputs in %s" % shared)
         return SKIP
-    runner.prepare(polys)
+    # The .vtp and .pvtp inputs number their points (GlobalIds): the gather puts them back
+    # in the input's order, which the mesh may depend on. The .poly reader's output has
+    # no ids: read on rank 0 it keeps the file's order; redistributed, it need not.
+    runner.prepare(polys, global_ids=True)
     table = []
     for path in polys:
         name = os.path.splitext(os.path.basename(path))[0]
@@ -206,7 +212,8 @@ def realdata(runner):
             (2, name + ".vtp", "one", False),
             (3, name + "-3.pvtp", "none", False),
             (3, name + ".vtp", "all", False),
-            # The plugin's .poly reader: on rank 0 only, then spread by RedistributeDataSet.
+            # The plugin's .poly reader: on rank 0 only, then spread by RedistributeDataSet
+            # (no global ids: equal to the serial mesh on these inputs, not on every input).
             (2, path, "none", False),
             (3, path, "one", False),
         ])
@@ -218,6 +225,45 @@ def realdata(runner):
             print("| %s | %s | %d | %.4f | %.4f | %.3f | %.2f |" % (
                 name, tag, r["stats"]["OutputTriangles"], r["stats"]["MinAngleDeg"],
                 r["stats"]["MaxAngleDeg"], r["wall_seconds"], r["process_seconds"]))
+    return 0
+
+
+def render(runner):
+    """The distributed output through ParaView's parallel writer and renderer."""
+    args = runner.args
+    runner.prepare([])
+    name = "square_hole"
+    vtp = os.path.join(runner.out, name + ".vtp")
+    serial = runner.mesh(name + "-np1", 1, vtp)
+    triangles = serial["stats"]["OutputTriangles"]
+    json_path = os.path.join(runner.out, "render.json")
+    pvtp = os.path.join(runner.out, "render-mesh.pvtp")
+    png = os.path.join(runner.out, "render.png")
+    cmd = ["bash", os.path.join(HERE, "..", "GUI", "xvfb_run.sh")] + runner.mpi_prefix(2) + [
+        args.pvbatch, MESH_SCRIPT, "--plugin", args.plugin, "--input", vtp, "--json", json_path,
+        "--distribute", "one", "--pvtp", pvtp, "--png", png]
+    text = run(cmd, timeout=600, log=os.path.join(runner.out, "render.log"))
+    with open(json_path) as f:
+        result = json.load(f)
+    result["rank_cells"] = rank_cells(text)
+    runner.compare("render", serial, dict(result, fetched_triangles=triangles), 2,
+                   serial["rank_cells"].get(0, 0), "one")
+    readback = run([args.pvpython, "-c",
+                    "from paraview.simple import *\n"
+                    "r = XMLPartitionedPolydataReader(FileName=[%r])\n"
+                    "r.UpdatePipeline()\n"
+                    "print('OSM-PVTP-CELLS', r.GetDataInformation().GetNumberOfCells())" % pvtp],
+                   timeout=300)
+    found = re.search(r"OSM-PVTP-CELLS (\d+)", readback)
+    check(found is not None and int(found.group(1)) == triangles,
+          "the .pvtp written on 2 ranks reads back with %d triangles (%s)" % (
+              triangles, found.group(1) if found else "nothing"))
+    try:
+        shot = run([args.pvpython, os.path.join(HERE, "..", "GUI", "check_screenshot.py"), png],
+                   timeout=300)
+        check(True, "screenshot: " + shot.strip().splitlines()[-2])
+    except RuntimeError as error:
+        check(False, "screenshot: %s" % error)
     return 0
 
 
@@ -305,7 +351,7 @@ def clientserver(runner):
 
 def main():
     parser = argparse.ArgumentParser()
-    parser.add_argument("group", choices=["bundled", "realdata", "clientserver"])
+    parser.add_argument("group", choices=["bundled", "realdata", "clientserver", "render"])
     for option in ("plugin", "validator", "pvbatch", "pvpython", "pvserver", "mpirun", "wedge",
                    "shared", "out"):
         parser.add_argument("--" + option, required=True)
@@ -314,8 +360,9 @@ def main():
         shutil.rmtree(args.out)
     os.makedirs(args.out)
     runner = Runner(args)
-    status = {"bundled": bundled, "realdata": realdata, "clientserver": clientserver}[args.group](
-        runner)
+    groups = {"bundled": bundled, "realdata": realdata, "clientserver": clientserver,
+              "render": render}
+    status = groups[args.group](runner)
     if status == SKIP:
         return SKIP
     print("\n%d failure(s)" % len(failures))
