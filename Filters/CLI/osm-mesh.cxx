@@ -37,6 +37,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -465,6 +466,30 @@ bool ParseArguments(int argc, char* argv[], Arguments& args)
     args.minAngle = std::asin(1.0 / (2.0 * gamma)) * degrees;
     // Rounding at the ends of the range must not fall outside the filter's clamp.
     args.minAngle = std::min(35.0, std::max(1.0, args.minAngle));
+  }
+
+  // Never overwrite the input (e.g. "osm-mesh points.node -o points.node").
+  std::vector<std::string> written;
+  if (Extension(args.output) == ".node")
+  {
+    const std::string base = args.output.substr(0, args.output.size() - 5);
+    written = { base + ".node", base + ".ele", base + ".edge" };
+  }
+  else if (!args.output.empty())
+  {
+    written = { args.output };
+  }
+  if (!args.svg.empty())
+  {
+    written.push_back(args.svg);
+  }
+  for (const std::string& path : written)
+  {
+    std::error_code ec;
+    if (std::filesystem::equivalent(path, args.input, ec) && !ec)
+    {
+      Fail("'" + path + "' is the input file: choose another output name", 2);
+    }
   }
 
   const std::string in = Extension(args.input);

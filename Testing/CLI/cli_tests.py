@@ -467,6 +467,13 @@ def group_errors():
         expect_error(args, 2, fragments, "bad command line " + " ".join(
             os.path.basename(a) if os.sep in a else a for a in args))
     check(not os.path.exists(out("mesh.txt")), "a refused output is not created")
+    # The input is never overwritten.
+    points = out("points.node")
+    shutil.copy(data("split_pslg.node"), points)
+    before = read_bytes(points)
+    expect_error([points, "-o", points], 2, ["is the input file"], "-o naming the input")
+    expect_error([points, "--svg", points], 2, ["is the input file"], "--svg naming the input")
+    check(read_bytes(points) == before, "the input file is left as it was")
 
 
 def group_determinism():
