@@ -37,13 +37,10 @@
 #include <cctype>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <exception>
-#include <functional>
 #include <limits>
 #include <sstream>
 #include <string>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -88,145 +85,6 @@ private:
   double End;
   std::string Phase;
   bool Aborted = false;
-};
-
-std::string FormatPoint3(const osm::Vec3& p)
-{
-  std::ostringstream out;
-  out.precision(17);
-  out << "(" << p.x << ", " << p.y << ", " << p.z << ")";
-  return out.str();
-}
-
-/// How the input's 3D points become the core's 2D points, and back.
-class PlaneMap
-{
-public:
-  enum ModeType
-  {
-    XY,    ///< (x, y) as they are; outputs at z = Z
-    Fitted ///< 2D coordinates in the best-fitting plane Frame
-  };
-
-  /// Chooses the mode for the points. Returns an error message or "".
-  std::string Choose(const std::vector<osm::Vec3>& points, bool projectToXY)
-  {
-    this->Input = &points;
-    this->Mode = XY;
-    this->Z = points.empty() ? 0.0 : points.front().z;
-    bool constantZ = true;
-    for (const osm::Vec3& p : points)
-    {
-      constantZ = constantZ && p.z == this->Z;
-    }
-    if (constantZ)
-    {
-      return std::string();
-    }
-    if (projectToXY)
-    {
-      double sum = 0.0;
-      for (const osm::Vec3& p : points)
-      {
-        sum += p.z / static_cast<double>(points.size()); // no overflow at large z
-      }
-      this->Z = sum;
-      this->Projected = true;
-      return std::string();
-    }
-    const osm::PlaneFit fit = osm::fitPlane(points);
-    if (!fit.ok)
-    {
-      return "the input points have no best-fitting plane";
-    }
-    if (!fit.coplanar(RelativePlaneTolerance))
-    {
-      std::ostringstream msg;
-      msg << "the input points are not coplanar: point " << fit.farthest << " at "
-          << FormatPoint3(points[fit.farthest]) << " is " << fit.maxDistance
-          << " from their best-fitting plane (the tolerance is " << RelativePlaneTolerance
-          << " times the bounding box diagonal: " << RelativePlaneTolerance * fit.diagonal
-          << "); turn on ProjectToXYPlane to mesh their projection onto the XY plane";
-      return msg.str();
-    }
-    this->Mode = Fitted;
-    this->Frame = fit.frame;
-    return std::string();
-  }
-
-  bool IsFitted() const { return this->Mode == Fitted; }
-  bool IsProjected() const { return this->Projected; }
-  const osm::PlaneFrame& GetFrame() const { return this->Frame; }
-  double GetZ() const { return this->Z; }
-
-  osm::Point ToPlane(const osm::Vec3& p) const
-  {
-    return this->Mode == Fitted ? this->Frame.toPlane(p) : osm::Point{ p.x, p.y };
-  }
-
-  /// A 2D hole seed given as (x, y) (the HolePoints property).
-  osm::Point SeedXY(double x, double y) const
-  {
-    return this->Mode == Fitted ? this->Frame.liftXY(x, y) : osm::Point{ x, y };
-  }
-
-  /// Remembers which 2D points are input points, so that they map back to
-  /// their original coordinates exactly.
-  void IndexInputPoints(const std::vector<osm::Point>& planar)
-  {
-    if (this->Mode != Fitted)
-    {
-      return;
-    }
-    this->InputOf.reserve(planar.size());
-    for (std::size_t i = 0; i < planar.size(); ++i)
-    {
-      this->InputOf.emplace(Key(planar[i]), i); // keeps the first of equal points
-    }
-  }
-
-  /// The 3D point of an output vertex; inputIndex is the input point it is, or -1.
-  osm::Vec3 ToSpace(const osm::Point& q, long long inputIndex = -1) const
-  {
-    if (this->Mode != Fitted)
-    {
-      return osm::Vec3{ q.x, q.y, this->Z };
-    }
-    if (inputIndex < 0)
-    {
-      const auto it = this->InputOf.find(Key(q));
-      inputIndex = it == this->InputOf.end() ? -1 : static_cast<long long>(it->second);
-    }
-    return inputIndex >= 0 ? (*this->Input)[static_cast<std::size_t>(inputIndex)]
-                           : this->Frame.fromPlane(q);
-  }
-
-  static constexpr double RelativePlaneTolerance = 1e-9;
-
-private:
-  struct KeyHash
-  {
-    std::size_t operator()(const std::pair<std::uint64_t, std::uint64_t>& k) const
-    {
-      return std::hash<std::uint64_t>()(k.first * 0x9E3779B97F4A7C15ULL ^ k.second);
-    }
-  };
-  static std::pair<std::uint64_t, std::uint64_t> Key(const osm::Point& p)
-  {
-    std::uint64_t x, y;
-    const double px = p.x == 0 ? 0.0 : p.x; // -0 and +0 are the same point
-    const double py = p.y == 0 ? 0.0 : p.y;
-    std::memcpy(&x, &px, sizeof x);
-    std::memcpy(&y, &py, sizeof y);
-    return { x, y };
-  }
-
-  const std::vector<osm::Vec3>* Input = nullptr;
-  ModeType Mode = XY;
-  bool Projected = false;
-  double Z = 0.0;
-  osm::PlaneFrame Frame;
-  std::unordered_map<std::pair<std::uint64_t, std::uint64_t>, std::size_t, KeyHash> InputOf;
 };
 
 /// Cells that give no segment, counted by kind for the one warning about them.
@@ -280,7 +138,8 @@ std::string ReadPoints(vtkPolyData* input, std::vector<osm::Vec3>& points)
     const osm::Vec3 q{ p[0], p[1], p[2] };
     if (!std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(q.z))
     {
-      return "input point " + std::to_string(i) + " has a non-finite coordinate " + FormatPoint3(q);
+      return "input point " + std::to_string(i) + " has a non-finite coordinate " +
+        osm::formatPoint3(q);
     }
     points[static_cast<std::size_t>(i)] = q;
   }
@@ -429,15 +288,15 @@ vtkSmartPointer<vtkCellArray> MakeCells(
 }
 
 /// The output points, in bulk; inputOf[i] is the input point that vertex i is, or -1.
-vtkSmartPointer<vtkPoints> MakePoints(const std::vector<osm::Point>& vertices, const PlaneMap& map,
-  const std::vector<long long>* inputOf = nullptr)
+vtkSmartPointer<vtkPoints> MakePoints(const std::vector<osm::Point>& vertices,
+  const osm::PlaneMap& map, const std::vector<long long>* inputOf = nullptr)
 {
   vtkNew<vtkDoubleArray> coordinates;
   coordinates->SetNumberOfComponents(3);
   coordinates->SetNumberOfTuples(static_cast<vtkIdType>(vertices.size()));
   for (std::size_t i = 0; i < vertices.size(); ++i)
   {
-    const osm::Vec3 q = map.ToSpace(vertices[i], inputOf ? (*inputOf)[i] : -1);
+    const osm::Vec3 q = map.toSpace(vertices[i], inputOf ? (*inputOf)[i] : -1);
     const double p[3] = { q.x, q.y, q.z };
     coordinates->SetTypedTuple(static_cast<vtkIdType>(i), p);
   }
@@ -446,7 +305,7 @@ vtkSmartPointer<vtkPoints> MakePoints(const std::vector<osm::Point>& vertices, c
   return points;
 }
 
-void MakeTriangles(const osm::TriMesh& mesh, const PlaneMap& map, vtkPolyData* output,
+void MakeTriangles(const osm::TriMesh& mesh, const osm::PlaneMap& map, vtkPolyData* output,
   const std::vector<long long>* inputOf = nullptr)
 {
   output->SetPoints(MakePoints(mesh.vertices, map, inputOf));
@@ -463,7 +322,7 @@ vtkSmartPointer<ArrayT> MakeArray(const char* name, vtkIdType size)
   return array;
 }
 
-void FillMesh(const osm::Result& result, const PlaneMap& map, vtkPolyData* output)
+void FillMesh(const osm::Result& result, const osm::PlaneMap& map, vtkPolyData* output)
 {
   // Each mesh vertex that is an input point gets that point's original
   // coordinates (the first of merged points): by index, not by a round trip.
@@ -526,7 +385,7 @@ void FillMesh(const osm::Result& result, const PlaneMap& map, vtkPolyData* outpu
   }
 }
 
-void FillEdges(const osm::Result& result, const PlaneMap& map, vtkPolyData* output)
+void FillEdges(const osm::Result& result, const osm::PlaneMap& map, vtkPolyData* output)
 {
   output->SetPoints(MakePoints(result.edgeVertices, map));
   output->SetLines(MakeCells(result.edges.size(), 2, [&result](std::size_t c, int k) {
@@ -682,10 +541,10 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   this->UpdateProgress(0.0);
   std::vector<osm::Vec3> points;
   std::string inputError = ReadPoints(input, points);
-  PlaneMap map;
+  osm::PlaneMap map;
   if (inputError.empty())
   {
-    inputError = map.Choose(points, this->ProjectToXYPlane != 0);
+    inputError = map.choose(points, this->ProjectToXYPlane != 0);
   }
   if (!inputError.empty())
   {
@@ -696,14 +555,14 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   pslg.points.reserve(points.size());
   for (const osm::Vec3& p : points)
   {
-    pslg.points.push_back(map.ToPlane(p));
+    pslg.points.push_back(map.toPlane(p));
   }
-  map.IndexInputPoints(pslg.points);
-  if (map.IsProjected())
+  map.indexInputPoints(pslg.points);
+  if (map.isProjected())
   {
     vtkWarningMacro(<< "The input points are not in a plane z = constant: projected onto the XY "
                        "plane (ProjectToXYPlane); the outputs lie at z = "
-                    << map.GetZ() << ", the mean z.");
+                    << map.z() << ", the mean z.");
   }
   IgnoredCells ignored;
   std::vector<SegmentSource> segmentSources;
@@ -714,7 +573,7 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   }
   for (std::size_t i = 0; i + 1 < this->HolePoints.size(); i += 2)
   {
-    pslg.holes.push_back(map.SeedXY(this->HolePoints[i], this->HolePoints[i + 1]));
+    pslg.holes.push_back(map.seedXY(this->HolePoints[i], this->HolePoints[i + 1]));
   }
   vtkIdType inputHoles = 0;
   if (this->UseInputHolePoints)
@@ -729,9 +588,9 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
         {
           double seed[3] = { 0.0, 0.0, 0.0 };
           seeds->GetTuple(i, seed);
-          pslg.holes.push_back(components == 3 && map.IsFitted()
-              ? map.ToPlane(osm::Vec3{ seed[0], seed[1], seed[2] })
-              : map.SeedXY(seed[0], seed[1]));
+          pslg.holes.push_back(components == 3 && map.isFitted()
+              ? map.toPlane(osm::Vec3{ seed[0], seed[1], seed[2] })
+              : map.seedXY(seed[0], seed[1]));
         }
       }
       else
@@ -830,8 +689,8 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   };
   addCount("IgnoredCells", static_cast<double>(ignored.Total()));
   addCount("InputHolePoints", static_cast<double>(inputHoles));
-  addCount("InputPlaneFitted", map.IsFitted() ? 1.0 : 0.0);
-  addCount("InputProjectedToXY", map.IsProjected() ? 1.0 : 0.0);
+  addCount("InputPlaneFitted", map.isFitted() ? 1.0 : 0.0);
+  addCount("InputProjectedToXY", map.isProjected() ? 1.0 : 0.0);
   this->UpdateProgress(0.95);
   if (aborted())
   {

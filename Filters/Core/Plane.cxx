@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <functional>
 
 namespace osm
 {
@@ -234,6 +237,87 @@ PlaneFit fitPlane(const std::vector<Vec3>& points)
     }
   }
   return fit;
+}
+
+std::string formatPoint3(const Vec3& p)
+{
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "(%.17g, %.17g, %.17g)", p.x, p.y, p.z);
+  return buf;
+}
+
+std::string PlaneMap::choose(const std::vector<Vec3>& points, bool projectToXY)
+{
+  input = &points;
+  fitted = projected = false;
+  inputOf.clear();
+  planeZ = points.empty() ? 0.0 : points.front().z;
+  const bool constantZ =
+    std::all_of(points.begin(), points.end(), [&](const Vec3& p) { return p.z == planeZ; });
+  if (constantZ)
+    return {};
+  if (projectToXY)
+  {
+    double sum = 0.0;
+    for (const Vec3& p : points)
+      sum += p.z / static_cast<double>(points.size()); // no overflow at large z
+    planeZ = sum;
+    projected = true;
+    return {};
+  }
+  const PlaneFit fit = fitPlane(points);
+  if (!fit.ok)
+    return "the input points have no best-fitting plane";
+  if (!fit.coplanar(relativeTolerance))
+  {
+    char buf[160];
+    std::snprintf(buf, sizeof buf,
+      " is %g from their best-fitting plane (the tolerance is %g times the bounding box "
+      "diagonal: %g)",
+      fit.maxDistance, relativeTolerance, relativeTolerance * fit.diagonal);
+    return "the input points are not coplanar: point " + std::to_string(fit.farthest) + " at " +
+      formatPoint3(points[fit.farthest]) + buf +
+      "; turn on ProjectToXYPlane to mesh their projection onto the XY plane";
+  }
+  fitted = true;
+  frame = fit.frame;
+  return {};
+}
+
+void PlaneMap::indexInputPoints(const std::vector<Point>& planar)
+{
+  if (!fitted)
+    return;
+  inputOf.reserve(planar.size());
+  for (std::size_t i = 0; i < planar.size(); ++i)
+    inputOf.emplace(keyOf(planar[i]), i); // keeps the first of equal points
+}
+
+Vec3 PlaneMap::toSpace(const Point& q, long long inputIndex) const
+{
+  if (!fitted)
+    return Vec3{ q.x, q.y, planeZ };
+  if (inputIndex < 0)
+  {
+    const auto it = inputOf.find(keyOf(q));
+    inputIndex = it == inputOf.end() ? -1 : static_cast<long long>(it->second);
+  }
+  return inputIndex >= 0 ? (*input)[static_cast<std::size_t>(inputIndex)] : frame.fromPlane(q);
+}
+
+std::size_t PlaneMap::KeyHash::operator()(const Key& k) const
+{
+  return std::hash<std::uint64_t>()(k.first * 0x9E3779B97F4A7C15ULL ^ k.second);
+}
+
+PlaneMap::Key PlaneMap::keyOf(const Point& p)
+{
+  std::uint64_t x, y;
+  const double px = p.x == 0 ? 0.0 : p.x; // -0 and +0 are the same point
+  const double py = p.y == 0 ? 0.0 : p.y;
+  std::memcpy(&x, &px, sizeof x);
+  std::memcpy(&y, &py, sizeof y);
+  return { x, y };
 }
 
 } // namespace osm

@@ -6,6 +6,10 @@
 #include "Geometry.h"
 
 #include <cstddef>
+#include <cstdint>
+#include <string>
+#include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace osm
@@ -68,6 +72,57 @@ struct PlaneFit
 /// in a plane z = c thus get u = x, v = y. Works at any finite magnitude
 /// (coordinates are rescaled by a power of two before squaring).
 PlaneFit fitPlane(const std::vector<Vec3>& points);
+
+/// "(x, y, z)" with round-trip precision, for messages.
+std::string formatPoint3(const Vec3& p);
+
+/// How 3D input points become the mesher's 2D points, and output points come
+/// back: as they are in a plane z = constant, projected onto XY when asked, or
+/// through the best-fitting plane when the points are coplanar in a tilted
+/// plane. Input points come back with their original coordinates, bit for bit.
+class PlaneMap
+{
+public:
+  /// Points are coplanar when within this fraction of their bounding-box
+  /// diagonal from their best-fitting plane.
+  static constexpr double relativeTolerance = 1e-9;
+
+  /// Chooses the mapping for points (kept by reference until the map is done
+  /// with). Returns an error message naming the farthest point when they are
+  /// not coplanar and projectToXY is off, or "".
+  std::string choose(const std::vector<Vec3>& points, bool projectToXY);
+
+  bool isFitted() const { return fitted; }
+  bool isProjected() const { return projected; }
+  /// The output z when not fitted: the input's constant z, or the mean z when projected.
+  double z() const { return planeZ; }
+
+  Point toPlane(const Vec3& p) const { return fitted ? frame.toPlane(p) : Point{ p.x, p.y }; }
+  /// A hole seed given as (x, y): moved along z onto a fitted plane.
+  Point seedXY(double x, double y) const { return fitted ? frame.liftXY(x, y) : Point{ x, y }; }
+
+  /// Remembers which 2D points are the input's (the first of equal ones), so
+  /// that toSpace() returns their original coordinates.
+  void indexInputPoints(const std::vector<Point>& planar);
+  /// The 3D point of output vertex q; inputIndex is the input point it is, or
+  /// -1 to look it up by its exact 2D coordinates.
+  Vec3 toSpace(const Point& q, long long inputIndex = -1) const;
+
+private:
+  using Key = std::pair<std::uint64_t, std::uint64_t>;
+  struct KeyHash
+  {
+    std::size_t operator()(const Key& k) const;
+  };
+  static Key keyOf(const Point& p);
+
+  const std::vector<Vec3>* input = nullptr;
+  bool fitted = false;
+  bool projected = false;
+  double planeZ = 0.0;
+  PlaneFrame frame;
+  std::unordered_map<Key, std::size_t, KeyHash> inputOf;
+};
 
 } // namespace osm
 

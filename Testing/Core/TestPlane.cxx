@@ -215,3 +215,67 @@ TEST(Plane, LiftXYFollowsZ)
 }
 
 } // namespace
+
+TEST(PlaneMap, ConstantZPassesPointsThrough)
+{
+  const std::vector<Vec3> points{ { 1, 2, 7 }, { 3, -4, 7 }, { 0.5, 9, 7 } };
+  osm::PlaneMap map;
+  ASSERT_EQ(map.choose(points, false), "");
+  EXPECT_FALSE(map.isFitted());
+  EXPECT_FALSE(map.isProjected());
+  EXPECT_EQ(map.z(), 7.0);
+  const osm::Point q = map.toPlane(points[1]);
+  EXPECT_EQ(q.x, 3.0);
+  EXPECT_EQ(q.y, -4.0);
+  const Vec3 back = map.toSpace({ 0.25, 0.75 });
+  EXPECT_EQ(back.x, 0.25);
+  EXPECT_EQ(back.y, 0.75);
+  EXPECT_EQ(back.z, 7.0);
+}
+
+TEST(PlaneMap, TiltedInputComesBackBitForBit)
+{
+  const std::vector<Vec3> points =
+    planePoints({ 0.1, -2, 3 }, { 1, 0.3, 0.7 }, { -0.2, 1, 0.4 }, 40, 11);
+  osm::PlaneMap map;
+  ASSERT_EQ(map.choose(points, false), "");
+  ASSERT_TRUE(map.isFitted());
+  std::vector<osm::Point> planar;
+  for (const Vec3& p : points)
+    planar.push_back(map.toPlane(p));
+  map.indexInputPoints(planar);
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    // Found by index and by its 2D coordinates alike, with the original bits.
+    for (const Vec3& back :
+      { map.toSpace(planar[i], static_cast<long long>(i)), map.toSpace(planar[i]) })
+    {
+      EXPECT_EQ(back.x, points[i].x) << i;
+      EXPECT_EQ(back.y, points[i].y) << i;
+      EXPECT_EQ(back.z, points[i].z) << i;
+    }
+  }
+  // A new point (a Steiner point) lands in the plane.
+  const osm::Point mid{ 0.5 * (planar[0].x + planar[1].x), 0.5 * (planar[0].y + planar[1].y) };
+  const Vec3 m = map.toSpace(mid);
+  const Vec3 expected{ 0.5 * (points[0].x + points[1].x), 0.5 * (points[0].y + points[1].y),
+    0.5 * (points[0].z + points[1].z) };
+  EXPECT_NEAR(m.x, expected.x, 1e-12);
+  EXPECT_NEAR(m.y, expected.y, 1e-12);
+  EXPECT_NEAR(m.z, expected.z, 1e-12);
+}
+
+TEST(PlaneMap, NonCoplanarIsAnErrorUnlessProjected)
+{
+  const std::vector<Vec3> points{ { 0, 0, 0 }, { 10, 0, 0 }, { 10, 10, 0 }, { 0, 10, 0 },
+    { 5, 5, 3 } };
+  osm::PlaneMap map;
+  const std::string error = map.choose(points, false);
+  EXPECT_NE(error.find("not coplanar: point 4 at (5, 5, 3)"), std::string::npos) << error;
+  EXPECT_NE(error.find("ProjectToXYPlane"), std::string::npos) << error;
+  ASSERT_EQ(map.choose(points, true), "");
+  EXPECT_TRUE(map.isProjected());
+  EXPECT_FALSE(map.isFitted());
+  EXPECT_DOUBLE_EQ(map.z(), 0.6);
+  EXPECT_EQ(map.toSpace({ 1, 2 }).z, map.z());
+}
