@@ -382,6 +382,7 @@ def run_suite(args):
         "load_start": load_start,
         "load_end": None,
         "cli": cli,
+        "cli_commit": git_commit("Filters/CLI") if cli else None,
         "cpu": cpu_name(),
         "cores": os.cpu_count(),
         "memory_gib": round(os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES") / 2**30),
@@ -452,10 +453,14 @@ def git_dirty():
         return []
 
 
-def git_commit():
+def git_commit(path=None):
+    """HEAD, or the last commit that touched path."""
+    cmd = ["git", "-C", ROOT, "rev-parse", "--short", "HEAD"]
+    if path:
+        cmd = ["git", "-C", ROOT, "log", "-1", "--format=%h", "--", path]
     try:
-        return subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"],
-                              capture_output=True, text=True, check=True).stdout.strip()
+        return subprocess.run(cmd, capture_output=True, text=True,
+                              check=True).stdout.strip() or None
     except (OSError, subprocess.CalledProcessError):
         return "unknown"
 
@@ -639,7 +644,7 @@ def status_text(e):
     if f["status"] == "ok":
         return "ok"
     if f["status"] == "timeout":
-        return "**time-out** (> %d s)" % int(f["wall"] + 0.5)
+        return "**time-out**: %s" % f.get("detail", "")
     if f["status"] == "crash":
         return "**crash**: " + f.get("detail", "")[:80]
     return "**error**: " + f.get("detail", "")[:80]
@@ -674,6 +679,7 @@ def headline(data):
             continue
         r_mesh2, r_cdt, r_mesh2_tri, r_vtk, r_tris = [], [], [], [], []
         vtk_timeouts = 0
+        m2_failures = 0
         missing = {"osm": 0, "cgal-mesh2": 0, "vtk-delaunay2d": 0}
         for s in members:
             for tool in missing:
@@ -684,6 +690,8 @@ def headline(data):
             if not ok(o):
                 continue
             m2, cdt, vd = by.get(("cgal-mesh2", s)), by.get(("cgal-cdt", s)), by.get(("vtk-delaunay2d", s))
+            if m2 is not None and m2.get("first", {}).get("status") in ("timeout", "crash"):
+                m2_failures += 1
             if ok(m2):
                 r_mesh2.append(median_seconds(m2) / median_seconds(o))
                 r_mesh2_tri.append(per_triangle(o) / per_triangle(m2))
@@ -695,7 +703,7 @@ def headline(data):
             elif vd is not None and vd.get("first", {}).get("status") == "timeout":
                 vtk_timeouts += 1
         rows.append((cls, len(members), r_mesh2, r_tris, r_mesh2_tri, r_cdt, r_vtk, vtk_timeouts,
-                     missing))
+                     missing, m2_failures))
     return rows
 
 
@@ -713,39 +721,44 @@ def targets(data, profile):
     out = []
     osm_runs = [e for e in results if e["tool"] == "osm" and ok(e)]
 
-    # 1a. faster than Mesh_2 on every input
-    worse = []
-    compared = 0
+    # 1a. faster than Mesh_2 on every input (a Mesh_2 time-out or crash counts for OSM)
+    worse, failed, ratios = [], [], []
     for o in osm_runs:
         m2 = by.get(("cgal-mesh2", o["input"]))
         if ok(m2):
-            compared += 1
+            ratios.append(median_seconds(m2) / median_seconds(o))
             if median_seconds(o) >= median_seconds(m2):
                 worse.append((o["name"], median_seconds(o) / median_seconds(m2)))
-    ratios = [median_seconds(by[("cgal-mesh2", o["input"])]) / median_seconds(o)
-              for o in osm_runs if ok(by.get(("cgal-mesh2", o["input"])))]
-    out.append(("Core faster than CGAL Mesh_2 on every input",
-                "faster on %d of %d inputs; Mesh_2 time / OSM time from %s to %s%s" % (
-                    compared - len(worse), compared, fmt(min(ratios), 2) if ratios else "—",
-                    fmt(max(ratios), 2) if ratios else "—",
-                    "" if not worse else "; slowest relative: %s (OSM takes %sx Mesh_2's time)" % (
-                        max(worse, key=lambda w: w[1])[0], fmt(max(w[1] for w in worse), 2))),
+        elif m2 is not None and m2.get("first", {}).get("status") in ("timeout", "crash"):
+            failed.append("%s (%s)" % (o["name"], m2["first"]["status"]))
+    compared = len(ratios) + len(failed)
+    text = "faster on %d of %d inputs" % (compared - len(worse), compared)
+    if failed:
+        text += ", among them %d where Mesh_2 gave no mesh: %s" % (len(failed), ", ".join(failed))
+    if ratios:
+        text += "; where both finished, Mesh_2 time / OSM time from %s to %s (geometric mean %s)" % (
+            fmt(min(ratios), 2), fmt(max(ratios), 2), fmt(geomean(ratios), 2))
+    if worse:
+        w_ = max(worse, key=lambda x: x[1])
+        text += "; slowest relative: %s (OSM takes %s× Mesh_2's time)" % (w_[0], fmt(w_[1], 2))
+    out.append(("Core faster than CGAL Mesh_2 on every input", text,
                 not worse and compared > 0))
 
     # 1b. per triangle at most 1.5x CGAL CDT per triangle
     rel = []
     for o in osm_runs:
         c = by.get(("cgal-cdt", o["input"]))
-        if ok(c) and o["first"]["out_triangles"] >= 1000:
+        if ok(c) and median_wall(c) >= SHORT_RUN:
             rel.append((o["name"], per_triangle(o) / per_triangle(c)))
     if rel:
         worst = max(rel, key=lambda r: r[1])
         best = min(rel, key=lambda r: r[1])
         out.append(("Time per output triangle ≤ 1.5× CGAL CDT's per triangle",
                     "OSM / CDT per triangle: geometric mean %s, from %s (%s) to %s (%s); "
-                    "inputs with ≥ 1,000 output triangles" % (
+                    "over the inputs on which the CDT takes at least %g s (shorter runs are "
+                    "timed too coarsely here)" % (
                         fmt(geomean([r[1] for r in rel]), 2), fmt(best[1], 2), best[0],
-                        fmt(worst[1], 2), worst[0]),
+                        fmt(worst[1], 2), worst[0], SHORT_RUN),
                     worst[1] <= 1.5))
 
     # 2. per triangle flat within 1.5x from 1e4 to 1e7 triangles (generated families)
@@ -759,9 +772,15 @@ def targets(data, profile):
         hi = max(p[1] for p in pts)
         lo = min(p[1] for p in pts)
         met = met and hi / lo <= 1.5
-        texts.append("%s: %s ns to %s ns over %s – %s triangles (×%s)" % (
+        m2 = [per_triangle(by[("cgal-mesh2", o["input"])]) for o in osm_runs
+              if o["class"] == fam and 1e4 <= o["first"]["out_triangles"] <= 1.5e7
+              and ok(by.get(("cgal-mesh2", o["input"])))]
+        m2text = ""
+        if len(m2) >= 2:
+            m2text = "; Mesh_2 on the same inputs: ×%s" % fmt(max(m2) / min(m2), 2)
+        texts.append("%s: %s ns to %s ns over %s – %s triangles (×%s%s)" % (
             fam, fmt(lo * 1e9), fmt(hi * 1e9), fmt_int(pts[0][0]), fmt_int(pts[-1][0]),
-            fmt(hi / lo, 2)))
+            fmt(hi / lo, 2), m2text))
     largest = max((o["first"]["out_triangles"] for o in osm_runs), default=0)
     if texts:
         out.append(("Time per output triangle within 1.5× from 1e4 to 1e7 triangles",
@@ -935,17 +954,32 @@ def write_report(data, profile, md_path, png_path, plot_note):
       "OSM / Mesh_2 per triangle | OSM / CGAL CDT per triangle | "
       "vtkDelaunay2D time / OSM time | missing segments: OSM, Mesh_2, vtkDelaunay2D |")
     w("|---|---:|---:|---:|---:|---:|---:|---|")
-    for cls, count, r_m2, r_tris, r_m2t, r_cdt, r_vtk, vto, missing in headline(data):
+    for cls, count, r_m2, r_tris, r_m2t, r_cdt, r_vtk, vto, missing, m2f in headline(data):
+        m2text = range_text(r_m2)
+        if m2f:
+            m2text += " + %d Mesh_2 time-out(s)/crash(es)" % m2f
         vt = range_text(r_vtk)
         if vto:
             vt += " + %d time-out(s)" % vto
         if cls == "points":
             vt += " (no constraints)"
         w("| %s | %d | %s | %s | %s | %s | %s | %s |" % (
-            CLASS_LABEL.get(cls, cls), count, range_text(r_m2), range_text(r_tris),
+            CLASS_LABEL.get(cls, cls), count, m2text, range_text(r_tris),
             range_text(r_m2t), range_text(r_cdt), vt,
             ", ".join(fmt_int(missing[t]) for t in ("osm", "cgal-mesh2", "vtk-delaunay2d"))))
     w("")
+    layers = []
+    for tool, label in (("vtk-osm", "VTK filter `Update()` / core"),
+                        ("osm-mesh", "`osm-mesh` end to end (read, mesh, write .vtp) / core")):
+        r = [median_seconds(by[(tool, o["input"])]) / median_seconds(o)
+             for o in results if o["tool"] == "osm" and ok(o) and ok(by.get((tool, o["input"])))
+             and median_wall(o) >= SHORT_RUN]
+        if r:
+            layers.append("%s: %s" % (label, range_text(r)))
+    if layers:
+        w("OSM's own layers, CPU time against the core's on the same inputs (geometric mean, "
+          "range; runs of at least %g s): %s." % (SHORT_RUN, "; ".join(layers)))
+        w("")
     w("OSM makes more triangles than Mesh_2 on the same input (its overlay keeps every "
       "angle near the input at 30° or more, Mesh_2 asks for 20.7°, and OSM bounds the "
       "largest angle, not the smallest): compare the triangle counts in the tables below.")
@@ -992,7 +1026,7 @@ def write_report(data, profile, md_path, png_path, plot_note):
                                                 conv))
         w("")
     if profile:
-        w("Profile: %s" % profile_text(profile))
+        w(profile_text(profile))
         w("")
     w("## Results")
     w("")
@@ -1047,22 +1081,54 @@ def write_report(data, profile, md_path, png_path, plot_note):
 
 def profile_text(p):
     if p.get("error"):
-        return "not available: %s." % p["error"]
+        return "Profile not available: %s." % p["error"]
     total = p.get("total_ir") or 1
-    s = ("callgrind (`perf stat -e instructions` is %s here) on `bench_osm %s` "
-         "(%s output triangles), instructions per phase, inclusive: " % (
+    L = ["Profile: callgrind (`perf stat -e instructions` is %s on this machine) on "
+         "`bench_osm %s` (%s output triangles: callgrind runs about 50 times slower, and "
+         "instruction counts do not depend on the machine's load). Instructions per phase "
+         "(inclusive):" % (
              "supported" if p.get("perf_instructions") else "not supported",
-             p["input"], fmt_int(p.get("run", {}).get("out_triangles"))))
-    s += ", ".join("%s %.0f%%" % (name, 100.0 * cost / total) for name, cost in p["phases"])
-    s += ". Most expensive functions by their own instructions: "
-    s += "; ".join("`%s` %.1f%%" % (short_name(n), 100.0 * c / total)
-                   for n, c in p["top_exclusive"][:8])
-    s += "."
-    return s
+             p["input"], fmt_int(p.get("run", {}).get("out_triangles"))), "",
+         "| phase (function) | instructions | share |", "|---|---:|---:|"]
+    for name, cost in p["phases"]:
+        L.append("| %s | %s | %.1f%% |" % (name, fmt_int(cost), 100.0 * cost / total))
+    L.append("| whole run | %s | 100%% |" % fmt_int(total))
+    L += ["", "Most expensive functions by their own instructions:", "",
+          "| function | share |", "|---|---:|"]
+    for n, c in p["top_exclusive"][:12]:
+        L.append("| `%s` | %.1f%% |" % (short_name(n), 100.0 * c / total))
+    L.append("")
+    sort3 = sum(c for n, c in p["top_exclusive"]
+                if "__introsort_loop" in n and "std::array<int, 3ul>" in n)
+    atan = sum(c for n, c in p["top_exclusive"] if "atan2" in n)
+    carve = sum(c for n, c in p["top_exclusive"] if n.startswith("osm::carveDomain"))
+    if sort3 > 0.08 * total:
+        L.append(
+            "**Hot spot.** %.0f%% of all instructions sort `std::array<int, 3>` edge keys: "
+            "`carveDomain` (Domain.cxx) rebuilds triangle adjacency by sorting 3 keys per "
+            "triangle and then binary-searches every edge among the constrained ones (its own "
+            "instructions, another %.0f%%, are that search, the keys and the flood fill), and `complete` (Complete.cxx) "
+            "pairs half-edges with their twins by sorting 2 keys per edge. Both are "
+            "O(m log m) where a linear pass does: bucket the edges by their smaller vertex "
+            "(a counting sort into rows, as `buildRotation` already has for the half-edges), "
+            "find a twin or a constrained edge by scanning one short row (degree about 6); "
+            "and skip the flood fill when the domain is the hull or the box with no hole "
+            "seeds and no enclosed region (one region). The output's angle statistics call "
+            "`atan2` three times per triangle (%.0f%%); comparing cosines and taking one "
+            "`acos` for the extremes would do. These are suggestions for the core's owner: "
+            "the core was not changed by this suite." % (
+                100.0 * sort3 / total, 100.0 * carve / total, 100.0 * atan / total))
+    return "\n".join(L)
 
 
 def short_name(name):
     # Drop argument lists and template arguments, keep the qualified name.
+    what = ""
+    if "sort" in name and "std::array<int, 3ul>" in name:
+        what = " (of std::array<int, 3>)"
+    elif "sort" in name and "buildRotation" in name:
+        what = " (buildRotation's angular order)"
+    name = name.replace("(anonymous namespace)", "anon")
     out, depth = [], 0
     for ch in name:
         if ch in "<(":
@@ -1071,7 +1137,7 @@ def short_name(name):
             depth -= 1
         elif depth == 0:
             out.append(ch)
-    return "".join(out).strip() or name[:60]
+    return ("".join(out).strip() or name[:60]) + what
 
 
 def notes_text(data, plot_note):
@@ -1099,16 +1165,27 @@ def notes_text(data, plot_note):
         "(like random-segments, lengths log-uniform over 6 decades). Sizes N: %s." % (
             "present" if meta["data_present"] else "absent here: skipped", SEED,
             "; ".join("%s %s" % (k, ", ".join(human(n) for n in v)) for k, v in fams.items())),
-        "- **Caps** (to keep the suite near 20 minutes on 2 shared cores): spread stops at "
-        "3e4 vertices (at 1e5 OSM made 45 million triangles in 122 s using 8.4 GB and Mesh_2 "
-        "took 100 s); vtkDelaunay2D runs up to %s vertices (1e5 segments), the VTK filter up to "
-        "%s and on random segments and the real inputs only. After a time-out or a crash a "
-        "tool is not run on the larger members of that family (shown as skipped)." % (
+        "- **Caps** (to keep the suite near an hour on 2 shared cores): spread stops at 1e4 "
+        "input vertices (OSM makes 4.4 million triangles there; at 1e5 it made 45 million "
+        "in an earlier trial, 8.4 GB); random segments go to 1.2e6 vertices so that OSM "
+        "reaches 1e7 output triangles; vtkDelaunay2D runs up to %s vertices (1e5 segments), "
+        "the VTK filter up to %s, the VTK filter and osm-mesh on random segments and the "
+        "real inputs only. After a time-out or a crash a tool is not run on the larger "
+        "members of that family (shown as skipped)." % (
             human(meta["caps"].get("vtk-delaunay2d")), human(meta["caps"].get("vtk-osm"))),
-        "- **Runs.** %d runs when one takes under %g s, else %d, fewer when they would exceed "
-        "%d s together; the first run also checks the output. Time limit %d s per run, "
-        "address space %d GiB." % (RUNS_FAST, FAST_SECONDS, RUNS, REPEAT_BUDGET,
-                                  meta["timeout"], MEMORY_LIMIT >> 30),
+        "- **Time.** Every ratio, per-triangle time and the plot use the process CPU time "
+        "of the meshing call (median over the runs), not its wall time: the machine was "
+        "shared with other builds (see the load average above), and a process waiting for "
+        "a core is not working. Runs under %g s wall use their shortest wall time instead "
+        "(this machine's process CPU clock sometimes reads 0 for them). Wall times are in "
+        "the table too. osm-mesh's CPU time is GNU time's user + system time (0.01 s "
+        "resolution)." % SHORT_RUN,
+        "- **Runs.** %d runs when one takes under %g CPU s, %d under %g s, else %d; fewer "
+        "when they would exceed %d s of wall time together; the first run also checks the "
+        "output (angles, conformity). Limit per run: %d CPU seconds (RLIMIT_CPU; a run "
+        "killed by it is a time-out), %d s of wall time, %d GiB of address space." % (
+            RUNS_FAST, FAST_SECONDS, RUNS, SLOW_SECONDS, RUNS_SLOW, REPEAT_BUDGET,
+            meta["timeout"], meta["timeout"] * WALL_FACTOR, MEMORY_LIMIT >> 30),
         "- **Memory.** Peak RSS of the child during the meshing call (the kernel's peak mark "
         "is reset just before it); *B/tri* is its increase over the RSS before the call, so "
         "the input's own memory is not counted, the output and all working memory are.",
@@ -1119,9 +1196,13 @@ def notes_text(data, plot_note):
             "`.poly` file (generated inputs are first written as `.poly` files with 17 digits "
             "by `bench_make_poly`), meshing, writing the mesh (`%s`). Its memory is GNU "
             "time's peak RSS of the whole process (input, mesh and writing included), so "
-            "*B/tri* for it is that peak divided by the output triangles." % " ".join(
-                os.path.basename(x) if i == 0 else x
-                for i, x in enumerate(cli_command("osm-mesh", "IN.poly", "OUT"))))
+            "*B/tri* for it is that peak divided by the output triangles. It reads the file "
+            "with the project's VTK reader and meshes through the VTK filter. %s" % (
+                " ".join(os.path.basename(x) if i == 0 else x
+                         for i, x in enumerate(cli_command("osm-mesh", "IN.poly", "OUT"))),
+                "Its source was in git when the suite started (last commit to Filters/CLI: "
+                "`%s`)." % meta["cli_commit"] if meta.get("cli_commit") else
+                "Its source was not in git when the suite started."))
     else:
         lines.append("- **Not measured: the `osm-mesh` command-line tool** (end to end, with "
                      "I/O). It was not in the tree when this suite ran (it was being written); "
@@ -1165,8 +1246,8 @@ def write_plot(data, png_path):
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel("output triangles")
-    ax.set_ylabel("time per output triangle (ns)")
-    ax.set_title("Time per output triangle (median of runs; lower is better)")
+    ax.set_ylabel("CPU time per output triangle (ns)")
+    ax.set_title("Time per output triangle (median CPU time of runs; lower is better)")
     ax.grid(True, which="both", alpha=0.25)
     handles = [Line2D([], [], color=COLORS[t], marker="o", linestyle="-", label=TOOLS[t][2])
                for t in TOOL_ORDER if any(e["tool"] == t and ok(e) for e in data["results"])]
