@@ -1215,7 +1215,8 @@ def notes_text(data, plot_note):
             "by `bench_make_poly`), meshing, writing the mesh (`%s`). Its memory is GNU "
             "time's peak RSS of the whole process (input, mesh and writing included), so "
             "*B/tri* for it is that peak divided by the output triangles. It reads the file "
-            "with the project's VTK reader and meshes through the VTK filter. %s" % (
+            "with the project's VTK reader and meshes through the VTK filter; its output is "
+            "not inspected again (the filter's row checks the same mesh). %s" % (
                 " ".join(os.path.basename(x) if i == 0 else x
                          for i, x in enumerate(cli_command("osm-mesh", "IN.poly", "OUT"))),
                 "Its source was in git when the suite started (last commit to Filters/CLI: "
@@ -1225,6 +1226,10 @@ def notes_text(data, plot_note):
         lines.append("- **Not measured: the `osm-mesh` command-line tool** (end to end, with "
                      "I/O). It was not in the tree when this suite ran (it was being written); "
                      "rerunning the command measures it once it is built.")
+    lines.append("- **Data.** The table as CSV: `Testing/Benchmarks/results.csv`; the raw "
+                 "per-run JSON (`build-bench/bench/results.json`, with every run's times and "
+                 "phases) is not kept in the repository. `run_benchmarks.py --report-only` "
+                 "rewrites this file from it.")
     lines.append("- **Plot.** Made with matplotlib (Debian: `apt-get install python3-matplotlib`; "
                  "it is not a dependency of the project or its CI). Without it the report is "
                  "written without the plot.")
@@ -1279,6 +1284,35 @@ def write_plot(data, png_path):
     return None
 
 
+def write_csv(data, path):
+    """One row per (tool, input): the figures of the tables, small enough to keep."""
+    import csv
+    cols = ["input", "class", "tool", "status", "runs", "cpu_s", "wall_s", "input_vertices",
+            "input_segments", "out_vertices", "out_triangles", "min_angle", "max_angle",
+            "missing_segments", "outside_segments", "peak_rss_bytes", "bytes_per_triangle"]
+    with open(path, "w", newline="") as f:
+        out = csv.writer(f)
+        out.writerow(cols)
+        for e in data["results"]:
+            fr = e.get("first", {})
+            good = ok(e)
+            out.writerow([
+                e["name"], e["class"], e["tool"],
+                "skipped" if "skipped" in e else fr.get("status", ""),
+                len(e.get("seconds", [])),
+                "%.6g" % median_seconds(e) if good else "",
+                "%.6g" % median_wall(e) if good else "",
+                fr.get("input_vertices", ""), fr.get("input_segments", ""),
+                fr.get("out_vertices", "") if good else "",
+                fr.get("out_triangles", "") if good else "",
+                "%.6g" % fr["min_angle"] if good and "min_angle" in fr else "",
+                "%.6g" % fr["max_angle"] if good and "max_angle" in fr else "",
+                fr.get("missing_segments", "") if good else "",
+                fr.get("outside_segments", "") if good else "",
+                peak_bytes(fr) or "" if good else "",
+                "%.4g" % bytes_per_triangle(e) if good and bytes_per_triangle(e) else ""])
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     p.add_argument("--build", default=os.path.join(ROOT, "build-bench"),
@@ -1304,6 +1338,8 @@ def main():
                         "<build>/bench/results.json, too large to commit)")
     p.add_argument("--markdown", default=os.path.join(ROOT, "BENCHMARKS.md"))
     p.add_argument("--png", default=os.path.join(HERE, "benchmarks.png"))
+    p.add_argument("--csv", default=os.path.join(HERE, "results.csv"),
+                   help="the table as CSV (small; the raw JSON is not meant to be kept)")
     args = p.parse_args()
     args.data = os.path.normpath(args.data)
     if args.results is None:
@@ -1327,6 +1363,7 @@ def main():
         with open(args.results, "w") as f:
             json.dump(data, f, indent=1)
             f.write("\n")
+    write_csv(data, args.csv)
     plot_note = write_plot(data, args.png)
     write_report(data, data.get("profile"), args.markdown, args.png, plot_note)
     print("wrote %s, %s and %s" % (args.markdown, args.png, args.results))
