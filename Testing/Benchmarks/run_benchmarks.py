@@ -943,7 +943,8 @@ def write_report(data, profile, md_path, png_path, plot_note):
           "input, so the ratios suffer less than the absolute times." % (tuple(ls) + tuple(le)))
     if meta.get("dirty"):
         w("")
-        w("The drivers were built from commit `%s` plus uncommitted changes to: %s." % (
+        w("The drivers were built from the working tree, which other sessions were editing: "
+          "when the suite started it was at commit `%s` with uncommitted changes to: %s." % (
             meta["commit"], ", ".join("`%s`" % d for d in meta["dirty"])))
     if meta.get("quick"):
         w("")
