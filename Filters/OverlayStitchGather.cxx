@@ -391,6 +391,9 @@ bool OverlayStitchGatherInput(vtkMultiProcessController* controller, vtkPolyData
     if (local->GetCellData()->GetArray(vtkDataSetAttributes::GhostArrayName()))
     {
       local->RemoveGhostCells();
+      // RemoveGhostCells() may drop the field data (ParaView 5.11's VTK does): keep
+      // the hole seeds.
+      local->GetFieldData()->ShallowCopy(input->GetFieldData());
     }
   }
 

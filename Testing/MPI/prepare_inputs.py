@@ -1,7 +1,7 @@
 """Writes the inputs of the MPI tests as .vtp files (run with pvpython or pvbatch).
 
     pvpython prepare_inputs.py --output-dir DIR [--wedge wedge.vtk] [--poly a.poly ...]
-        [--pieces 2 3] [--global-ids]
+        [--pieces 2 3] [--ghost-pieces 2] [--global-ids]
 
 Every input becomes line data in the convention of the project's .poly reader:
 points with z = 0, one 2-point line cell per segment, one vertex cell per point
@@ -13,7 +13,7 @@ import argparse
 import os
 import sys
 
-from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkIdTypeArray, vtkPoints
+from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkIdTypeArray, vtkPoints, vtkUnsignedCharArray
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
 from vtkmodules.vtkIOLegacy import vtkPolyDataReader
 from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
@@ -124,11 +124,13 @@ def write(data, path):
         data.GetFieldData().GetArray("HolePoints").GetNumberOfTuples()))
 
 
-def write_pieces(points, segments, holes, count, path, global_ids):
+def write_pieces(points, segments, holes, count, path, global_ids, ghosts=False):
     """A partitioned .pvtp: the segments in `count` slabs of x (each piece holds the
     points its cells use, so pieces repeat the points on their common boundary);
     points on no segment go to the piece of their slab; the hole seeds are only
-    in the LAST piece, so that they reach rank 0 from another rank."""
+    in the LAST piece, so that they reach rank 0 from another rank. With ghosts,
+    each piece also holds a copy of the other pieces' segments that touch its
+    points, marked as duplicate ghost cells (vtkGhostType)."""
     xs = sorted(set(x for x, _ in points))
     cut = [xs[min(len(xs) - 1, (k * len(xs)) // count)] for k in range(1, count)]
     slab = lambda x: sum(1 for c in cut if x >= c)
@@ -143,7 +145,12 @@ def write_pieces(points, segments, holes, count, path, global_ids):
             pieces[slab(points[i][0])][1].append(i)
     base = os.path.splitext(path)[0]
     sources = []
-    for k, (piece_segments, lonely) in enumerate(pieces):
+    for k, (own_segments, lonely) in enumerate(pieces):
+        piece_segments = list(own_segments)
+        if ghosts:
+            touched = set(i for s in own_segments for i in s)
+            piece_segments += [s for j, (other, _) in enumerate(pieces) if j != k
+                               for s in other if s[0] in touched or s[1] in touched]
         local = {}
         local_points = []
         for i in [i for s in piece_segments for i in s] + lonely:
@@ -153,20 +160,31 @@ def write_pieces(points, segments, holes, count, path, global_ids):
         order = sorted(local, key=local.get)
         data = make_polydata(local_points, [(local[a], local[b]) for a, b in piece_segments],
                              holes if k == count - 1 else [], order if global_ids else None)
+        if ghosts:
+            flags = vtkUnsignedCharArray()
+            flags.SetName("vtkGhostType")
+            for _ in range(data.GetNumberOfVerts()):  # cell ids: vertex cells first
+                flags.InsertNextValue(0)
+            for n in range(len(piece_segments)):
+                flags.InsertNextValue(0 if n < len(own_segments) else 1)  # 1: DUPLICATECELL
+            data.GetCellData().AddArray(flags)
         name = "%s_%d.vtp" % (os.path.basename(base), k)
         write(data, os.path.join(os.path.dirname(path), name))
         sources.append(name)
     with open(path, "w") as f:
         f.write('<?xml version="1.0"?>\n<VTKFile type="PPolyData" version="1.0" '
-                'byte_order="LittleEndian" header_type="UInt64">\n <PPolyData GhostLevel="0">\n'
+                'byte_order="LittleEndian" header_type="UInt64">\n <PPolyData GhostLevel="%d">\n'
+                % (1 if ghosts else 0) +
                 '  <PPoints><PDataArray type="Float64" NumberOfComponents="3"/></PPoints>\n')
         if global_ids:
             f.write('  <PPointData GlobalIds="GlobalPointIds">'
                     '<PDataArray type="Int64" Name="GlobalPointIds"/></PPointData>\n')
+        if ghosts:
+            f.write('  <PCellData><PDataArray type="UInt8" Name="vtkGhostType"/></PCellData>\n')
         for name in sources:
             f.write('  <Piece Source="%s"/>\n' % name)
         f.write(" </PPolyData>\n</VTKFile>\n")
-    print("wrote %s: %d pieces" % (path, count))
+    print("wrote %s: %d pieces%s" % (path, count, " with ghost cells" if ghosts else ""))
 
 
 def main():
@@ -176,6 +194,8 @@ def main():
     parser.add_argument("--poly", nargs="*", default=[])
     parser.add_argument("--pieces", type=int, nargs="*", default=[],
                         help="also write NAME-<k>.pvtp partitioned in k pieces")
+    parser.add_argument("--ghost-pieces", type=int, nargs="*", default=[],
+                        help="also write NAME-<k>g.pvtp: k pieces with a layer of ghost cells")
     parser.add_argument("--global-ids", action="store_true",
                         help="number the points with global ids (their index in the input)")
     args = parser.parse_args()
@@ -191,6 +211,9 @@ def main():
         for count in args.pieces:
             write_pieces(*pslg, count, os.path.join(args.output_dir, "%s-%d.pvtp" % (name, count)),
                          args.global_ids)
+        for count in args.ghost_pieces:
+            write_pieces(*pslg, count, os.path.join(args.output_dir, "%s-%dg.pvtp" % (name, count)),
+                         args.global_ids, ghosts=True)
 
 
 if __name__ == "__main__":

@@ -12,7 +12,8 @@ GROUP
 
 Each input is meshed once serially (pvbatch, one process), then under
 `mpirun -np 2` and `-np 3`, its lines genuinely spread over the ranks (a
-partitioned .pvtp read in parallel, or ParaView's RedistributeDataSet). A parallel
+partitioned .pvtp read in parallel, with or without ghost cells, or ParaView's
+RedistributeDataSet). A parallel
 run passes when every rank held part of the input (its probe printed a cell
 count > 0), the statistics from the Mesh output's field data equal the serial
 ones (triangles, vertices, input points and segments, repairs, regions, min and
@@ -161,7 +162,7 @@ class Runner:
         figures = {"serial": serial}
         for ranks, source, distribute, fail_first in runs:
             kind = os.path.splitext(source)[1][1:]
-            tag = "%s-np%d-%s-%s" % (name, ranks, kind, distribute)
+            tag = "np%d-%s-%s" % (ranks, os.path.basename(source).replace(".", "_"), distribute)
             path = source if os.path.isabs(source) else os.path.join(self.out, source)
             parallel = self.mesh(tag, ranks, path, distribute, fail_first)
             print("  -np %d (%s): %.2f s in the mesher, %.2f s pvbatch" % (
@@ -177,7 +178,7 @@ class Runner:
 
     def prepare(self, polys, global_ids=False):
         cmd = [self.args.pvpython, PREPARE_SCRIPT, "--output-dir", self.out, "--wedge",
-               self.args.wedge, "--pieces", "2", "3", "--poly"] + polys
+               self.args.wedge, "--pieces", "2", "3", "--ghost-pieces", "2", "--poly"] + polys
         if global_ids:
             cmd.append("--global-ids")
         run(cmd, timeout=600)
@@ -189,6 +190,7 @@ def bundled(runner):
         runner.case(name, [
             (2, name + "-2.pvtp", "none", False),
             (3, name + "-3.pvtp", "none", True),
+            (2, name + "-2g.pvtp", "none", False),  # with a layer of ghost cells
             (2, name + ".vtp", "one", False),
             (3, name + ".vtp", "all", False),
         ])
@@ -211,6 +213,7 @@ def realdata(runner):
         figures = runner.case(name, [
             (2, name + ".vtp", "one", False),
             (3, name + "-3.pvtp", "none", False),
+            (2, name + "-2g.pvtp", "none", False),  # with a layer of ghost cells
             (3, name + ".vtp", "all", False),
             # The plugin's .poly reader: on rank 0 only, then spread by RedistributeDataSet
             # (no global ids: equal to the serial mesh on these inputs, not on every input).
