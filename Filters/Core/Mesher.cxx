@@ -173,17 +173,22 @@ void mergeEqualPoints(Work& w)
   w.segmentOrigin = std::move(origin);
 }
 
-std::string crossingError(
-  const Work& w, const std::vector<SegmentCrossing>& crossings, int exponent)
+/// "input segment A and input segment B cross near (x, y)", in user coordinates.
+std::string describeCrossing(const Work& w, const SegmentCrossing& c, int exponent)
 {
-  const SegmentCrossing& c = crossings.front();
   const Point p{ std::ldexp(c.p.x, exponent), std::ldexp(c.p.y, exponent) };
   auto name = [&](int s) {
     return s < static_cast<int>(w.segments.size())
       ? "input segment " + std::to_string(w.segmentOrigin[s])
       : std::string("an edge of the convex hull");
   };
-  std::string msg = name(c.a) + " and " + name(c.b) + " cross near " + formatPoint(p);
+  return name(c.a) + " and " + name(c.b) + " cross near " + formatPoint(p);
+}
+
+std::string crossingError(
+  const Work& w, const std::vector<SegmentCrossing>& crossings, int exponent)
+{
+  std::string msg = describeCrossing(w, crossings.front(), exponent);
   if (crossings.size() > 1)
     msg += " (and " + std::to_string(crossings.size() - 1) + " more crossing pair(s))";
   return msg + "; enable resolving intersections to split them";
@@ -211,6 +216,7 @@ private:
   Result res;
   CleanPslg clean;
   int exponent = 0;
+  std::string firstCrossing; ///< the first crossing split, for the warning
 };
 
 Result Mesher::execute()
@@ -321,11 +327,16 @@ void Mesher::meshRounds(Work& w)
       if (round >= 4)
         throw Stop{ "could not resolve all crossings after 5 rounds: " +
           crossingError(w, walk.segmentCrossings, exponent) };
+      if (st.crossingsSplit == 0)
+        firstCrossing = describeCrossing(w, walk.segmentCrossings.front(), exponent);
       splitCrossings(w, walk.segmentCrossings, st);
       mergeEqualPoints(w);
       continue;
     }
     chooseDomain(w, true); // now say why the domain changed, once
+    if (st.crossingsSplit > 0)
+      res.warnings.push_back("split " + std::to_string(st.crossingsSplit) +
+        " crossing(s) of input segments at their intersection points, e.g. " + firstCrossing);
     st.segmentsSplitAtVertices = walk.splitsAtInputVertices + walk.duplicatePieces;
     st.overlayVertices = overlay.mesh.points.size();
     st.overlaySteinerPoints = overlay.steinerPoints + 4;

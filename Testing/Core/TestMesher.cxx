@@ -181,6 +181,9 @@ TEST(Clean, SplitsCrossingSegments)
     other += o == VertexOrigin::Other;
   EXPECT_EQ(other, 1u);
   EXPECT_EQ(r.stats.regions, 4u);
+  // The repair is said, naming the two segments and where they cross.
+  EXPECT_TRUE(mentions(r.warnings, "split 1 crossing(s)")) << r.warnings.size();
+  EXPECT_TRUE(mentions(r.warnings, "input segment 4 and input segment 5 cross near"));
 }
 
 TEST(Clean, RefusesCrossingsWhenAskedTo)
