@@ -3,6 +3,7 @@
 #include "Predicates.h"
 
 #include <algorithm>
+#include <array>
 #include <limits>
 #include <string>
 
@@ -145,34 +146,41 @@ Rotation buildRotation(const PlanarGraph& g)
   }
   for (int v = 0; v < n; ++v)
     r.start[v + 1] += r.start[v];
-  r.to.resize(r.start[n]);
+  // Each half-edge carries its edge through the angular sort, so the two
+  // half-edges of an edge find each other in one linear pass afterwards.
+  std::vector<std::array<int, 2>> half(r.start[n]); // (head, edge)
   std::vector<int> fill(r.start.begin(), r.start.end() - 1);
-  for (const Segment& e : g.edges)
+  for (int e = 0; e < static_cast<int>(g.edges.size()); ++e)
   {
-    r.to[fill[e[0]]++] = e[1];
-    r.to[fill[e[1]]++] = e[0];
+    half[fill[g.edges[e][0]]++] = { g.edges[e][1], e };
+    half[fill[g.edges[e][1]]++] = { g.edges[e][0], e };
   }
   for (int v = 0; v < n; ++v)
   {
     const Point& c = g.points[v];
-    std::sort(r.to.begin() + r.start[v], r.to.begin() + r.start[v + 1], [&](int a, int b) {
-      const bool ua = upperHalf(c, g.points[a]), ub = upperHalf(c, g.points[b]);
-      if (ua != ub)
-        return ua;
-      return orientSign(c, g.points[a], g.points[b]) > 0;
-    });
+    std::sort(half.begin() + r.start[v], half.begin() + r.start[v + 1],
+      [&](const std::array<int, 2>& ha, const std::array<int, 2>& hb) {
+        const Point &a = g.points[ha[0]], &b = g.points[hb[0]];
+        const bool ua = upperHalf(c, a), ub = upperHalf(c, b);
+        if (ua != ub)
+          return ua;
+        return orientSign(c, a, b) > 0;
+      });
   }
-  // Pair half-edges by their endpoints.
-  std::vector<std::array<int, 3>> keys(r.to.size());
-  for (int v = 0; v < n; ++v)
-    for (int h = r.start[v]; h < r.start[v + 1]; ++h)
-      keys[h] = { std::min(v, r.to[h]), std::max(v, r.to[h]), h };
-  std::sort(keys.begin(), keys.end());
-  r.twin.assign(r.to.size(), -1);
-  for (std::size_t k = 0; k + 1 < keys.size(); k += 2)
+  r.to.resize(half.size());
+  r.twin.assign(half.size(), -1);
+  std::vector<int> firstHalf(g.edges.size(), -1);
+  for (int h = 0; h < static_cast<int>(half.size()); ++h)
   {
-    r.twin[keys[k][2]] = keys[k + 1][2];
-    r.twin[keys[k + 1][2]] = keys[k][2];
+    r.to[h] = half[h][0];
+    int& first = firstHalf[half[h][1]];
+    if (first < 0)
+      first = h;
+    else
+    {
+      r.twin[h] = first;
+      r.twin[first] = h;
+    }
   }
   return r;
 }

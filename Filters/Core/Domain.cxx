@@ -3,6 +3,7 @@
 #include "Predicates.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
 
@@ -12,30 +13,75 @@ namespace osm
 namespace
 {
 
-/// Neighbour across each triangle edge (edge i opposite vertex i), -1 on the boundary.
-std::vector<int> adjacency(const std::vector<Triangle>& tris, std::vector<char>& edgeConstrained,
-  std::vector<Segment>& constrained)
+/// Pairs (hi, id) grouped into rows by lo in [0, n), each row in the order
+/// emitted (a stable counting sort). forEach(emit) calls emit(lo, hi, id) for
+/// every item, and must do so identically on both of its calls.
+template <typename ForEach>
+void bucketByLo(
+  int n, ForEach&& forEach, std::vector<int>& start, std::vector<std::array<int, 2>>& items)
 {
-  std::vector<std::array<int, 3>> keys;
-  keys.reserve(tris.size() * 3);
-  for (int t = 0; t < static_cast<int>(tris.size()); ++t)
-    for (int i = 0; i < 3; ++i)
-    {
-      const int a = tris[t][(i + 1) % 3], b = tris[t][(i + 2) % 3];
-      keys.push_back({ std::min(a, b), std::max(a, b), 3 * t + i });
-    }
-  std::sort(keys.begin(), keys.end());
-  std::sort(constrained.begin(), constrained.end());
-  std::vector<int> nbr(keys.size(), -1);
-  edgeConstrained.assign(keys.size(), 0);
-  for (std::size_t k = 0; k < keys.size(); ++k)
+  start.assign(static_cast<std::size_t>(n) + 1, 0);
+  forEach([&](int lo, int, int) { ++start[lo + 1]; });
+  for (int v = 0; v < n; ++v)
+    start[v + 1] += start[v];
+  items.resize(start[n]);
+  std::vector<int> fill(start.begin(), start.end() - 1);
+  forEach([&](int lo, int hi, int id) { items[fill[lo]++] = { hi, id }; });
+}
+
+/// Neighbour across each triangle edge (edge i opposite vertex i), -1 on the
+/// boundary, and whether each edge is one of the constrained (lo, hi) pairs.
+/// Linear time whatever the vertex degrees: the edges are bucketed by their
+/// smaller vertex, and each bucket is matched on the larger vertex through
+/// arrays stamped with the bucket's vertex. Edges with the same ends pair in
+/// triangle order, each with the previous one.
+std::vector<int> adjacency(const std::vector<Triangle>& tris,
+  const std::vector<Segment>& constrained, std::vector<char>& edgeConstrained)
+{
+  int n = 0; // vertices 0..n-1
+  for (const Triangle& t : tris)
+    n = std::max({ n, t[0] + 1, t[1] + 1, t[2] + 1 });
+  std::vector<int> edgeStart, constrainedStart;
+  std::vector<std::array<int, 2>> edges, constrainedEdges;
+  bucketByLo(
+    n,
+    [&](auto&& emit) {
+      for (int t = 0; t < static_cast<int>(tris.size()); ++t)
+        for (int i = 0; i < 3; ++i)
+        {
+          const int a = tris[t][(i + 1) % 3], b = tris[t][(i + 2) % 3];
+          emit(std::min(a, b), std::max(a, b), 3 * t + i);
+        }
+    },
+    edgeStart, edges);
+  bucketByLo(
+    n,
+    [&](auto&& emit) {
+      for (const Segment& s : constrained)
+        if (0 <= s[0] && s[0] <= s[1] && s[1] < n) // others match no edge
+          emit(s[0], s[1], 0);
+    },
+    constrainedStart, constrainedEdges);
+  std::vector<int> nbr(edges.size(), -1);
+  edgeConstrained.assign(edges.size(), 0);
+  // Per larger vertex hi, valid while its stamp is the current lo: (lo, hi) is
+  // constrained; the last edge seen with ends (lo, hi).
+  std::vector<int> constrainedStamp(n, -1), lastStamp(n, -1), last(n, -1);
+  for (int lo = 0; lo < n; ++lo)
   {
-    const Segment e{ keys[k][0], keys[k][1] };
-    edgeConstrained[keys[k][2]] = std::binary_search(constrained.begin(), constrained.end(), e);
-    if (k + 1 < keys.size() && keys[k + 1][0] == e[0] && keys[k + 1][1] == e[1])
+    for (int k = constrainedStart[lo]; k < constrainedStart[lo + 1]; ++k)
+      constrainedStamp[constrainedEdges[k][0]] = lo;
+    for (int k = edgeStart[lo]; k < edgeStart[lo + 1]; ++k)
     {
-      nbr[keys[k][2]] = keys[k + 1][2] / 3;
-      nbr[keys[k + 1][2]] = keys[k][2] / 3;
+      const int hi = edges[k][0], e = edges[k][1];
+      edgeConstrained[e] = constrainedStamp[hi] == lo;
+      if (lastStamp[hi] == lo)
+      {
+        nbr[e] = last[hi] / 3;
+        nbr[last[hi]] = e / 3;
+      }
+      lastStamp[hi] = lo;
+      last[hi] = e;
     }
   }
   return nbr;
@@ -150,7 +196,7 @@ Carving carveDomain(const std::vector<Point>& P, const std::vector<Triangle>& tr
   std::vector<Segment> constrained, bool removeExterior, const std::vector<Point>& holes)
 {
   std::vector<char> edgeConstrained;
-  const std::vector<int> nbr = adjacency(tris, edgeConstrained, constrained);
+  const std::vector<int> nbr = adjacency(tris, constrained, edgeConstrained);
   const int removed = -2;
   std::vector<int> labels(tris.size(), -1);
   if (removeExterior)
