@@ -193,7 +193,7 @@ private:
 } // namespace
 
 Carving carveDomain(const std::vector<Point>& P, const std::vector<Triangle>& tris,
-  std::vector<Segment> constrained, bool removeExterior, const std::vector<Point>& holes)
+  const std::vector<Segment>& constrained, bool removeExterior, const std::vector<Point>& holes)
 {
   std::vector<char> edgeConstrained;
   const std::vector<int> nbr = adjacency(tris, constrained, edgeConstrained);

@@ -21,7 +21,7 @@ struct Carving
 /// removeExterior: drop triangles reachable from the box boundary without
 /// crossing a constrained edge. constrained holds (lo, hi) vertex pairs.
 Carving carveDomain(const std::vector<Point>& points, const std::vector<Triangle>& triangles,
-  std::vector<Segment> constrained, bool removeExterior, const std::vector<Point>& holes);
+  const std::vector<Segment>& constrained, bool removeExterior, const std::vector<Point>& holes);
 
 /// Convex hull of the points, counter-clockwise, without collinear vertices.
 std::vector<int> convexHull(const std::vector<Point>& points);
