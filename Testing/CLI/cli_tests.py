@@ -7,7 +7,7 @@
                  --shared DIR --out DIR
 
 GROUP is one of: help, options, formats, inputs, errors, determinism,
-reference, realdata. Every check prints "ok" or "FAIL"; the exit status is 1
+reference, realdata, matrix (the bad-input matrix of issue 6). Every check prints "ok" or "FAIL"; the exit status is 1
 if any check failed, 77 (CTest's skip) when the group's data is absent.
 Plain Python 3, no third-party module.
 """
@@ -537,6 +537,126 @@ def group_realdata():
         validate(source, base + ".node", "--allow-missing", what=n + ": mesh valid")
 
 
+def poly_text(points, segments, holes=()):
+    """A 0-based .poly file: points (x, y), segments (a, b), hole seeds (x, y)."""
+    lines = ["%d 2 0 0" % len(points)]
+    lines += ["%d %r %r" % (i, x, y) for i, (x, y) in enumerate(points)]
+    lines += ["%d 0" % len(segments)]
+    lines += ["%d %d %d" % (i, a, b) for i, (a, b) in enumerate(segments)]
+    lines += ["%d" % len(holes)]
+    lines += ["%d %r %r" % (i, x, y) for i, (x, y) in enumerate(holes)]
+    return "\n".join(lines) + "\n"
+
+
+def legacy_vtk(path, points, cells_keyword, cells):
+    """An ASCII legacy polydata file with 3D points and one kind of cell."""
+    with open(path, "w") as f:
+        f.write("# vtk DataFile Version 3.0\nmatrix row\nASCII\nDATASET POLYDATA\n")
+        f.write("POINTS %d double\n" % len(points))
+        f.write("".join("%r %r %r\n" % p for p in points))
+        f.write("%s %d %d\n" % (cells_keyword, len(cells), sum(len(c) + 1 for c in cells)))
+        f.write("".join("%d %s\n" % (len(c), " ".join(str(i) for i in c)) for c in cells))
+    return path
+
+
+def matrix_row(name, source, *options, stats=None, warnings=(), validate_extra=("--allow-missing",)):
+    """One row of the bad-input matrix that must mesh: exit 0, the expected
+    warnings and statistics, and a mesh the independent validator accepts."""
+    mesh = out("matrix-%s.node" % name)
+    p = run(source, "-o", mesh, "--stats", *options)
+    errors = [l for l in p.stderr.splitlines() if not l.startswith("osm-mesh: warning: ")]
+    if not check(p.returncode == 0 and not errors, name + ": meshed",
+                 "status %d, stderr %r" % (p.returncode, p.stderr[-400:])):
+        return {}
+    result = json.loads(p.stdout)
+    for fragment in warnings:
+        check(fragment in p.stderr, name + ": a warning says %r" % fragment, repr(p.stderr))
+    for key, expected in (stats or {}).items():
+        check(result.get(key) == expected, name + ": %s = %r" % (key, expected),
+              repr(result.get(key)))
+    check(result.get("OutputTriangles", 0) > 0 and result.get("MaxAngleDeg", 180) <= 170,
+          name + ": triangles, none with an angle above 170 degrees",
+          "%r triangles, max angle %r" % (result.get("OutputTriangles"), result.get("MaxAngleDeg")))
+    validate(source, mesh, *validate_extra, what=name + ": the validator accepts the mesh")
+    return result
+
+
+def group_matrix():
+    """The bad-input matrix of issue 6 through osm-mesh: every row meshes with
+    its documented repair counted and said, or fails with one clear line."""
+    def write(name, text):
+        path = out(name)
+        with open(path, "w") as f:
+            f.write(text)
+        return path
+
+    square = [(0, 0), (10, 0), (10, 10), (0, 10)]
+    ring = [(0, 1), (1, 2), (2, 3), (3, 0)]
+    # NaN and infinity in a .poly are refused by the reader with the line.
+    expect_error([write("m-nan.poly", poly_text(square, ring).replace("10 10", "nan 10", 1))], 1,
+                 ["m-nan.poly:4:"], "NaN coordinate in a .poly")
+    expect_error([write("m-inf.poly", poly_text(square, ring).replace("3 0 10", "3 0 inf", 1))], 1,
+                 ["m-inf.poly:5:", "not a finite number"], "infinite coordinate in a .poly")
+    # Exact duplicates are merged; near duplicates only within --merge-tolerance.
+    matrix_row("exact-duplicate", write("m-dup.poly", poly_text(square + [(10, 10)], ring + [(1, 4)])),
+               stats={"DuplicatePointsMerged": 1}, warnings=["merged 1 duplicate point"],
+               validate_extra=())
+    near = write("m-near.poly", poly_text(square + [(5, 5), (5, 5 + 1e-9)], ring))
+    r = matrix_row("near-duplicate-kept", near, stats={"DuplicatePointsMerged": 0},
+                   validate_extra=())
+    matrix_row("near-duplicate-merged", near, "--merge-tolerance", "1e-6",
+               stats={"DuplicatePointsMerged": 1}, warnings=["merged 1 duplicate point"])
+    matrix_row("zero-length", write("m-zero.poly", poly_text(square, ring + [(2, 2)])),
+               stats={"ZeroLengthSegmentsDropped": 1}, warnings=["zero-length segment"],
+               validate_extra=())
+    # Crossing segments: split (said and counted), or refused naming both.
+    crossing = write("m-cross.poly", poly_text(square, ring + [(0, 2), (1, 3)]))
+    matrix_row("crossing-split", crossing, stats={"CrossingsSplit": 1},
+               warnings=["split 1 crossing", "input segment 4 and input segment 5"],
+               validate_extra=())
+    expect_error([crossing, "--no-resolve"], 1, ["input segment 4 and input segment 5 cross"],
+                 "crossing segments refused with --no-resolve")
+    # Collinear overlapping segments, and a vertex lying on a segment.
+    overlap = square + [(2, 5), (6, 5), (4, 5), (8, 5)]
+    matrix_row("collinear-overlap", write("m-overlap.poly", poly_text(overlap, ring + [(4, 5), (6, 7)])),
+               validate_extra=())
+    matrix_row("vertex-on-segment", write("m-tee.poly", poly_text(square + [(5, 0)], ring)),
+               validate_extra=())
+    # Degenerate point sets: the padded box is meshed instead of an empty hull.
+    for name, pts, segs in (("one-point", [(1, 2)], []), ("two-points", [(1, 2), (4, -1)], [(0, 1)]),
+                            ("collinear", [(0, 0), (1, 2), (2, 4), (3, 6)], [(0, 3)])):
+        matrix_row(name, write("m-%s.poly" % name, poly_text(pts, segs)),
+                   warnings=["collinear", "bounding box"], validate_extra=())
+    # Empty input (a .node file without points; a .poly without points takes
+    # them from its .node, as in Triangle): the core returns an empty mesh with
+    # a warning; osm-mesh says so and, having nothing to write, exits with 1.
+    p = expect_error([write("m-empty.node", "0 2 0 0\n"), "-o", out("matrix-empty.vtp")], 1,
+                     ["is empty"], "empty input")
+    check("osm-mesh: warning: the input has no points" in p.stderr,
+          "empty input: the warning says the input has no points", repr(p.stderr))
+    # 10,000 segments through one vertex.
+    n = 10000
+    hub = [(0.0, 0.0)] + [(math.cos(2 * math.pi * k / n), math.sin(2 * math.pi * k / n))
+                          for k in range(n)]
+    matrix_row("10000-spokes", write("m-hub.poly", poly_text(hub, [(0, k) for k in range(1, n + 1)])),
+               "--domain", "hull", validate_extra=())
+    # Extreme magnitudes: meshed correctly at 1e300, a clear refusal for a 1e-300 spread.
+    big = [(x * 1e300, y * 1e300) for x, y in ((0, 0), (1, 0), (1, 1), (0, 1), (0.3, 0.6))]
+    matrix_row("magnitude-1e300", write("m-big.poly", poly_text(big, ring)), validate_extra=())
+    expect_error([write("m-spread.poly", poly_text([(0, 0), (1, 0), (1e-300, 1e-300), (0, 1)], []))],
+                 1, ["point 2", "exact arithmetic"], "a spread of 1e-300")
+    # Cells that give no segment, and points off one plane (.vtk input).
+    strips = legacy_vtk(out("m-strip.vtk"), [(0, 0, 0), (1, 0, 0), (0, 1, 0), (1, 1, 0)],
+                        "TRIANGLE_STRIPS", [(0, 1, 2, 3)])
+    matrix_row("triangle-strip", strips, warnings=["Ignored 1 input cell", "triangle strip"],
+               validate_extra=())
+    tilted = legacy_vtk(out("m-3d.vtk"), [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 1)],
+                        "LINES", [(0, 1, 2, 3, 0)])
+    expect_error([tilted], 1, ["not coplanar: point", "from their best-fitting plane",
+                               "ProjectToXYPlane"], "points off one plane")
+
+
+
 def main():
     global ARGS
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -550,7 +670,7 @@ def main():
     groups = {
         "help": group_help, "options": group_options, "formats": group_formats,
         "inputs": group_inputs, "errors": group_errors, "determinism": group_determinism,
-        "reference": group_reference, "realdata": group_realdata,
+        "reference": group_reference, "realdata": group_realdata, "matrix": group_matrix,
     }
     if ARGS.group not in groups:
         parser.error("unknown group " + ARGS.group)
