@@ -315,7 +315,10 @@ void Mesher::meshRounds(Work& w)
 
     t = Clock::now();
     run.phase("stitch", 0.6, 0.75);
-    const OverlayEdges ov = compactOverlay(overlay.mesh);
+    OverlayEdges ov = compactOverlay(overlay.mesh);
+    // From here on the compact copy serves: free the refinement's triangles
+    // (they count at the peak memory of large runs).
+    overlay.mesh.releaseTriangles();
     for (Segment& s : segments)
       s = { overlay.inputVertex[s[0]], overlay.inputVertex[s[1]] };
     Walk walk = walkSegments(ov, overlay, segments, sinTheta1, run);
@@ -351,6 +354,15 @@ void Mesher::meshRounds(Work& w)
     std::vector<Edge> edges;
     const PlanarGraph g = stitch(ov, overlay, walk, options.keepEdges ? &edges : nullptr, st);
     st.secondsStitch += since(t);
+    // The overlay is only output from here on: move it there, or free it.
+    if (options.keepOverlay)
+    {
+      res.overlay.vertices = std::move(overlay.mesh.points);
+      res.overlay.triangles = std::move(ov.tris);
+    }
+    overlay.mesh = Triangulation();
+    ov = OverlayEdges();
+    walk = Walk();
 
     t = Clock::now();
     run.phase("complete", 0.75, 0.9);
@@ -368,11 +380,6 @@ void Mesher::meshRounds(Work& w)
         "hole " +
         std::to_string(carve.unusedHoles.front()) + " at " +
         formatPoint(input.holes[carve.unusedHoles.front()]));
-    if (options.keepOverlay)
-    {
-      res.overlay.vertices = overlay.mesh.points;
-      res.overlay.triangles = ov.tris;
-    }
     buildOutput(w, g, c, carve, overlay, edges);
     return;
   }

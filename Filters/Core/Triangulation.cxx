@@ -35,6 +35,15 @@ int Triangulation::newTriangle(int a, int b, int c)
   return t;
 }
 
+void Triangulation::releaseTriangles()
+{
+  std::vector<int>().swap(tv);
+  std::vector<int>().swap(tn);
+  std::vector<int>().swap(vtri);
+  std::vector<int>().swap(freeSlots);
+  std::vector<std::uint32_t>().swap(mark);
+}
+
 void Triangulation::freeTriangle(int t)
 {
   tv[3 * t] = tv[3 * t + 1] = tv[3 * t + 2] = -1;

@@ -28,6 +28,8 @@ public:
   bool alive(int t) const { return tv[3 * t] >= 0; }
   int slots() const { return static_cast<int>(tv.size() / 3); }
   int liveTriangles() const { return slots() - static_cast<int>(freeSlots.size()); }
+  /// Drops every triangle and gives its memory back, keeping the points.
+  void releaseTriangles();
   const Point& vertex(int t, int i) const { return points[tv[3 * t + i]]; }
 
   /// Set the neighbour links of two triangles sharing the edge (a, b).
