@@ -60,7 +60,7 @@ private:
   bool isPoor(int t) const;
   void refineTriangle(int t);
   void splitHullEdge(int edge);
-  bool insertVertex(const Point& p, int start, int inputIndex);
+  bool insertVertex(const Point& p, int start, int inputIndex, bool cavityKnown = false);
   void distribute(int v, const std::vector<int>& fan);
   int findInFan(const Point& q, int v, const std::vector<int>& fan) const;
   void countSteiner();
@@ -254,7 +254,8 @@ void Refiner::refineTriangle(int t)
     return;
   }
   countSteiner();
-  if (!insertVertex(c, start, -1))
+  // The cavity of c is already known: reuse it rather than search it again.
+  if (!insertVertex(c, start, -1, true))
     ++out.refinementsSkipped;
 }
 
@@ -270,9 +271,9 @@ void Refiner::splitHullEdge(int edge)
     ++out.refinementsSkipped;
 }
 
-bool Refiner::insertVertex(const Point& p, int start, int inputIndex)
+bool Refiner::insertVertex(const Point& p, int start, int inputIndex, bool cavityKnown)
 {
-  if (!mesh.cavityOf(p, start, cavity))
+  if (!cavityKnown && !mesh.cavityOf(p, start, cavity))
     return false;
   // Collect the waiting points of the cavity; they move to the new triangles.
   waiting.clear();

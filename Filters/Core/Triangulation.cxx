@@ -178,12 +178,7 @@ bool Triangulation::insertIntoCavity(
     }
   }
   // Record the outside neighbours before the cavity slots are recycled.
-  struct NewTri
-  {
-    int a, b, outside;
-  };
-  std::vector<NewTri> fan;
-  fan.reserve(boundaryEdges.size());
+  fan.clear();
   for (int e : boundaryEdges)
   {
     const int t = e / 3, i = e % 3;
@@ -193,7 +188,7 @@ bool Triangulation::insertIntoCavity(
     freeTriangle(t);
   if (fanByVertex.size() < points.size())
     fanByVertex.resize(points.size(), -1);
-  for (const NewTri& f : fan)
+  for (const FanTriangle& f : fan)
   {
     const int t = newTriangle(f.a, f.b, v);
     created.push_back(t);
@@ -221,7 +216,7 @@ bool Triangulation::insertIntoCavity(
       tn[3 * u + 1] = t; // opposite b in u=(b, c, v): edge (v, b)
     }
   }
-  for (const NewTri& f : fan)
+  for (const FanTriangle& f : fan)
     fanByVertex[f.a] = -1;
   // Order the fan counter-clockwise around v (chain a -> b).
   if (created.size() > 2)
@@ -230,8 +225,7 @@ bool Triangulation::insertIntoCavity(
     for (int t : created)
       if (tn[3 * t + 1] < 0) // no predecessor: the fan is open here (v on the hull)
         first = t;
-    std::vector<int> ordered;
-    ordered.reserve(created.size());
+    ordered.clear();
     for (int t = first; t >= 0 && ordered.size() < created.size(); t = tn[3 * t])
       ordered.push_back(t);
     created.swap(ordered);

@@ -58,7 +58,13 @@ private:
   // Scratch state kept between calls so insertion allocates nothing.
   mutable std::vector<std::uint32_t> mark;
   mutable std::uint32_t markStamp = 0;
+  struct FanTriangle
+  {
+    int a, b, outside;
+  };
   std::vector<int> boundaryEdges;
+  std::vector<FanTriangle> fan;
+  std::vector<int> ordered;
   std::vector<int> fanByVertex;
 };
 

@@ -543,3 +543,43 @@ TEST(Mesher, SubnormalCoordinatesAreRefusedClearly)
   else
     EXPECT_NE(r.error.find("too close to zero"), std::string::npos) << r.error;
 }
+
+TEST(Mesher, AngleStatisticsAreExactlyThoseOfEveryAngle)
+{
+  // The statistics skip atan2 for angles that cannot be extreme; the figures
+  // must still be exactly the smallest and largest angleAt over all angles.
+  std::vector<std::pair<std::string, Pslg>> inputs{ { "wedge", wedgeInSquare() } };
+  for (double s : { 1e-150, 1.0, 1e300 })
+  {
+    Pslg p = wedgeInSquare();
+    for (Point& q : p.points)
+      q = { q.x * s, q.y * s };
+    inputs.push_back({ "scaled wedge " + std::to_string(s), p });
+  }
+  Pslg hub;
+  hub.points.push_back({ 0, 0 });
+  for (int i = 0; i < 500; ++i)
+  {
+    const double a = 2 * std::acos(-1.0) * i / 500.0;
+    hub.points.push_back({ std::cos(a), std::sin(a) });
+    hub.segments.push_back({ 0, i + 1 });
+  }
+  inputs.push_back({ "hub", hub });
+  for (const auto& [name, p] : inputs)
+  {
+    const Result r = meshAndValidate(p, name);
+    double lo = 180, hi = 0;
+    const double deg = 180.0 / std::acos(-1.0);
+    for (const Triangle& t : r.mesh.triangles)
+      for (int i = 0; i < 3; ++i)
+      {
+        const double a = deg *
+          angleAt(r.mesh.vertices[t[(i + 1) % 3]], r.mesh.vertices[t[i]],
+            r.mesh.vertices[t[(i + 2) % 3]]);
+        lo = std::min(lo, a);
+        hi = std::max(hi, a);
+      }
+    EXPECT_EQ(r.stats.minAngleDeg, lo) << name;
+    EXPECT_EQ(r.stats.maxAngleDeg, hi) << name;
+  }
+}
