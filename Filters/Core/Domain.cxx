@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 namespace osm
@@ -255,6 +256,64 @@ std::vector<int> convexHull(const std::vector<Point>& P)
   }
   hull.resize(k - 1);
   return hull;
+}
+
+std::vector<int> hullBoundary(const std::vector<Point>& P)
+{
+  const std::vector<int> hull = convexHull(P);
+  const int h = static_cast<int>(hull.size());
+  if (h < 3)
+    return hull;
+  // The hull runs counter-clockwise from its smallest point (x, then y): up to
+  // the largest point m along the lower chain, back along the upper one. So
+  // each other point lies, in that order, within one lower and one upper edge.
+  const auto less = [&](int a, int b) { return P[a] < P[b]; };
+  const int m = static_cast<int>(std::max_element(hull.begin(), hull.end(), less) - hull.begin());
+  const std::vector<int> lower(hull.begin(), hull.begin() + m + 1);
+  std::vector<int> upper{ hull[0] }; // the upper chain reversed: increasing too
+  for (int k = h - 1; k >= m; --k)
+    upper.push_back(hull[k]);
+  std::vector<char> onHull(P.size(), 0);
+  for (int v : hull)
+    onHull[v] = 1;
+  // near[k]: points within rounding of hull edge k (from hull[k] to hull[k+1]).
+  std::vector<std::vector<int>> near(h);
+  // The hull edge index near which point p lies within rounding, or -1.
+  const auto nearEdge = [&](const std::vector<int>& chain, int p, bool isLower) {
+    const auto it = std::upper_bound(chain.begin(), chain.end(), p, less);
+    if (it == chain.begin() || it == chain.end())
+      return -1;
+    const int i = static_cast<int>(it - chain.begin()) - 1;
+    const Point &a = P[chain[i]], &b = P[chain[i + 1]], &x = P[p];
+    const double length = std::hypot(b.x - a.x, b.y - a.y);
+    const double scale = std::max(std::fabs(x.x), std::fabs(x.y)) + length;
+    const double tolerance = 8 * std::numeric_limits<double>::epsilon() * scale;
+    if (std::fabs(orient2d(a, b, x)) > tolerance * length)
+      return -1;
+    return isLower ? i : h - 1 - i;
+  };
+  for (int p = 0; p < static_cast<int>(P.size()); ++p)
+  {
+    if (onHull[p])
+      continue;
+    const int lo = nearEdge(lower, p, true), up = nearEdge(upper, p, false);
+    if (lo >= 0 && up < 0)
+      near[lo].push_back(p);
+    else if (up >= 0 && lo < 0)
+      near[up].push_back(p);
+    // Near both chains: a hull without area, where the box domain serves.
+  }
+  std::vector<int> boundary;
+  for (int k = 0; k < h; ++k)
+  {
+    boundary.push_back(hull[k]);
+    std::vector<int>& extra = near[k];
+    std::sort(extra.begin(), extra.end(), less); // along the edge
+    if (k >= m)
+      std::reverse(extra.begin(), extra.end());
+    boundary.insert(boundary.end(), extra.begin(), extra.end());
+  }
+  return boundary;
 }
 
 bool segmentsEncloseRegion(std::size_t pointCount, const std::vector<Segment>& segments)

@@ -26,6 +26,12 @@ Carving carveDomain(const std::vector<Point>& points, const std::vector<Triangle
 /// Convex hull of the points, counter-clockwise, without collinear vertices.
 std::vector<int> convexHull(const std::vector<Point>& points);
 
+/// The convex hull as the boundary of the hull domain: with, in order, every
+/// point that lies on a hull edge within rounding. The hull segments must pass
+/// through such points: missing one by an ulp would leave the hull segment
+/// and the segments at that point closer than double precision separates.
+std::vector<int> hullBoundary(const std::vector<Point>& points);
+
 /// True if the segments contain a cycle (so they enclose some region).
 bool segmentsEncloseRegion(std::size_t pointCount, const std::vector<Segment>& segments);
 

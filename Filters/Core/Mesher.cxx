@@ -300,7 +300,7 @@ void Mesher::meshRounds(Work& w)
     const Domain domain = chooseDomain(w, false);
     if (domain == Domain::Hull)
     {
-      const std::vector<int> hull = convexHull(w.points);
+      const std::vector<int> hull = hullBoundary(w.points);
       for (std::size_t i = 0; hull.size() >= 2 && i < hull.size(); ++i)
         segments.push_back({ hull[i], hull[(i + 1) % hull.size()] });
     }
