@@ -6,16 +6,18 @@
 // shortest edge > Γ, or an edge longer than the size bound) or crowded (its
 // bucket is not empty). Refining inserts the circumcenter, unless an
 // uninserted input point lies within kYield·r of it: then that point is
-// inserted instead. Larger triangles are refined first, so the mesh stays a
-// well-graded quality Delaunay mesh throughout, which bounds the work.
+// inserted instead. Larger triangles are refined first (by size class, within
+// a factor of 2 in circumradius: SizeQueue.h), so the mesh stays a well-graded
+// quality Delaunay mesh throughout, which bounds the work.
 #include "Overlay.h"
 
 #include "Predicates.h"
+#include "SizeQueue.h"
+#include "SpatialSort.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <queue>
 #include <string>
 
 namespace osm
@@ -49,10 +51,8 @@ public:
 private:
   struct Item
   {
-    double key;
     int tri;
     std::uint32_t gen;
-    bool operator<(const Item& o) const { return key < o.key || (key == o.key && tri > o.tri); }
   };
 
   void makeBox();
@@ -76,7 +76,7 @@ private:
   std::vector<int> bucketHead;    ///< per triangle slot: first waiting input point
   std::vector<int> bucketNext;    ///< per input point: next in its bucket
   std::vector<std::uint32_t> gen; ///< per triangle slot: bumped on every reuse
-  std::priority_queue<Item> queue;
+  SizeQueue<Item> queue;
   std::size_t inserted = 0;
   std::size_t hardCap = 0;
   // Scratch.
@@ -141,7 +141,7 @@ void Refiner::enqueueIfNeeded(int t)
     return;
   const Point& a = mesh.vertex(t, 0);
   const Point c = circumcenter(a, mesh.vertex(t, 1), mesh.vertex(t, 2));
-  queue.push({ dist2(a, c), t, gen[t] });
+  queue.push(dist2(a, c), { t, gen[t] });
 }
 
 Overlay Refiner::refine()
@@ -155,8 +155,7 @@ Overlay Refiner::refine()
   enqueueIfNeeded(1);
   while (!queue.empty())
   {
-    const Item item = queue.top();
-    queue.pop();
+    const Item item = queue.pop();
     if (!mesh.alive(item.tri) || gen[item.tri] != item.gen)
       continue;
     if (bucketHead[item.tri] < 0 && !isPoor(item.tri))
@@ -171,6 +170,7 @@ Overlay Refiner::refine()
   for (std::size_t i = 0; i < input.size(); ++i)
     if (out.inputVertex[i] < 0)
       throw Stop{ "internal error: input point " + std::to_string(i) + " was not inserted" };
+  renumberAlongHilbertCurve(out);
   return std::move(out);
 }
 
@@ -343,6 +343,39 @@ void Refiner::distribute(int v, const std::vector<int>& fan)
 }
 
 } // namespace
+
+void renumberAlongHilbertCurve(Overlay& overlay)
+{
+  Triangulation& mesh = overlay.mesh;
+  const int n = static_cast<int>(mesh.points.size());
+  if (n <= 4)
+    return;
+  // The box corners stay 0..3; the others follow the curve.
+  const std::vector<Point> inner(mesh.points.begin() + 4, mesh.points.end());
+  const std::vector<int> order = hilbertOrder(inner);
+  std::vector<int> newIndex(n);
+  for (int v = 0; v < 4; ++v)
+    newIndex[v] = v;
+  for (int k = 0; k < n - 4; ++k)
+    newIndex[order[k] + 4] = k + 4;
+  std::vector<Point> points(n);
+  std::vector<int> vtri(n);
+  std::vector<char> isInput(n);
+  for (int v = 0; v < n; ++v)
+  {
+    points[newIndex[v]] = mesh.points[v];
+    vtri[newIndex[v]] = mesh.vtri[v];
+    isInput[newIndex[v]] = overlay.isInput[v];
+  }
+  mesh.points.swap(points);
+  mesh.vtri.swap(vtri);
+  overlay.isInput.swap(isInput);
+  for (int& v : mesh.tv)
+    if (v >= 0)
+      v = newIndex[v];
+  for (int& v : overlay.inputVertex)
+    v = newIndex[v];
+}
 
 Overlay buildOverlay(
   const std::vector<Point>& points, const OverlayOptions& options, RunContext& run)

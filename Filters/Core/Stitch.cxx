@@ -13,14 +13,27 @@ namespace osm
 OverlayEdges compactOverlay(const Triangulation& mesh)
 {
   OverlayEdges ov;
+  // Triangles in the order of their smallest vertex (a counting sort): with
+  // vertices in spatial order, neighbours in the mesh are near in memory.
+  const auto lowest = [&](int t) {
+    return std::min({ mesh.tv[3 * t], mesh.tv[3 * t + 1], mesh.tv[3 * t + 2] });
+  };
+  std::vector<int> start(mesh.points.size() + 1, 0);
+  for (int t = 0; t < mesh.slots(); ++t)
+    if (mesh.alive(t))
+      ++start[lowest(t) + 1];
+  for (std::size_t v = 0; v + 1 < start.size(); ++v)
+    start[v + 1] += start[v];
   std::vector<int> index(mesh.slots(), -1);
+  ov.tris.resize(start.back());
   for (int t = 0; t < mesh.slots(); ++t)
   {
     if (!mesh.alive(t))
       continue;
-    index[t] = static_cast<int>(ov.tris.size());
-    ov.tris.push_back({ mesh.tv[3 * t], mesh.tv[3 * t + 1], mesh.tv[3 * t + 2] });
+    index[t] = start[lowest(t)]++;
+    ov.tris[index[t]] = { mesh.tv[3 * t], mesh.tv[3 * t + 1], mesh.tv[3 * t + 2] };
   }
+  std::vector<int>().swap(start);
   ov.nbr.resize(ov.tris.size());
   ov.triEdge.resize(ov.tris.size());
   ov.vtri.assign(mesh.points.size(), -1);

@@ -2,7 +2,13 @@
 // determinism, caps and abort. The validator is the oracle throughout.
 #include "MeshTestUtils.h"
 
+#include "Domain.h"
+#include "Predicates.h"
+
+#include <algorithm>
+
 #include <cmath>
+#include <cstdio>
 
 using namespace osm;
 
@@ -466,7 +472,12 @@ TEST(Overlay, FeaturesBelowTheCoordinateResolutionAreRefused)
   const Result r = mesh(p);
   EXPECT_FALSE(r.ok);
   EXPECT_NE(r.error.find("double precision resolves"), std::string::npos) << r.error;
-  EXPECT_NE(r.error.find("near (7"), std::string::npos) << r.error;
+  // Named where it happens: at the two points, whichever refinement reached it.
+  const std::size_t at = r.error.find("near (");
+  ASSERT_NE(at, std::string::npos) << r.error;
+  double x = 0, y = 0;
+  ASSERT_EQ(std::sscanf(r.error.c_str() + at, "near (%lf, %lf)", &x, &y), 2) << r.error;
+  EXPECT_LT(std::hypot(x - 7, y), 1e-9) << r.error;
 }
 
 TEST(Domain, AutoSeesRegionsClosedByCrossings)
@@ -582,4 +593,31 @@ TEST(Mesher, AngleStatisticsAreExactlyThoseOfEveryAngle)
     EXPECT_EQ(r.stats.minAngleDeg, lo) << name;
     EXPECT_EQ(r.stats.maxAngleDeg, hi) << name;
   }
+}
+
+TEST(Domain, HullBoundaryPassesThroughPointsWithinRounding)
+{
+  // A fan's hub lies within an ulp of the line from its opposite spoke's end
+  // to its first spoke's end (found by the fan property test): the hull edge
+  // must go through the hub, or it runs beside two spokes closer than double
+  // precision separates.
+  const Point far{ -0.96770365525760738, 0.25209053056603647 };
+  const Point hub{ 0, 0 };
+  const Point end{ 0.28443851420075916, -0.074097328834824644 };
+  const std::vector<Point> P{ hub, end, far, { 0, 1 }, { -0.05, 0.2 } };
+  ASSERT_GT(orient2d(far, end, hub), 0.0) << "the hub should be inside, by rounding";
+  EXPECT_EQ(convexHull(P).size(), 3u);
+  const std::vector<int> boundary = hullBoundary(P);
+  ASSERT_EQ(boundary.size(), 4u);
+  // Counter-clockwise: the hub between the far end and the first spoke's end.
+  const auto at = [&](int v) {
+    return static_cast<int>(std::find(boundary.begin(), boundary.end(), v) - boundary.begin());
+  };
+  EXPECT_EQ((at(2) + 1) % 4, at(0));
+  EXPECT_EQ((at(0) + 1) % 4, at(1));
+  EXPECT_EQ(at(4), 4) << "a point well inside stays off the boundary";
+  // Points exactly on hull edges are on the boundary too, in order.
+  const std::vector<Point> square{ { 0, 0 }, { 2, 0 }, { 2, 2 }, { 0, 2 }, { 1, 0 }, { 1, 1 },
+    { 0.5, 0 } };
+  EXPECT_EQ(hullBoundary(square), (std::vector<int>{ 0, 6, 4, 1, 2, 3 }));
 }

@@ -1,0 +1,68 @@
+// The refinement queue of Sparse Voronoi Refinement: larger triangles first.
+//
+// SVR needs triangles refined in order of size only up to a constant factor,
+// so items are kept in buckets by size class, a factor of 2 in circumradius
+// (two binary exponents of r^2). Within a bucket the newest item comes
+// first: the triangles just created are refined next, where the mesh is
+// already in cache. Push and pop are O(1) amortised, where an exact heap costs
+// O(log n) cache misses per operation on millions of triangles.
+#ifndef osm_SizeQueue_h
+#define osm_SizeQueue_h
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+namespace osm
+{
+
+template <typename T>
+class SizeQueue
+{
+public:
+  bool empty() const { return size == 0; }
+
+  /// key: the squared circumradius (positive, finite or not).
+  void push(double key, const T& item)
+  {
+    const int b = bucketOf(key);
+    buckets[b].push_back(item);
+    top = std::max(top, b);
+    ++size;
+  }
+
+  /// An item of the largest nonempty size class. Precondition: !empty().
+  T pop()
+  {
+    while (buckets[top].empty())
+      --top;
+    const T item = buckets[top].back();
+    buckets[top].pop_back();
+    --size;
+    return item;
+  }
+
+private:
+  // Exponents of doubles run from -1074 (subnormals) to 1023; 0 and NaN go to
+  // the smallest bucket, infinity to the largest.
+  static constexpr int kMinExponent = -1080;
+  static constexpr int kBuckets = (1024 - kMinExponent) / 2 + 2;
+
+  static int bucketOf(double key)
+  {
+    if (!(key > 0))
+      return 0;
+    if (std::isinf(key))
+      return kBuckets - 1;
+    return (std::ilogb(key) - kMinExponent) / 2;
+  }
+
+  std::vector<std::vector<T>> buckets = std::vector<std::vector<T>>(kBuckets);
+  int top = 0;
+  std::size_t size = 0;
+};
+
+} // namespace osm
+
+#endif

@@ -1,0 +1,71 @@
+// The SVR refinement queue: larger size classes first, newest first within a
+// class, every item popped exactly once, extreme keys handled.
+#include "SizeQueue.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+using namespace osm;
+
+TEST(SizeQueue, PopsLargerClassesFirstAndNewestFirstWithinAClass)
+{
+  SizeQueue<int> q;
+  EXPECT_TRUE(q.empty());
+  q.push(1.0, 1);  // class of r^2 in [1, 4)
+  q.push(3.0, 2);  // same class
+  q.push(16.0, 3); // a larger class
+  q.push(0.5, 4);  // a smaller class
+  EXPECT_EQ(q.pop(), 3);
+  EXPECT_EQ(q.pop(), 2); // newest of its class
+  EXPECT_EQ(q.pop(), 1);
+  q.push(100.0, 5); // pushing a larger class after pops still comes first
+  EXPECT_EQ(q.pop(), 5);
+  EXPECT_EQ(q.pop(), 4);
+  EXPECT_TRUE(q.empty());
+}
+
+TEST(SizeQueue, OrdersWithinAFactorOfTwoInRadiusAndLosesNothing)
+{
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> exponent(-300, 300);
+  SizeQueue<int> q;
+  std::vector<double> keys;
+  for (int i = 0; i < 5000; ++i)
+  {
+    keys.push_back(std::pow(10.0, exponent(rng)));
+    q.push(keys.back(), i);
+  }
+  std::vector<char> seen(keys.size(), 0);
+  double smallest = std::numeric_limits<double>::infinity();
+  while (!q.empty())
+  {
+    const int i = q.pop();
+    ASSERT_FALSE(seen[i]) << "popped twice: " << i;
+    seen[i] = 1;
+    // No later key may be more than a size class (4 in r^2) above an earlier one.
+    EXPECT_LE(keys[i], 4 * smallest) << i;
+    smallest = std::min(smallest, keys[i]);
+  }
+  for (char s : seen)
+    EXPECT_TRUE(s);
+}
+
+TEST(SizeQueue, ExtremeKeys)
+{
+  SizeQueue<int> q;
+  q.push(std::numeric_limits<double>::quiet_NaN(), 1);
+  q.push(0.0, 2);
+  q.push(std::numeric_limits<double>::denorm_min(), 3);
+  q.push(std::numeric_limits<double>::max(), 4);
+  q.push(std::numeric_limits<double>::infinity(), 5);
+  EXPECT_EQ(q.pop(), 5);
+  EXPECT_EQ(q.pop(), 4);
+  EXPECT_EQ(q.pop(), 3);
+  EXPECT_EQ(q.pop(), 2); // NaN and 0 share the smallest class, newest first
+  EXPECT_EQ(q.pop(), 1);
+  EXPECT_TRUE(q.empty());
+}
