@@ -52,6 +52,11 @@
 namespace
 {
 
+// zlib level 1 writes a mesh in about half the time of VTK's default level 5,
+// for files about 2% larger (aust.poly's 1.3 million triangles: 4.7 s -> 2.4 s,
+// 49.9 -> 50.8 MB); LZ4 is faster still but 40% larger and less widely read.
+constexpr int kZLibLevel = 1;
+
 const char* const Usage =
   R"(Usage: osm-mesh INPUT [-o OUTPUT] [--domain auto|enclosed|hull|box]
                 [--min-angle DEG | --gamma G] [--max-edge H] [--no-resolve]
@@ -66,8 +71,9 @@ INPUT                  Triangle .poly (holes honoured) or .node file, or
                        .vtp / .vtk polydata (lines and polylines are
                        segments, polygons give their edges, every point kept)
   -o, --output FILE    write the mesh, in the format of FILE's extension:
-                       .vtp, .vtu, .vtk (VTK), or .node (Triangle: FILE.node,
-                       .ele and .edge side by side, 1-based)
+                       .vtp, .vtu (VTK XML, zlib level 1), .vtk (legacy VTK),
+                       or .node (Triangle: FILE.node, .ele and .edge side by
+                       side, 1-based)
   --domain MODE        auto (default: enclosed if segments enclose a region,
                        else hull), enclosed, hull or box
   --min-angle DEG      theta1, the overlay's smallest angle: 1 to 35 (default 30)
@@ -683,6 +689,7 @@ void WriteMesh(
     vtkNew<vtkXMLPolyDataWriter> writer;
     writer->SetInputData(clean);
     writer->SetFileName(path.c_str());
+    writer->SetCompressionLevel(kZLibLevel);
     ok = writer->Write();
   }
   else if (ext == ".vtu")
@@ -690,6 +697,7 @@ void WriteMesh(
     vtkNew<vtkXMLUnstructuredGridWriter> writer;
     writer->SetInputData(ToUnstructuredGrid(clean));
     writer->SetFileName(path.c_str());
+    writer->SetCompressionLevel(kZLibLevel);
     ok = writer->Write();
   }
   else

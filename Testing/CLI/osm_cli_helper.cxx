@@ -21,7 +21,7 @@
 //   osm_cli_helper reference INPUT OUTPUT.vtp [--domain N] [--min-angle A]
 //     The C++ pipeline osm-mesh is meant to be: vtkTrianglePolyReader (or
 //     VTK's readers) -> vtkOverlayStitchMesher (Edges on, Overlay off) ->
-//     vtkXMLPolyDataWriter, timings left out of the field data.
+//     vtkXMLPolyDataWriter (zlib level 1), timings left out of the field data.
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
@@ -401,6 +401,7 @@ int Reference(int argc, char* argv[])
   vtkNew<vtkXMLPolyDataWriter> writer;
   writer->SetInputData(mesh);
   writer->SetFileName(argv[3]);
+  writer->SetCompressionLevel(1); // as osm-mesh writes
   return writer->Write() && mesh->GetNumberOfPolys() > 0 ? 0 : 1;
 }
 

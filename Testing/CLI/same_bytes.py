@@ -9,7 +9,7 @@ For each input, osm-mesh writes a .vtp; the same input is read and meshed
 with paraview.simple (TrianglePolyReader or OpenDataFile, OverlayStitchMesher
 with its defaults), the Mesh output is fetched, its timings (field data
 Seconds*, which osm-mesh leaves out of files) are dropped, and it is written
-with vtkXMLPolyDataWriter's defaults, as osm-mesh does. The two files must be
+with vtkXMLPolyDataWriter's defaults and zlib level 1, as osm-mesh does. The two files must be
 identical. Under MPI the mesher gathers the pieces on rank 0: the bytes must
 still be the serial ones (once ParaView's delivery to the client has had its
 array order put back, see below).
@@ -78,6 +78,7 @@ for name in ("square_hole.poly", "crossing.poly", "wedge.vtk"):
     writer = vtkXMLPolyDataWriter()
     writer.SetInputData(mesh)
     writer.SetFileName(pv_file)
+    writer.SetCompressionLevel(1)  # osm-mesh's zlib level
     writer.Write()
 
     with open(cli_file, "rb") as a, open(pv_file, "rb") as b:
