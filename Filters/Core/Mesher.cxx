@@ -206,7 +206,7 @@ public:
 
 private:
   void meshRounds(Work& w);
-  Domain chooseDomain(const Work& w, bool warn);
+  Domain chooseDomain(const Work& w, std::vector<int>& hull);
   void buildOutput(const Work& w, const PlanarGraph& g, const Completion& c, const Carving& carve,
     const Overlay& overlay, std::vector<Edge>& edges);
 
@@ -272,18 +272,21 @@ Result Mesher::execute()
 
 /// Auto means the enclosed regions if the segments enclose any (decided on the
 /// segments as split at their crossings), else the hull; a hull without area
-/// falls back to the box.
-Domain Mesher::chooseDomain(const Work& w, bool warn)
+/// falls back to the box. For the hull domain, hull receives its boundary.
+Domain Mesher::chooseDomain(const Work& w, std::vector<int>& hull)
 {
+  hull.clear();
   Domain domain = options.domain;
   if (domain == Domain::Auto)
     domain = segmentsEncloseRegion(w.points.size(), w.segments) ? Domain::Enclosed : Domain::Hull;
-  if (domain == Domain::Hull && convexHull(w.points).size() < 3)
+  if (domain == Domain::Hull)
   {
-    if (warn)
-      res.warnings.push_back("the input points are collinear, so their convex hull has no area: "
-                             "meshing the padded bounding box instead");
-    domain = Domain::Box;
+    hull = hullBoundary(w.points);
+    if (hull.size() < 3)
+    {
+      hull.clear();
+      domain = Domain::Box;
+    }
   }
   return domain;
 }
@@ -297,13 +300,10 @@ void Mesher::meshRounds(Work& w)
   for (int round = 0;; ++round)
   {
     std::vector<Segment> segments = w.segments;
-    const Domain domain = chooseDomain(w, false);
-    if (domain == Domain::Hull)
-    {
-      const std::vector<int> hull = hullBoundary(w.points);
-      for (std::size_t i = 0; hull.size() >= 2 && i < hull.size(); ++i)
-        segments.push_back({ hull[i], hull[(i + 1) % hull.size()] });
-    }
+    std::vector<int> hull;
+    const Domain domain = chooseDomain(w, hull);
+    for (std::size_t i = 0; i < hull.size(); ++i)
+      segments.push_back({ hull[i], hull[(i + 1) % hull.size()] });
     auto t = Clock::now();
     run.phase("overlay", 0.02, 0.6);
     OverlayOptions oo;
@@ -336,7 +336,10 @@ void Mesher::meshRounds(Work& w)
       mergeEqualPoints(w);
       continue;
     }
-    chooseDomain(w, true); // now say why the domain changed, once
+    // Say why the domain changed, once.
+    if (domain == Domain::Box && options.domain != Domain::Box)
+      res.warnings.push_back("the input points are collinear, so their convex hull has no area: "
+                             "meshing the padded bounding box instead");
     if (st.crossingsSplit > 0)
       res.warnings.push_back("split " + std::to_string(st.crossingsSplit) +
         " crossing(s) of input segments at their intersection points, e.g. " + firstCrossing);
