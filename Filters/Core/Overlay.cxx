@@ -156,9 +156,10 @@ Overlay Refiner::refine()
   while (!queue.empty())
   {
     const Item item = queue.pop();
+    // A triangle of the same generation is unchanged since it was queued
+    // (refining empties a bucket only by destroying its triangle), so it is
+    // still poor or crowded: no need to test it again.
     if (!mesh.alive(item.tri) || gen[item.tri] != item.gen)
-      continue;
-    if (bucketHead[item.tri] < 0 && !isPoor(item.tri))
       continue;
     const std::size_t before = mesh.points.size();
     refineTriangle(item.tri);
