@@ -38,15 +38,15 @@ constexpr double kYield = 0.5;
 class Refiner
 {
 public:
-  Refiner(const std::vector<Point>& input, const OverlayOptions& options, RunContext& run)
-    : input(input)
+  Refiner(const std::vector<Point>& points, const OverlayOptions& options, RunContext& run)
+    : original(hilbertOrder(points))
     , run(run)
     , gamma2(options.gamma * options.gamma * (1.0 + 1e-12))
     , maxEdge2(options.maxEdgeLength * options.maxEdgeLength)
     , steinerCap(options.maxSteinerPoints)
   {}
 
-  Overlay refine();
+  Overlay refine(const std::vector<Point>& points);
 
 private:
   struct Item
@@ -65,7 +65,11 @@ private:
   int findInFan(const Point& q, int v, const std::vector<int>& fan) const;
   void countSteiner();
 
-  const std::vector<Point>& input;
+  // The input points in Hilbert order: the buckets of a triangle then hold
+  // points that are near in memory too. original[i] is input point i's index
+  // in the caller's order, which every choice and message uses.
+  const std::vector<int> original;
+  std::vector<Point> input;
   RunContext& run;
   const double gamma2;
   const double maxEdge2;
@@ -104,7 +108,7 @@ void Refiner::makeBox()
   gen.assign(2, 1);
   bucketHead.assign(2, -1);
   bucketNext.assign(input.size(), -1);
-  // Walk in reverse so buckets list points in input order.
+  // Walk in reverse so buckets list points in (Hilbert) index order.
   for (int i = static_cast<int>(input.size()) - 1; i >= 0; --i)
   {
     const int t = orient2d(mesh.points[c0], mesh.points[c2], input[i]) <= 0 ? t0 : t1;
@@ -144,8 +148,11 @@ void Refiner::enqueueIfNeeded(int t)
   queue.push(dist2(a, c), { t, gen[t] });
 }
 
-Overlay Refiner::refine()
+Overlay Refiner::refine(const std::vector<Point>& points)
 {
+  input.reserve(points.size());
+  for (int i : original)
+    input.push_back(points[i]);
   makeBox();
   out.inputVertex.assign(input.size(), -1);
   // Overlay size is O(n log(L/s)); doubles bound log(L/s), so this cap only
@@ -240,7 +247,7 @@ void Refiner::refineTriangle(int t)
     for (int i = bucketHead[u]; i >= 0; i = bucketNext[i])
     {
       const double d2 = dist2(input[i], c);
-      if (d2 < bestD2 || (d2 == bestD2 && (best < 0 || i < best)))
+      if (d2 < bestD2 || (d2 == bestD2 && (best < 0 || original[i] < original[best])))
       {
         best = i;
         bestTri = u;
@@ -297,7 +304,7 @@ bool Refiner::insertVertex(const Point& p, int start, int inputIndex, bool cavit
   out.isInput.push_back(inputIndex >= 0 ? 1 : 0);
   if (inputIndex >= 0)
   {
-    out.inputVertex[inputIndex] = v;
+    out.inputVertex[original[inputIndex]] = v;
     ++inserted;
   }
   if (gen.size() < static_cast<std::size_t>(mesh.slots()))
@@ -337,7 +344,8 @@ void Refiner::distribute(int v, const std::vector<int>& fan)
     const int i = *it;
     int u = findInFan(input[i], v, fan);
     if (u < 0)
-      throw Stop{ "internal error: lost input point " + std::to_string(i) + " during refinement" };
+      throw Stop{ "internal error: lost input point " + std::to_string(original[i]) +
+        " during refinement" };
     bucketNext[i] = bucketHead[u];
     bucketHead[u] = i;
   }
@@ -384,7 +392,7 @@ Overlay buildOverlay(
   if (points.empty())
     return {};
   Refiner refiner(points, options, run);
-  return refiner.refine();
+  return refiner.refine(points);
 }
 
 } // namespace osm
