@@ -84,6 +84,45 @@ TEST(Triangulation, HilbertOrderIsAPermutation)
   EXPECT_LT(total / (order.size() - 1), 0.1);
 }
 
+TEST(Triangulation, HilbertOrderIsACurveAndKeepsTiesInInputOrder)
+{
+  // A 256 x 256 grid on every 256th cell of the 2^16 grid (the corner point
+  // makes the bounds exactly 65535): a Hilbert curve steps to a neighbour.
+  std::vector<Point> pts;
+  for (int i = 0; i < 256; ++i)
+    for (int j = 0; j < 256; ++j)
+      pts.push_back({ 256.0 * i, 256.0 * j });
+  pts.push_back({ 65535, 65535 });
+  const std::vector<int> order = hilbertOrder(pts);
+  ASSERT_EQ(order.size(), pts.size());
+  std::vector<int> grid; // the order without the corner point
+  for (int i : order)
+    if (i != 65536)
+      grid.push_back(i);
+  ASSERT_EQ(grid.size(), 65536u);
+  EXPECT_EQ(pts[grid.front()], (Point{ 0, 0 }));
+  EXPECT_EQ(pts[grid.back()], (Point{ 65280, 0 })); // the curve ends at the other bottom corner
+  int steps = 0;
+  for (std::size_t k = 1; k < grid.size(); ++k)
+  {
+    const Point &a = pts[grid[k - 1]], &b = pts[grid[k]];
+    steps += std::fabs(a.x - b.x) + std::fabs(a.y - b.y) == 256.0;
+  }
+  EXPECT_EQ(steps, 65535);
+  // Equal points (one cell) stay in input order, whatever the number of points
+  // (the radix sort changes its digit size at 65,536).
+  for (std::size_t n : { std::size_t(10), std::size_t(70000) })
+  {
+    std::vector<Point> same(n, Point{ 0.5, 0.5 });
+    same.push_back({ 0, 0 });
+    same.push_back({ 1, 1 });
+    const std::vector<int> o = hilbertOrder(same);
+    EXPECT_EQ(o.front(), static_cast<int>(n));
+    for (std::size_t k = 1; k < n; ++k)
+      ASSERT_LT(o[k], o[k + 1]) << n;
+  }
+}
+
 TEST(Overlay, IsADelaunayQualityMeshOfThePoints)
 {
   for (double angle : { 20.0, 25.0, 30.0 })
