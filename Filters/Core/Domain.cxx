@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 #include <numeric>
 
 namespace osm
@@ -284,11 +283,8 @@ std::vector<int> hullBoundary(const std::vector<Point>& P)
     if (it == chain.begin() || it == chain.end())
       return -1;
     const int i = static_cast<int>(it - chain.begin()) - 1;
-    const Point &a = P[chain[i]], &b = P[chain[i + 1]], &x = P[p];
-    const double length = std::hypot(b.x - a.x, b.y - a.y);
-    const double scale = std::max(std::fabs(x.x), std::fabs(x.y)) + length;
-    const double tolerance = 8 * std::numeric_limits<double>::epsilon() * scale;
-    if (std::fabs(orient2d(a, b, x)) > tolerance * length)
+    const Point &a = P[chain[i]], &b = P[chain[i + 1]];
+    if (!onLineWithinRounding(a, b, P[p], std::hypot(b.x - a.x, b.y - a.y)))
       return -1;
     return isLower ? i : h - 1 - i;
   };

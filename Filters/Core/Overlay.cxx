@@ -35,18 +35,64 @@ namespace
 /// Fraction of the circumradius within which an input point is preferred.
 constexpr double kYield = 0.5;
 
+std::vector<Point> permuted(const std::vector<Point>& points, const std::vector<int>& order)
+{
+  std::vector<Point> out;
+  out.reserve(order.size());
+  for (int i : order)
+    out.push_back(points[i]);
+  return out;
+}
+
+/// Renumber the vertices after the box corners along a Hilbert curve, so that
+/// the later phases, which visit vertices and triangles by index, touch memory
+/// in spatial order (refinement creates them in a scattered order).
+void renumberAlongHilbertCurve(Overlay& overlay)
+{
+  Triangulation& mesh = overlay.mesh;
+  const int n = static_cast<int>(mesh.points.size());
+  if (n <= 4)
+    return;
+  // The box corners stay 0..3; the others follow the curve.
+  const std::vector<Point> inner(mesh.points.begin() + 4, mesh.points.end());
+  const std::vector<int> order = hilbertOrder(inner);
+  std::vector<int> newIndex(n);
+  for (int v = 0; v < 4; ++v)
+    newIndex[v] = v;
+  for (int k = 0; k < n - 4; ++k)
+    newIndex[order[k] + 4] = k + 4;
+  std::vector<Point> points(n);
+  std::vector<int> vtri(n);
+  std::vector<char> isInput(n);
+  for (int v = 0; v < n; ++v)
+  {
+    points[newIndex[v]] = mesh.points[v];
+    vtri[newIndex[v]] = mesh.vtri[v];
+    isInput[newIndex[v]] = overlay.isInput[v];
+  }
+  mesh.points.swap(points);
+  mesh.vtri.swap(vtri);
+  overlay.isInput.swap(isInput);
+  for (int& v : mesh.tv)
+    if (v >= 0)
+      v = newIndex[v];
+  for (int& v : overlay.inputVertex)
+    v = newIndex[v];
+}
+
 class Refiner
 {
 public:
   Refiner(const std::vector<Point>& points, const OverlayOptions& options, RunContext& run)
     : original(hilbertOrder(points))
+    , input(permuted(points, original))
     , run(run)
     , gamma2(options.gamma * options.gamma * (1.0 + 1e-12))
     , maxEdge2(options.maxEdgeLength * options.maxEdgeLength)
     , steinerCap(options.maxSteinerPoints)
   {}
 
-  Overlay refine(const std::vector<Point>& points);
+  Overlay refine();
 
 private:
   struct Item
@@ -69,7 +115,7 @@ private:
   // points that are near in memory too. original[i] is input point i's index
   // in the caller's order, which every choice and message uses.
   const std::vector<int> original;
-  std::vector<Point> input;
+  const std::vector<Point> input;
   RunContext& run;
   const double gamma2;
   const double maxEdge2;
@@ -148,11 +194,8 @@ void Refiner::enqueueIfNeeded(int t)
   queue.push(dist2(a, c), { t, gen[t] });
 }
 
-Overlay Refiner::refine(const std::vector<Point>& points)
+Overlay Refiner::refine()
 {
-  input.reserve(points.size());
-  for (int i : original)
-    input.push_back(points[i]);
   makeBox();
   out.inputVertex.assign(input.size(), -1);
   // Overlay size is O(n log(L/s)); doubles bound log(L/s), so this cap only
@@ -353,46 +396,13 @@ void Refiner::distribute(int v, const std::vector<int>& fan)
 
 } // namespace
 
-void renumberAlongHilbertCurve(Overlay& overlay)
-{
-  Triangulation& mesh = overlay.mesh;
-  const int n = static_cast<int>(mesh.points.size());
-  if (n <= 4)
-    return;
-  // The box corners stay 0..3; the others follow the curve.
-  const std::vector<Point> inner(mesh.points.begin() + 4, mesh.points.end());
-  const std::vector<int> order = hilbertOrder(inner);
-  std::vector<int> newIndex(n);
-  for (int v = 0; v < 4; ++v)
-    newIndex[v] = v;
-  for (int k = 0; k < n - 4; ++k)
-    newIndex[order[k] + 4] = k + 4;
-  std::vector<Point> points(n);
-  std::vector<int> vtri(n);
-  std::vector<char> isInput(n);
-  for (int v = 0; v < n; ++v)
-  {
-    points[newIndex[v]] = mesh.points[v];
-    vtri[newIndex[v]] = mesh.vtri[v];
-    isInput[newIndex[v]] = overlay.isInput[v];
-  }
-  mesh.points.swap(points);
-  mesh.vtri.swap(vtri);
-  overlay.isInput.swap(isInput);
-  for (int& v : mesh.tv)
-    if (v >= 0)
-      v = newIndex[v];
-  for (int& v : overlay.inputVertex)
-    v = newIndex[v];
-}
-
 Overlay buildOverlay(
   const std::vector<Point>& points, const OverlayOptions& options, RunContext& run)
 {
   if (points.empty())
     return {};
   Refiner refiner(points, options, run);
-  return refiner.refine(points);
+  return refiner.refine();
 }
 
 } // namespace osm

@@ -33,11 +33,6 @@ struct Overlay
 Overlay buildOverlay(
   const std::vector<Point>& points, const OverlayOptions& options, RunContext& run);
 
-/// Renumber the vertices after the box corners along a Hilbert curve, so that
-/// the later phases, which visit vertices and triangles by index, touch memory
-/// in spatial order (refinement creates them in a scattered order).
-void renumberAlongHilbertCurve(Overlay& overlay);
-
 /// Gap ratio Γ for an overlay minimum angle θ1 (degrees): sin θ1 = 1 / (2Γ).
 double gammaForMinAngle(double minAngleDeg);
 

@@ -77,6 +77,20 @@ inline int orientSign(const Point& a, const Point& b, const Point& c)
   return (o > 0) - (o < 0);
 }
 
+/// x lies on the line through a and b exactly, or so close that a point
+/// constructed on that line near x (a crossing with an edge of about
+/// `length`) would round onto x: within a few ulps of x's coordinates plus of
+/// `length`. Used to snap such vertices onto segments, a repair within rounding.
+inline bool onLineWithinRounding(const Point& a, const Point& b, const Point& x, double length)
+{
+  const double o = orient2d(a, b, x); // exact sign, magnitude within a factor of 2
+  if (o == 0)
+    return true;
+  const double scale = std::fmax(std::fabs(x.x), std::fabs(x.y)) + length;
+  const double tolerance = 8 * DBL_EPSILON * scale;
+  return std::fabs(o) <= tolerance * std::hypot(b.x - a.x, b.y - a.y);
+}
+
 } // namespace osm
 
 #endif

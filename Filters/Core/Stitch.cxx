@@ -99,7 +99,6 @@ public:
 private:
   int firstStep(int cur, int b, int& l, int& r, int& tri);
   bool ahead(const Point& from, const Point& x, const Point& B) const;
-  static bool onSegment(const Point& A, const Point& B, const Point& x, double localLength);
   void addCrossing(int edge, int piece, const Point& A, const Point& B);
   void markDuplicates();
 
@@ -112,20 +111,6 @@ private:
   std::vector<std::pair<int, int>> triPiece;    ///< (overlay triangle, piece) traversed
   std::vector<std::pair<int, int>> steinerHits; ///< (Steiner vertex, segment) passing through it
 };
-
-/// x lies on the line AB exactly, or so close that a crossing of AB with an
-/// overlay edge at x (of length about localLength) would round onto x: such a
-/// vertex splits the segment, a repair within rounding. A crossing point's
-/// rounding error is a few ulps of its coordinates plus of the edge length.
-bool Walker::onSegment(const Point& A, const Point& B, const Point& x, double localLength)
-{
-  const double o = orient2d(A, B, x); // exact sign, magnitude within a factor of 2
-  if (o == 0)
-    return true;
-  const double scale = std::max(std::fabs(x.x), std::fabs(x.y)) + localLength;
-  const double tolerance = 8 * std::numeric_limits<double>::epsilon() * scale;
-  return std::fabs(o) <= tolerance * std::hypot(B.x - A.x, B.y - A.y);
-}
 
 /// x lies strictly further along the segment than from, and not beyond B. The
 /// direction is the segment's own, fixed for the whole walk, so the walk only
@@ -153,7 +138,7 @@ int Walker::firstStep(int cur, int b, int& l, int& r, int& tri)
   {
     const int i = localIndex(ov.tris[t], cur);
     const int u = ov.tris[t][(i + 1) % 3];
-    if (ahead(C, P[u], B) && onSegment(A, B, P[u], std::sqrt(dist2(C, P[u]))))
+    if (ahead(C, P[u], B) && onLineWithinRounding(A, B, P[u], std::sqrt(dist2(C, P[u]))))
     {
       tri = ov.triEdge[t][(i + 2) % 3];
       return u;
@@ -238,7 +223,7 @@ void Walker::walk(int segment, int a, int b)
         const int x = ov.tris[t][3 - il - ir];
         const int o = orientSign(A, B, P[x]);
         const double local = std::sqrt(std::max(dist2(P[x], P[l]), dist2(P[x], P[r])));
-        if (o == 0 || (onSegment(A, B, P[x], local) && ahead(P[cur], P[x], B)))
+        if (o == 0 || (onLineWithinRounding(A, B, P[x], local) && ahead(P[cur], P[x], B)))
           next = x;
         else if (o > 0)
         {

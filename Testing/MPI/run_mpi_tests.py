@@ -183,6 +183,12 @@ class Runner:
             cmd.append("--global-ids")
         run(cmd, timeout=600)
 
+    def serial_square_hole(self):
+        """The bundled square with a hole as .vtp, and its serial run."""
+        self.prepare([])
+        vtp = os.path.join(self.out, "square_hole.vtp")
+        return vtp, self.mesh("square_hole-np1", 1, vtp)
+
 
 def bundled(runner):
     runner.prepare([])
@@ -234,10 +240,7 @@ def realdata(runner):
 def render(runner):
     """The distributed output through ParaView's parallel writer and renderer."""
     args = runner.args
-    runner.prepare([])
-    name = "square_hole"
-    vtp = os.path.join(runner.out, name + ".vtp")
-    serial = runner.mesh(name + "-np1", 1, vtp)
+    vtp, serial = runner.serial_square_hole()
     triangles = serial["stats"]["OutputTriangles"]
     json_path = os.path.join(runner.out, "render.json")
     pvtp = os.path.join(runner.out, "render-mesh.pvtp")
@@ -278,10 +281,7 @@ def free_port():
 
 def clientserver(runner):
     args = runner.args
-    runner.prepare([])
-    name = "square_hole"
-    vtp = os.path.join(runner.out, name + ".vtp")
-    serial = runner.mesh(name + "-np1", 1, vtp)
+    vtp, serial = runner.serial_square_hole()
     port = free_port()
     connect_id = 1000 + os.getpid() % 30000
     server_log_path = os.path.join(runner.out, "pvserver.log")
