@@ -106,6 +106,7 @@ private:
   bool isPoor(int t) const;
   void refineTriangle(int t);
   void splitHullEdge(int edge);
+  /// cavityKnown: cavity and waiting already hold p's cavity and its points.
   bool insertVertex(const Point& p, int start, int inputIndex, bool cavityKnown = false);
   void distribute(int v, const std::vector<int>& fan);
   int findInFan(const Point& q, int v, const std::vector<int>& fan) const;
@@ -282,13 +283,16 @@ void Refiner::refineTriangle(int t)
       }
     }
   }
-  // Yield to the nearest waiting input point close to the circumcenter.
+  // Yield to the nearest waiting input point close to the circumcenter. The
+  // scan also collects the waiting points, for insertVertex if c is inserted.
   int best = -1, bestTri = -1;
   double bestD2 = kYield * kYield * r2;
+  waiting.clear();
   for (int u : cavity)
   {
     for (int i = bucketHead[u]; i >= 0; i = bucketNext[i])
     {
+      waiting.push_back(i);
       const double d2 = dist2(input[i], c);
       if (d2 < bestD2 || (d2 == bestD2 && (best < 0 || original[i] < original[best])))
       {
@@ -305,7 +309,7 @@ void Refiner::refineTriangle(int t)
     return;
   }
   countSteiner();
-  // The cavity of c is already known: reuse it rather than search it again.
+  // The cavity of c and its waiting points are known: reuse them.
   if (!insertVertex(c, start, -1, true))
     ++out.refinementsSkipped;
 }
@@ -324,15 +328,18 @@ void Refiner::splitHullEdge(int edge)
 
 bool Refiner::insertVertex(const Point& p, int start, int inputIndex, bool cavityKnown)
 {
-  if (!cavityKnown && !mesh.cavityOf(p, start, cavity))
-    return false;
-  // Collect the waiting points of the cavity; they move to the new triangles.
-  waiting.clear();
-  for (int u : cavity)
+  if (!cavityKnown)
   {
-    for (int i = bucketHead[u]; i >= 0; i = bucketNext[i])
-      if (i != inputIndex)
-        waiting.push_back(i);
+    if (!mesh.cavityOf(p, start, cavity))
+      return false;
+    // Collect the waiting points of the cavity; they move to the new triangles.
+    waiting.clear();
+    for (int u : cavity)
+    {
+      for (int i = bucketHead[u]; i >= 0; i = bucketNext[i])
+        if (i != inputIndex)
+          waiting.push_back(i);
+    }
   }
   const int v = mesh.addPoint(p);
   if (!mesh.insertIntoCavity(v, cavity, created))
@@ -352,8 +359,9 @@ bool Refiner::insertVertex(const Point& p, int start, int inputIndex, bool cavit
   }
   if (gen.size() < static_cast<std::size_t>(mesh.slots()))
   {
-    gen.resize(mesh.slots(), 0);
-    bucketHead.resize(mesh.slots(), -1);
+    // Grow ahead (slots not yet in use stay unread), not at every new slot.
+    gen.resize(2 * mesh.slots(), 0);
+    bucketHead.resize(2 * mesh.slots(), -1);
   }
   for (int u : created)
   {
@@ -368,13 +376,26 @@ bool Refiner::insertVertex(const Point& p, int start, int inputIndex, bool cavit
 
 int Refiner::findInFan(const Point& q, int v, const std::vector<int>& fan) const
 {
+  // q lies in the cavity, which the fan covers, star-shaped around v: q is in
+  // the closed fan triangle (a, b, v) iff it lies in the closed wedge from the
+  // ray v->a to the ray v->b. Consecutive fan triangles share a ray, so each
+  // ray is tested once: about one orientation per triangle instead of three.
+  // (q lies strictly left of v->a iff orient(v, q, a) < 0.)
+  const Point& c = mesh.points[v];
+  int previousB = -1;
+  double previousSide = 0;
   for (int u : fan)
   {
-    const Point& a = mesh.vertex(u, 0);
-    const Point& b = mesh.vertex(u, 1);
-    const Point& c = mesh.points[v];
-    if (orient2d(a, b, q) >= 0 && orient2d(b, c, q) >= 0 && orient2d(c, a, q) >= 0)
+    const int a = mesh.tv[3 * u], b = mesh.tv[3 * u + 1];
+    const double sideA = a == previousB ? previousSide : orient2d(c, q, mesh.points[a]);
+    previousB = -1;
+    if (sideA > 0) // q is strictly right of v->a: not in this wedge
+      continue;
+    const double sideB = orient2d(c, q, mesh.points[b]);
+    if (sideB >= 0)
       return u;
+    previousB = b;
+    previousSide = sideB;
   }
   return mesh.locate(q, fan.front());
 }

@@ -22,9 +22,13 @@ int Triangulation::newTriangle(int a, int b, int c)
   }
   else
   {
+    // push_back is inline; resize() is an out-of-line call at every new slot.
     t = slots();
-    tv.resize(tv.size() + 3);
-    tn.resize(tn.size() + 3);
+    for (int k = 0; k < 3; ++k)
+    {
+      tv.push_back(-1);
+      tn.push_back(-1);
+    }
     mark.push_back(0);
   }
   tv[3 * t] = a;
@@ -182,27 +186,28 @@ bool Triangulation::insertIntoCavity(
   for (int e : boundaryEdges)
   {
     const int t = e / 3, i = e % 3;
-    fan.push_back({ tv[3 * t + (i + 1) % 3], tv[3 * t + (i + 2) % 3], tn[e] });
+    // Two triangles share at most one edge, so the outside triangle's link
+    // back to t is the one across (a, b). Found now, before slots are recycled.
+    const int u = tn[e];
+    int link = -1;
+    if (u >= 0)
+      for (int j = 0; j < 3; ++j)
+        if (tn[3 * u + j] == t)
+          link = 3 * u + j;
+    fan.push_back({ tv[3 * t + (i + 1) % 3], tv[3 * t + (i + 2) % 3], u, link });
   }
   for (int t : cavity)
     freeTriangle(t);
   if (fanByVertex.size() < points.size())
-    fanByVertex.resize(points.size(), -1);
+    fanByVertex.resize(2 * points.size(), -1); // not at every new point
   for (const FanTriangle& f : fan)
   {
     const int t = newTriangle(f.a, f.b, v);
     created.push_back(t);
     // Edge (a, b) is opposite v (local index 2).
     tn[3 * t + 2] = f.outside;
-    if (f.outside >= 0)
-    {
-      for (int i = 0; i < 3; ++i)
-      {
-        const int a = tv[3 * f.outside + (i + 1) % 3], b = tv[3 * f.outside + (i + 2) % 3];
-        if (a == f.b && b == f.a)
-          tn[3 * f.outside + i] = t;
-      }
-    }
+    if (f.outsideLink >= 0)
+      tn[f.outsideLink] = t;
     fanByVertex[f.a] = t; // triangle whose edge (v, a) ... found via vertex a
   }
   // Link fan neighbours: triangle (a, b, v) meets (b, c, v) across edge (b, v).

@@ -60,7 +60,8 @@ private:
   mutable std::uint32_t markStamp = 0;
   struct FanTriangle
   {
-    int a, b, outside;
+    int a, b, outside; ///< edge (a, b) of the cavity boundary, triangle outside beyond it
+    int outsideLink;   ///< the slot of tn by which outside refers back across (a, b)
   };
   std::vector<int> boundaryEdges;
   std::vector<FanTriangle> fan;
