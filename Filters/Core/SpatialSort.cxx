@@ -1,6 +1,7 @@
 #include "SpatialSort.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 
 namespace osm
@@ -9,23 +10,58 @@ namespace osm
 namespace
 {
 
-/// Position of cell (x, y) along the Hilbert curve filling a 2^16 x 2^16 grid.
-/// Each level picks a quadrant (2 bits of the key) in the frame left by the
-/// levels above: the frame is the grid, swapped (x <-> y) or not, complemented
-/// (both coordinates mirrored) or not. Branch-free: the quadrant bits are
-/// random, so branches on them would mostly be mispredicted.
-std::uint32_t hilbertKey(std::uint32_t x, std::uint32_t y)
+/// One level of the Hilbert curve. The frame left by the levels above (state:
+/// bit 0 swapped x <-> y, bit 1 both coordinates mirrored) and the cell's
+/// bits at this level give the key digit (its quadrant along the curve) and
+/// the frame for the next level: the lower quadrants turn the frame (both swap
+/// it, the right one also mirrors it).
+struct HilbertStep
 {
-  std::uint32_t key = 0, swapped = 0, complemented = 0;
-  for (int level = 15; level >= 0; --level)
+  std::uint32_t digit, state;
+};
+
+HilbertStep hilbertStep(std::uint32_t state, std::uint32_t bx, std::uint32_t by)
+{
+  const std::uint32_t swapped = state & 1u, complemented = state >> 1;
+  const std::uint32_t rx = (swapped ? by : bx) ^ complemented;
+  const std::uint32_t ry = (swapped ? bx : by) ^ complemented;
+  return { (3u * rx) ^ ry, (swapped ^ ry ^ 1u) | ((complemented ^ (rx & (ry ^ 1u))) << 1) };
+}
+
+/// Four levels at once: for a state and 4 bits of x and of y, the 8 key bits
+/// and the next state. A key then costs 4 table lookups instead of 16 levels.
+struct HilbertTable
+{
+  std::array<std::uint16_t, 4 * 256> entry{};
+
+  HilbertTable()
   {
-    const std::uint32_t bx = (x >> level) & 1u, by = (y >> level) & 1u;
-    const std::uint32_t rx = (swapped ? by : bx) ^ complemented;
-    const std::uint32_t ry = (swapped ? bx : by) ^ complemented;
-    key |= ((3u * rx) ^ ry) << (2 * level);
-    // The lower quadrants turn the frame: both swap it, the right one mirrors it.
-    swapped ^= ry ^ 1u;
-    complemented ^= rx & (ry ^ 1u);
+    for (std::uint32_t state = 0; state < 4; ++state)
+      for (std::uint32_t xs = 0; xs < 16; ++xs)
+        for (std::uint32_t ys = 0; ys < 16; ++ys)
+        {
+          std::uint32_t s = state, digits = 0;
+          for (int level = 3; level >= 0; --level)
+          {
+            const HilbertStep step = hilbertStep(s, (xs >> level) & 1u, (ys >> level) & 1u);
+            digits |= step.digit << (2 * level);
+            s = step.state;
+          }
+          entry[(state << 8) | (xs << 4) | ys] = static_cast<std::uint16_t>(digits | (s << 8));
+        }
+  }
+};
+
+/// Position of cell (x, y) along the Hilbert curve filling a 2^16 x 2^16 grid.
+std::uint32_t hilbertKey(const HilbertTable& table, std::uint32_t x, std::uint32_t y)
+{
+  std::uint32_t key = 0, state = 0;
+  for (int shift = 12; shift >= 0; shift -= 4)
+  {
+    const std::uint32_t e =
+      table.entry[(state << 8) | (((x >> shift) & 15u) << 4) | ((y >> shift) & 15u)];
+    key |= (e & 255u) << (2 * shift);
+    state = e >> 8;
   }
   return key;
 }
@@ -40,12 +76,13 @@ std::vector<int> hilbertOrder(const std::vector<Point>& points)
   const Bounds b = boundsOf(points);
   const double size = std::max(b.width(), b.height());
   const double scale = size > 0 ? 65535.0 / size : 0.0;
+  static const HilbertTable table; // thread-safe initialisation, once
   std::vector<std::uint32_t> keys(points.size());
   for (std::size_t i = 0; i < points.size(); ++i)
   {
     const auto x = static_cast<std::uint32_t>((points[i].x - b.lo.x) * scale);
     const auto y = static_cast<std::uint32_t>((points[i].y - b.lo.y) * scale);
-    keys[i] = hilbertKey(std::min(x, 65535u), std::min(y, 65535u));
+    keys[i] = hilbertKey(table, std::min(x, 65535u), std::min(y, 65535u));
   }
   // Stable LSD radix sort of the indices by key: ties keep input order, as a
   // sort of (key, index) pairs would, in linear time. Small inputs take 8
