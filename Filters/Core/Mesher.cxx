@@ -14,6 +14,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <new>
 #include <string>
@@ -426,9 +427,19 @@ void Mesher::buildOutput(const Work& w, const PlanarGraph& g, const Completion& 
   Statistics& st = res.stats;
   // Scaling back is exact unless a point falls among the subnormal numbers,
   // where it would lose bits and could flip triangles: refuse that instead.
+  // Multiplying by a normal power of two rounds exactly as ldexp does, without
+  // a library call per coordinate; other exponents keep ldexp.
+  const bool normalPowers = std::abs(exponent) <= 1021;
+  const double up = std::ldexp(1.0, normalPowers ? exponent : 0);
+  const double down = std::ldexp(1.0, normalPowers ? -exponent : 0);
+  auto scaleBy = [&](const Point& p, int e, double factor) {
+    return normalPowers ? Point{ p.x * factor, p.y * factor }
+                        : Point{ std::ldexp(p.x, e), std::ldexp(p.y, e) };
+  };
   auto unscale = [&](Point p) {
-    const Point u{ std::ldexp(p.x, exponent), std::ldexp(p.y, exponent) };
-    if (std::ldexp(u.x, -exponent) != p.x || std::ldexp(u.y, -exponent) != p.y)
+    const Point u = scaleBy(p, exponent, up);
+    const Point back = scaleBy(u, -exponent, down);
+    if (back.x != p.x || back.y != p.y)
       throw Stop{ "the mesh needs points too close to zero for double precision at this "
                   "scale (coordinates below about 1e-290)",
         true, p };
