@@ -19,7 +19,8 @@ Triangulation delaunayTriangulation(const std::vector<Point>& points, std::vecto
   const int c2 = T.addPoint({ cx + h, cy + h }), c3 = T.addPoint({ cx - h, cy + h });
   const int t0 = T.newTriangle(c0, c1, c2), t1 = T.newTriangle(c0, c2, c3);
   T.link(t0, t1);
-  std::vector<int> cavity, created;
+  Triangulation::Cavity cavity;
+  std::vector<int> created;
   int last = t0;
   for (int i : hilbertOrder(points))
   {

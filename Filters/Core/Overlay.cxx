@@ -135,7 +135,7 @@ private:
   std::size_t inserted = 0;
   std::size_t hardCap = 0;
   // Scratch.
-  std::vector<int> cavity;
+  Triangulation::Cavity cavity;
   std::vector<int> created;
   std::vector<int> waiting;
 };
@@ -272,19 +272,17 @@ void Refiner::refineTriangle(int t)
     return;
   }
   // A circumcenter that encroaches the box boundary splits the boundary instead.
-  for (int u : cavity)
+  for (int e : cavity.boundary)
   {
-    for (int i = 0; i < 3; ++i)
+    if (mesh.tn[e] >= 0)
+      continue;
+    const int u = e / 3, i = e % 3;
+    const Point& p = mesh.vertex(u, (i + 1) % 3);
+    const Point& q = mesh.vertex(u, (i + 2) % 3);
+    if ((c.x - p.x) * (c.x - q.x) + (c.y - p.y) * (c.y - q.y) <= 0)
     {
-      if (mesh.tn[3 * u + i] >= 0)
-        continue;
-      const Point& p = mesh.vertex(u, (i + 1) % 3);
-      const Point& q = mesh.vertex(u, (i + 2) % 3);
-      if ((c.x - p.x) * (c.x - q.x) + (c.y - p.y) * (c.y - q.y) <= 0)
-      {
-        splitHullEdge(3 * u + i);
-        return;
-      }
+      splitHullEdge(e);
+      return;
     }
   }
   // Yield to the nearest waiting input point close to the circumcenter. The
@@ -292,7 +290,7 @@ void Refiner::refineTriangle(int t)
   int best = -1, bestTri = -1;
   double bestD2 = kYield * kYield * r2;
   waiting.clear();
-  for (int u : cavity)
+  for (int u : cavity.triangles)
   {
     for (int i = bucketHead[u]; i >= 0; i = bucketNext[i])
     {
@@ -338,7 +336,7 @@ bool Refiner::insertVertex(const Point& p, int start, int inputIndex, bool cavit
       return false;
     // Collect the waiting points of the cavity; they move to the new triangles.
     waiting.clear();
-    for (int u : cavity)
+    for (int u : cavity.triangles)
     {
       for (int i = bucketHead[u]; i >= 0; i = bucketNext[i])
         if (i != inputIndex)
@@ -352,7 +350,7 @@ bool Refiner::insertVertex(const Point& p, int start, int inputIndex, bool cavit
     mesh.vtri.pop_back();
     return false;
   }
-  for (int u : cavity)
+  for (int u : cavity.triangles)
     if (!mesh.alive(u))
       bucketHead[u] = -1;
   out.isInput.push_back(inputIndex >= 0 ? 1 : 0);

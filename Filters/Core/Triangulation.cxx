@@ -2,6 +2,9 @@
 
 #include "Predicates.h"
 
+#include <algorithm>
+#include <cstdint>
+
 namespace osm
 {
 
@@ -119,76 +122,66 @@ int Triangulation::locate(const Point& p, int t, int* exitEdge) const
   }
 }
 
-bool Triangulation::cavityOf(const Point& p, int start, std::vector<int>& cavity) const
+bool Triangulation::cavityOf(const Point& p, int start, Cavity& cavity) const
 {
-  cavity.clear();
+  cavity.triangles.clear();
+  cavity.boundary.clear();
   for (int i = 0; i < 3; ++i)
     if (vertex(start, i) == p)
       return false;
-  if (++markStamp == 0)
+  // Two stamps per search: in the cavity, and tested and found outside it.
+  if (markStamp > UINT32_MAX - 2)
   {
     std::fill(mark.begin(), mark.end(), 0);
-    markStamp = 1;
+    markStamp = 0;
   }
+  const std::uint32_t in = ++markStamp, out = ++markStamp;
   // p lies in the closure of start, hence strictly inside its circumcircle.
-  cavity.push_back(start);
-  mark[start] = markStamp;
-  for (std::size_t k = 0; k < cavity.size(); ++k)
+  cavity.triangles.push_back(start);
+  mark[start] = in;
+  // Each edge is classified when its cavity triangle is searched, so the
+  // boundary comes out in cavity order, edge by edge.
+  for (std::size_t k = 0; k < cavity.triangles.size(); ++k)
   {
-    const int t = cavity[k];
+    const int t = cavity.triangles[k];
     for (int i = 0; i < 3; ++i)
     {
       const int u = tn[3 * t + i];
-      if (u < 0 || mark[u] == markStamp)
+      if (u >= 0 && mark[u] == in)
         continue;
-      mark[u] = markStamp;
-      if (incircle(vertex(u, 0), vertex(u, 1), vertex(u, 2), p) > 0)
-        cavity.push_back(u);
+      if (u >= 0 && mark[u] != out)
+      {
+        if (incircle(vertex(u, 0), vertex(u, 1), vertex(u, 2), p) > 0)
+        {
+          mark[u] = in;
+          cavity.triangles.push_back(u);
+          continue;
+        }
+        mark[u] = out;
+      }
+      cavity.boundary.push_back(3 * t + i);
     }
   }
   return true;
 }
 
-bool Triangulation::insertIntoCavity(
-  int v, const std::vector<int>& cavity, std::vector<int>& created)
+bool Triangulation::insertIntoCavity(int v, const Cavity& cavity, std::vector<int>& created)
 {
   created.clear();
   const Point& p = points[v];
-  // Boundary edges of the cavity: edges whose neighbour is not in it.
-  ++markStamp;
-  if (markStamp == 0)
-  {
-    std::fill(mark.begin(), mark.end(), 0);
-    markStamp = 1;
-  }
-  for (int t : cavity)
-    mark[t] = markStamp;
-  boundaryEdges.clear();
-  for (int t : cavity)
-  {
-    for (int i = 0; i < 3; ++i)
-    {
-      const int u = tn[3 * t + i];
-      if (u >= 0 && mark[u] == markStamp)
-        continue;
-      const Point& a = vertex(t, (i + 1) % 3);
-      const Point& b = vertex(t, (i + 2) % 3);
-      const double o = orient2d(a, b, p);
-      if (o < 0 || (o == 0 && u >= 0))
-        return false; // not star-shaped: refuse rather than tangle the mesh
-      if (o == 0)
-        continue; // p splits this hull edge: it stays open
-      boundaryEdges.push_back(3 * t + i);
-    }
-  }
   // Record the outside neighbours before the cavity slots are recycled.
   fan.clear();
-  for (int e : boundaryEdges)
+  for (int e : cavity.boundary)
   {
     const int t = e / 3, i = e % 3;
+    const int u = tn[e];
+    const double o = orient2d(vertex(t, (i + 1) % 3), vertex(t, (i + 2) % 3), p);
+    if (o < 0 || (o == 0 && u >= 0))
+      return false; // not star-shaped: refuse rather than tangle the mesh
+    if (o == 0)
+      continue; // p splits this hull edge: it stays open
     // Two triangles share at most one edge, so the outside triangle's link
     // back to t is the one across (a, b). Found now, before slots are recycled.
-    const int u = tn[e];
     int link = -1;
     if (u >= 0)
       for (int j = 0; j < 3; ++j)
@@ -196,7 +189,7 @@ bool Triangulation::insertIntoCavity(
           link = 3 * u + j;
     fan.push_back({ tv[3 * t + (i + 1) % 3], tv[3 * t + (i + 2) % 3], u, link });
   }
-  for (int t : cavity)
+  for (int t : cavity.triangles)
     freeTriangle(t);
   if (fanByVertex.size() < points.size())
     fanByVertex.resize(2 * points.size(), -1); // not at every new point

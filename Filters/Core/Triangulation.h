@@ -43,15 +43,23 @@ public:
   /// if the walk exceeds one step per triangle (never on a valid Delaunay mesh).
   int locate(const Point& p, int start, int* exitEdge = nullptr) const;
 
-  /// Triangles whose circumcircle strictly contains p, found from a triangle
-  /// containing p (Bowyer-Watson cavity). Fills cavity; returns false if p
-  /// coincides with a vertex of the start triangle.
-  bool cavityOf(const Point& p, int containing, std::vector<int>& cavity) const;
+  /// A Bowyer-Watson cavity: the triangles whose circumcircle strictly
+  /// contains a point, in search order, and the edges (3t + i) on its
+  /// boundary, found during the same search.
+  struct Cavity
+  {
+    std::vector<int> triangles;
+    std::vector<int> boundary;
+  };
+
+  /// The cavity of p, searched from a triangle containing p. Returns false if
+  /// p coincides with a vertex of the start triangle.
+  bool cavityOf(const Point& p, int containing, Cavity& cavity) const;
 
   /// Replace the cavity by a fan around the new vertex v (a point already added).
   /// Returns false, changing nothing, if the cavity is not star-shaped from v.
   /// created receives the new triangles in counter-clockwise order around v.
-  bool insertIntoCavity(int v, const std::vector<int>& cavity, std::vector<int>& created);
+  bool insertIntoCavity(int v, const Cavity& cavity, std::vector<int>& created);
 
 private:
   std::vector<int> freeSlots;
@@ -63,7 +71,6 @@ private:
     int a, b, outside; ///< edge (a, b) of the cavity boundary, triangle outside beyond it
     int outsideLink;   ///< the slot of tn by which outside refers back across (a, b)
   };
-  std::vector<int> boundaryEdges;
   std::vector<FanTriangle> fan;
   std::vector<int> ordered;
   std::vector<int> fanByVertex;
