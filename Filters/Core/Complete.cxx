@@ -126,7 +126,8 @@ struct Rotation
 {
   std::vector<int> start;
   std::vector<int> to;
-  std::vector<int> twin; ///< half-edge v->u for half-edge u->v
+  std::vector<int> twin;  ///< half-edge v->u for half-edge u->v
+  std::vector<char> open; ///< its face (on its left) is still to be triangulated
 };
 
 bool upperHalf(const Point& c, const Point& p)
@@ -134,15 +135,19 @@ bool upperHalf(const Point& c, const Point& p)
   return p.y > c.y || (p.y == c.y && p.x > c.x);
 }
 
+/// The rotation system of the edges that bound a face still to be traced.
 Rotation buildRotation(const PlanarGraph& g)
 {
   const int n = static_cast<int>(g.points.size());
+  const int ne = static_cast<int>(g.edges.size());
   Rotation r;
   r.start.assign(n + 1, 0);
-  for (const Segment& e : g.edges)
+  for (int e = 0; e < ne; ++e)
   {
-    ++r.start[e[0] + 1];
-    ++r.start[e[1] + 1];
+    if (!g.openSides[e])
+      continue;
+    ++r.start[g.edges[e][0] + 1];
+    ++r.start[g.edges[e][1] + 1];
   }
   for (int v = 0; v < n; ++v)
     r.start[v + 1] += r.start[v];
@@ -150,8 +155,10 @@ Rotation buildRotation(const PlanarGraph& g)
   // half-edges of an edge find each other in one linear pass afterwards.
   std::vector<std::array<int, 2>> half(r.start[n]); // (head, edge)
   std::vector<int> fill(r.start.begin(), r.start.end() - 1);
-  for (int e = 0; e < static_cast<int>(g.edges.size()); ++e)
+  for (int e = 0; e < ne; ++e)
   {
+    if (!g.openSides[e])
+      continue;
     half[fill[g.edges[e][0]]++] = { g.edges[e][1], e };
     half[fill[g.edges[e][1]]++] = { g.edges[e][0], e };
   }
@@ -169,10 +176,14 @@ Rotation buildRotation(const PlanarGraph& g)
   }
   r.to.resize(half.size());
   r.twin.assign(half.size(), -1);
+  r.open.resize(half.size());
   std::vector<int> firstHalf(g.edges.size(), -1);
   for (int h = 0; h < static_cast<int>(half.size()); ++h)
   {
     r.to[h] = half[h][0];
+    const int e = half[h][1];
+    // A half-edge's face is on its left: the edge's left side if it runs forward.
+    r.open[h] = g.openSides[e] & (g.edges[e][1] == half[h][0] ? OpenLeft : OpenRight);
     int& first = firstHalf[half[h][1]];
     if (first < 0)
       first = h;
@@ -193,48 +204,50 @@ int tailOf(const Rotation& r, int h)
 
 } // namespace
 
-Completion complete(const PlanarGraph& g, Statistics& stats, RunContext& run)
+Completion complete(PlanarGraph& g, Statistics& stats, RunContext& run)
 {
   Completion out;
+  out.triangles = std::move(g.intact);
+  if (!out.triangles.empty())
+    stats.largestFace = std::max<std::size_t>(stats.largestFace, 3);
   const Rotation r = buildRotation(g);
   const int nh = static_cast<int>(r.to.size());
   for (std::size_t e = 0; e < g.edges.size(); ++e)
     if (g.constrained[e])
       out.constrainedEdges.push_back(
         { std::min(g.edges[e][0], g.edges[e][1]), std::max(g.edges[e][0], g.edges[e][1]) });
-  // Trace every face: after u->v, turn to the edge clockwise-next from v->u.
+  // Trace every open face: after u->v, turn to the edge clockwise-next from
+  // v->u. Half-edges of intact triangles and of the box's outside start seen.
   // Faces are stored flat (faceStart, faceVertices) to avoid an allocation each.
-  std::vector<char> seen(nh, 0);
+  std::vector<char> seen(nh);
+  for (int h = 0; h < nh; ++h)
+    seen[h] = !r.open[h];
   std::vector<int> faceStart{ 0 }, faceVertices;
-  std::vector<double> areas;
   faceVertices.reserve(nh);
   for (int h0 = 0; h0 < nh; ++h0)
   {
     if (seen[h0])
       continue;
-    double area = 0;
-    for (int h = h0; !seen[h];)
+    int h = h0;
+    do
     {
       seen[h] = 1;
-      const int u = tailOf(r, h), v = r.to[h];
-      faceVertices.push_back(u);
-      area += g.points[u].x * g.points[v].y - g.points[v].x * g.points[u].y;
+      const int v = r.to[h];
+      faceVertices.push_back(tailOf(r, h));
       const int back = r.twin[h]; // v->u, inside v's rotation
       h = back == r.start[v] ? r.start[v + 1] - 1 : back - 1;
-    }
+    } while (!seen[h]);
+    if (h != h0)
+      throw Stop{ "internal error: a face to complete runs into an intact triangle" };
     faceStart.push_back(static_cast<int>(faceVertices.size()));
-    areas.push_back(area);
     run.tick(double(h0) / double(nh), 65536);
   }
-  // The outer face runs clockwise around the whole box: the most negative area.
-  const std::size_t outer = std::min_element(areas.begin(), areas.end()) - areas.begin();
-  out.triangles.reserve(nh / 3);
+  // A face of k sides gives k - 2 triangles.
+  out.triangles.reserve(out.triangles.size() + faceVertices.size() - 2 * (faceStart.size() - 1));
   std::vector<Point> polygon;
   std::vector<int> face;
   for (std::size_t f = 0; f + 1 < faceStart.size(); ++f)
   {
-    if (f == outer)
-      continue;
     face.assign(faceVertices.begin() + faceStart[f], faceVertices.begin() + faceStart[f + 1]);
     stats.largestFace = std::max(stats.largestFace, face.size());
     if (face.size() == 3)

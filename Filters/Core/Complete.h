@@ -21,7 +21,8 @@ struct Completion
   std::vector<Segment> constrainedEdges;
 };
 
-Completion complete(const PlanarGraph& graph, Statistics& stats, RunContext& run);
+/// Takes graph.intact as the first triangles, then triangulates every other face.
+Completion complete(PlanarGraph& graph, Statistics& stats, RunContext& run);
 
 /// Min-max-angle triangulation of a simple polygon given counter-clockwise.
 /// Appends triangles (indices into ids) and returns false if none exists.

@@ -356,7 +356,7 @@ void Mesher::meshRounds(Work& w)
 
     t = Clock::now();
     std::vector<Edge> edges;
-    const PlanarGraph g = stitch(ov, overlay, walk, options.keepEdges ? &edges : nullptr, st);
+    PlanarGraph g = stitch(ov, overlay, walk, options.keepEdges ? &edges : nullptr, st);
     st.secondsStitch += since(t);
     // The overlay is only output from here on: move it there, or free it.
     if (options.keepOverlay)

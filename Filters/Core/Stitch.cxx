@@ -391,6 +391,37 @@ bool tooClose(const Point& p, const Point& q, double edgeLength)
   return dist2(p, q) <= tolerance * tolerance;
 }
 
+/// Lists the overlay triangles with no crossed edge in intact (they are faces
+/// of the stitched graph as they are) and returns, per overlay edge, the sides
+/// on which a face must still be traced: those of the other triangles. The
+/// box's outside is never traced.
+std::vector<std::uint8_t> openSides(
+  const OverlayEdges& ov, const std::vector<char>& crossed, std::vector<Triangle>& intact)
+{
+  auto isIntact = [&](std::size_t c) {
+    const std::array<int, 3>& e = ov.triEdge[c];
+    return !crossed[e[0]] && !crossed[e[1]] && !crossed[e[2]];
+  };
+  std::size_t count = 0;
+  for (std::size_t c = 0; c < ov.tris.size(); ++c)
+    count += isIntact(c);
+  intact.reserve(count);
+  std::vector<std::uint8_t> open(ov.edges.size(), 0);
+  for (std::size_t c = 0; c < ov.tris.size(); ++c)
+  {
+    const std::array<int, 3>& e = ov.triEdge[c];
+    if (isIntact(c))
+    {
+      intact.push_back(ov.tris[c]);
+      continue;
+    }
+    // A counter-clockwise triangle lies left of its edge i taken from vertex i+1 to i+2.
+    for (int i = 0; i < 3; ++i)
+      open[e[i]] |= ov.edges[e[i]][0] == ov.tris[c][(i + 1) % 3] ? OpenLeft : OpenRight;
+  }
+  return open;
+}
+
 } // namespace
 
 PlanarGraph stitch(const OverlayEdges& ov, const Overlay& overlay, const Walk& walk,
@@ -401,9 +432,10 @@ PlanarGraph stitch(const OverlayEdges& ov, const Overlay& overlay, const Walk& w
   g.origin.resize(g.points.size());
   for (std::size_t v = 0; v < g.points.size(); ++v)
     g.origin[v] = overlay.isInput[v] ? VertexOrigin::Input : VertexOrigin::Overlay;
-  auto addEdge = [&](int a, int b, bool constrained) {
+  auto addEdge = [&](int a, int b, bool constrained, std::uint8_t open) {
     g.edges.push_back({ a, b });
     g.constrained.push_back(constrained);
+    g.openSides.push_back(open);
   };
 
   const std::size_t ne = ov.edges.size();
@@ -420,6 +452,7 @@ PlanarGraph stitch(const OverlayEdges& ov, const Overlay& overlay, const Walk& w
   for (const Piece& p : walk.pieces)
     if (p.overlayEdge >= 0 && !p.duplicate)
       alongInput[p.overlayEdge] = 1;
+  const std::vector<std::uint8_t> open = openSides(ov, crossed, g.intact);
 
   // Kept crossed edges: one stitch vertex per crossing, in order along the edge.
   std::vector<int> start;
@@ -432,8 +465,8 @@ PlanarGraph stitch(const OverlayEdges& ov, const Overlay& overlay, const Walk& w
     {
       ++stats.uncrossedEdges;
       flags |= EdgeKept | (alongInput[e] ? EdgeInput : 0);
-      if (!alongInput[e])
-        addEdge(ov.edges[e][0], ov.edges[e][1], false);
+      if (alongInput[e] || open[e])
+        addEdge(ov.edges[e][0], ov.edges[e][1], alongInput[e], open[e]);
     }
     else if (kept[e])
     {
@@ -458,10 +491,10 @@ PlanarGraph stitch(const OverlayEdges& ov, const Overlay& overlay, const Walk& w
         g.points.push_back(c.p);
         g.origin.push_back(VertexOrigin::Stitch);
         stitchVertex[order[k]] = v;
-        addEdge(prev, v, false);
+        addEdge(prev, v, false, OpenBoth);
         prev = v;
       }
-      addEdge(prev, ov.edges[e][1], false);
+      addEdge(prev, ov.edges[e][1], false, OpenBoth);
     }
     else
     {
@@ -473,22 +506,23 @@ PlanarGraph stitch(const OverlayEdges& ov, const Overlay& overlay, const Walk& w
   }
   stats.stitchVertices = g.points.size() - overlay.mesh.points.size();
 
-  // Input subsegments: each piece, split at its kept crossings.
+  // Input subsegments: each piece, split at its kept crossings. A piece along
+  // an uncrossed overlay edge is that edge, added above.
   for (const Piece& p : walk.pieces)
   {
-    if (p.duplicate)
+    if (p.duplicate || (p.overlayEdge >= 0 && !crossed[p.overlayEdge]))
       continue;
     int prev = p.v0;
     for (int k = p.firstCrossing; k < p.firstCrossing + p.crossingCount; ++k)
     {
       if (stitchVertex[k] < 0)
         continue;
-      addEdge(prev, stitchVertex[k], true);
+      addEdge(prev, stitchVertex[k], true, OpenBoth);
       if (inspect)
         inspect->push_back({ prev, stitchVertex[k], EdgeInput });
       prev = stitchVertex[k];
     }
-    addEdge(prev, p.v1, true);
+    addEdge(prev, p.v1, true, OpenBoth);
     if (inspect && p.overlayEdge < 0)
       inspect->push_back({ prev, p.v1, EdgeInput });
   }

@@ -15,6 +15,7 @@
 #include "RunContext.h"
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 namespace osm
@@ -72,13 +73,26 @@ struct Walk
 Walk walkSegments(const OverlayEdges& ov, const Overlay& overlay,
   const std::vector<Segment>& segments, double sinTheta1, RunContext& run);
 
-/// The stitched planar graph: overlay vertices, then stitch vertices.
+/// Sides of a planar-graph edge that lie in a face still to be completed.
+enum OpenSide : std::uint8_t
+{
+  OpenLeft = 1,  ///< left of edges[e][0] -> edges[e][1]
+  OpenRight = 2, ///< right of it
+  OpenBoth = 3
+};
+
+/// The stitched planar graph: overlay vertices, then stitch vertices. Overlay
+/// triangles with no crossed edge are faces of it already and are listed as
+/// such; the edges are those of the other faces (the ones completion must
+/// trace) and every input subsegment.
 struct PlanarGraph
 {
   std::vector<Point> points;
   std::vector<VertexOrigin> origin;
+  std::vector<Triangle> intact; ///< overlay triangles that no segment crosses
   std::vector<Segment> edges;
-  std::vector<char> constrained; ///< per edge: part of an input segment
+  std::vector<char> constrained;       ///< per edge: part of an input segment
+  std::vector<std::uint8_t> openSides; ///< per edge: OpenSide bits, 0 if only constrained
 };
 
 /// Keep or discard overlay edges and insert the kept crossings. When inspect is

@@ -6,7 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 #include <random>
 
 using namespace osm;
@@ -117,6 +119,64 @@ TEST(Stitch, EdgesAreKeptOrDiscardedByTheirCrossings)
     onKept += crossings[c.edge] > 0 && goods[c.edge] > 0;
   EXPECT_EQ(stats.stitchVertices, onKept);
   EXPECT_EQ(g.points.size(), s.overlay.mesh.points.size() + onKept);
+}
+
+TEST(Stitch, IntactTrianglesAreTheUncrossedOnesAndOpenSidesFaceTheRest)
+{
+  std::vector<Point> pts{ { 0, 0 }, { 1, 0.02 }, { 0, 0.05 }, { 1, 0.08 }, { 0.3, 0.9 },
+    { 0.7, 0.6 }, { 0.2, 0.4 } };
+  std::vector<Segment> segs{ { 0, 1 }, { 2, 3 }, { 0, 4 }, { 4, 5 } };
+  Stitched s = stitchInput(pts, segs, 30);
+  std::vector<char> crossed(s.ov.edges.size(), 0);
+  for (const Crossing& c : s.walk.crossings)
+    crossed[c.edge] = 1;
+  Statistics stats;
+  const PlanarGraph g = stitch(s.ov, s.overlay, s.walk, nullptr, stats);
+  ASSERT_EQ(g.openSides.size(), g.edges.size());
+  // The sides of each overlay edge (as a directed vertex pair) that a crossed triangle lies on.
+  std::map<std::pair<int, int>, int> expectedOpen;
+  std::size_t intact = 0;
+  for (std::size_t c = 0; c < s.ov.tris.size(); ++c)
+  {
+    const Triangle& t = s.ov.tris[c];
+    bool anyCrossed = false;
+    for (int i = 0; i < 3; ++i)
+      anyCrossed |= crossed[s.ov.triEdge[c][i]] != 0;
+    if (!anyCrossed)
+    {
+      ++intact;
+      EXPECT_NE(std::find(g.intact.begin(), g.intact.end(), t), g.intact.end()) << "triangle " << c;
+      continue;
+    }
+    for (int i = 0; i < 3; ++i) // t lies left of t[i+1] -> t[i+2]
+      expectedOpen[{ t[(i + 1) % 3], t[(i + 2) % 3] }] = 1;
+  }
+  EXPECT_EQ(g.intact.size(), intact);
+  EXPECT_GT(intact, 0u);
+  EXPECT_LT(intact, s.ov.tris.size());
+  // Every uncrossed overlay edge in the graph is open exactly on its crossed triangles' sides.
+  std::size_t checked = 0;
+  for (std::size_t e = 0; e < g.edges.size(); ++e)
+  {
+    const int a = g.edges[e][0], b = g.edges[e][1];
+    const bool overlayEdge = a < static_cast<int>(s.overlay.mesh.points.size()) &&
+      b < static_cast<int>(s.overlay.mesh.points.size());
+    if (!overlayEdge)
+    {
+      EXPECT_EQ(g.openSides[e], OpenBoth) << "edge " << e << " through stitch vertices";
+      continue;
+    }
+    const int left = expectedOpen.count({ a, b }) ? OpenLeft : 0;
+    const int right = expectedOpen.count({ b, a }) ? OpenRight : 0;
+    if (left | right)
+    {
+      EXPECT_EQ(g.openSides[e], left | right) << "edge " << e;
+      ++checked;
+    }
+    else
+      EXPECT_TRUE(g.constrained[e]) << "edge " << e << " between intact triangles";
+  }
+  EXPECT_GT(checked, 0u);
 }
 
 TEST(Stitch, WalksFollowTheSegmentInOrder)
