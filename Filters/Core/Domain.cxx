@@ -34,13 +34,24 @@ void bucketByLo(
 /// Linear time whatever the vertex degrees: the edges are bucketed by their
 /// smaller vertex, and each bucket is matched on the larger vertex through
 /// arrays stamped with the bucket's vertex. Edges with the same ends pair in
-/// triangle order, each with the previous one.
+/// triangle order, each with the previous one. Edges given in known are taken
+/// from it and not matched.
 std::vector<int> adjacency(const std::vector<Triangle>& tris,
-  const std::vector<Segment>& constrained, std::vector<char>& edgeConstrained)
+  const std::vector<Segment>& constrained, const KnownAdjacency* known,
+  std::vector<char>& edgeConstrained)
 {
   int n = 0; // vertices 0..n-1
   for (const Triangle& t : tris)
     n = std::max({ n, t[0] + 1, t[1] + 1, t[2] + 1 });
+  const int nk = known ? static_cast<int>(known->nbr.size()) : 0;
+  std::vector<int> nbr(3 * tris.size(), -1);
+  edgeConstrained.assign(3 * tris.size(), 0);
+  for (int t = 0; t < nk; ++t)
+    for (int i = 0; i < 3; ++i)
+    {
+      nbr[3 * t + i] = known->nbr[t][i];
+      edgeConstrained[3 * t + i] = (known->constrained[t] >> i) & 1;
+    }
   std::vector<int> edgeStart, constrainedStart;
   std::vector<std::array<int, 2>> edges, constrainedEdges;
   bucketByLo(
@@ -49,11 +60,16 @@ std::vector<int> adjacency(const std::vector<Triangle>& tris,
       for (int t = 0; t < static_cast<int>(tris.size()); ++t)
         for (int i = 0; i < 3; ++i)
         {
+          if (t < nk && nbr[3 * t + i] != KnownAdjacency::kUnknownNeighbour)
+            continue;
           const int a = tris[t][(i + 1) % 3], b = tris[t][(i + 2) % 3];
           emit(std::min(a, b), std::max(a, b), 3 * t + i);
         }
     },
     edgeStart, edges);
+  for (int e = 0; e < 3 * nk; ++e)
+    if (nbr[e] == KnownAdjacency::kUnknownNeighbour)
+      nbr[e] = -1;
   bucketByLo(
     n,
     [&](auto&& emit) {
@@ -62,8 +78,6 @@ std::vector<int> adjacency(const std::vector<Triangle>& tris,
           emit(s[0], s[1], 0);
     },
     constrainedStart, constrainedEdges);
-  std::vector<int> nbr(edges.size(), -1);
-  edgeConstrained.assign(edges.size(), 0);
   // Per larger vertex hi, valid while its stamp is the current lo: (lo, hi) is
   // constrained; the last edge seen with ends (lo, hi).
   std::vector<int> constrainedStamp(n, -1), lastStamp(n, -1), last(n, -1);
@@ -193,10 +207,11 @@ private:
 } // namespace
 
 Carving carveDomain(const std::vector<Point>& P, const std::vector<Triangle>& tris,
-  const std::vector<Segment>& constrained, bool removeExterior, const std::vector<Point>& holes)
+  const std::vector<Segment>& constrained, bool removeExterior, const std::vector<Point>& holes,
+  const KnownAdjacency* known)
 {
   std::vector<char> edgeConstrained;
-  const std::vector<int> nbr = adjacency(tris, constrained, edgeConstrained);
+  const std::vector<int> nbr = adjacency(tris, constrained, known, edgeConstrained);
   const int removed = -2;
   std::vector<int> labels(tris.size(), -1);
   if (removeExterior)

@@ -6,10 +6,24 @@
 
 #include "Geometry.h"
 
+#include <array>
+#include <cstdint>
 #include <vector>
 
 namespace osm
 {
+
+/// Adjacency known in advance for the first triangles of a carving (the
+/// overlay triangles that no segment crosses): per edge i, opposite vertex i,
+/// the neighbouring triangle, -1 for none, or kUnknownNeighbour to find it by
+/// matching edges (on both sides of the edge: a side matched alone finds no
+/// partner); and whether the edge is constrained (bit i).
+struct KnownAdjacency
+{
+  static constexpr int kUnknownNeighbour = -2;
+  std::vector<std::array<int, 3>> nbr;
+  std::vector<std::uint8_t> constrained;
+};
 
 struct Carving
 {
@@ -20,8 +34,10 @@ struct Carving
 
 /// removeExterior: drop triangles reachable from the box boundary without
 /// crossing a constrained edge. constrained holds (lo, hi) vertex pairs.
+/// known, if given, must agree with the triangles; it spares matching those edges.
 Carving carveDomain(const std::vector<Point>& points, const std::vector<Triangle>& triangles,
-  const std::vector<Segment>& constrained, bool removeExterior, const std::vector<Point>& holes);
+  const std::vector<Segment>& constrained, bool removeExterior, const std::vector<Point>& holes,
+  const KnownAdjacency* known = nullptr);
 
 /// Convex hull of the points, counter-clockwise, without collinear vertices.
 std::vector<int> convexHull(const std::vector<Point>& points);

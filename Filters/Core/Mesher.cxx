@@ -375,8 +375,9 @@ void Mesher::meshRounds(Work& w)
 
     t = Clock::now();
     run.phase("domain", 0.9, 1.0);
-    const Carving carve =
-      carveDomain(g.points, c.triangles, c.constrainedEdges, domain != Domain::Box, w.holes);
+    const Carving carve = carveDomain(g.points, c.triangles, c.constrainedEdges,
+      domain != Domain::Box, w.holes, &g.intactAdjacency);
+    g.intactAdjacency = KnownAdjacency();
     st.secondsDomain = since(t);
     if (!carve.unusedHoles.empty())
       res.warnings.push_back(std::to_string(carve.unusedHoles.size()) +

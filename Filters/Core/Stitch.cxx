@@ -391,28 +391,45 @@ bool tooClose(const Point& p, const Point& q, double edgeLength)
   return dist2(p, q) <= tolerance * tolerance;
 }
 
-/// Lists the overlay triangles with no crossed edge in intact (they are faces
-/// of the stitched graph as they are) and returns, per overlay edge, the sides
-/// on which a face must still be traced: those of the other triangles. The
-/// box's outside is never traced.
-std::vector<std::uint8_t> openSides(
-  const OverlayEdges& ov, const std::vector<char>& crossed, std::vector<Triangle>& intact)
+/// Lists the overlay triangles with no crossed edge in g.intact (they are
+/// faces of the stitched graph as they are), with their adjacency among
+/// themselves, and returns, per overlay edge, the sides on which a face must
+/// still be traced: those of the other triangles. The box's outside is never
+/// traced.
+std::vector<std::uint8_t> listIntact(const OverlayEdges& ov, const std::vector<char>& crossed,
+  const std::vector<char>& alongInput, PlanarGraph& g)
 {
-  auto isIntact = [&](std::size_t c) {
-    const std::array<int, 3>& e = ov.triEdge[c];
-    return !crossed[e[0]] && !crossed[e[1]] && !crossed[e[2]];
-  };
-  std::size_t count = 0;
+  std::vector<int> intactIndex(ov.tris.size(), -1);
+  int count = 0;
   for (std::size_t c = 0; c < ov.tris.size(); ++c)
-    count += isIntact(c);
-  intact.reserve(count);
+  {
+    const std::array<int, 3>& e = ov.triEdge[c];
+    if (!crossed[e[0]] && !crossed[e[1]] && !crossed[e[2]])
+      intactIndex[c] = count++;
+  }
+  g.intact.reserve(count);
+  KnownAdjacency& known = g.intactAdjacency;
+  known.nbr.reserve(count);
+  known.constrained.reserve(count);
   std::vector<std::uint8_t> open(ov.edges.size(), 0);
   for (std::size_t c = 0; c < ov.tris.size(); ++c)
   {
     const std::array<int, 3>& e = ov.triEdge[c];
-    if (isIntact(c))
+    if (intactIndex[c] >= 0)
     {
-      intact.push_back(ov.tris[c]);
+      g.intact.push_back(ov.tris[c]);
+      std::array<int, 3> nbr;
+      std::uint8_t constrained = 0;
+      for (int i = 0; i < 3; ++i)
+      {
+        const int u = ov.nbr[c][i];
+        nbr[i] = u < 0          ? -1
+          : intactIndex[u] >= 0 ? intactIndex[u]
+                                : KnownAdjacency::kUnknownNeighbour;
+        constrained |= alongInput[e[i]] << i;
+      }
+      known.nbr.push_back(nbr);
+      known.constrained.push_back(constrained);
       continue;
     }
     // A counter-clockwise triangle lies left of its edge i taken from vertex i+1 to i+2.
@@ -452,7 +469,7 @@ PlanarGraph stitch(const OverlayEdges& ov, const Overlay& overlay, const Walk& w
   for (const Piece& p : walk.pieces)
     if (p.overlayEdge >= 0 && !p.duplicate)
       alongInput[p.overlayEdge] = 1;
-  const std::vector<std::uint8_t> open = openSides(ov, crossed, g.intact);
+  const std::vector<std::uint8_t> open = listIntact(ov, crossed, alongInput, g);
 
   // Kept crossed edges: one stitch vertex per crossing, in order along the edge.
   std::vector<int> start;

@@ -10,6 +10,7 @@
 #ifndef osm_Stitch_h
 #define osm_Stitch_h
 
+#include "Domain.h"
 #include "Mesher.h"
 #include "Overlay.h"
 #include "RunContext.h"
@@ -89,7 +90,8 @@ struct PlanarGraph
 {
   std::vector<Point> points;
   std::vector<VertexOrigin> origin;
-  std::vector<Triangle> intact; ///< overlay triangles that no segment crosses
+  std::vector<Triangle> intact;   ///< overlay triangles that no segment crosses
+  KnownAdjacency intactAdjacency; ///< their neighbours among them, for carveDomain
   std::vector<Segment> edges;
   std::vector<char> constrained;       ///< per edge: part of an input segment
   std::vector<std::uint8_t> openSides; ///< per edge: OpenSide bits, 0 if only constrained

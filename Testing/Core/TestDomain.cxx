@@ -1,0 +1,128 @@
+// carveDomain with adjacency known in advance (the mesher passes that of the
+// overlay triangles no segment crosses) must carve exactly as without it.
+#include "Domain.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+#include <random>
+#include <set>
+
+using namespace osm;
+
+namespace
+{
+
+/// An n x n grid of unit squares, each cut into two counter-clockwise triangles.
+struct Grid
+{
+  int n = 0;
+  std::vector<Point> points;
+  std::vector<Triangle> tris;
+
+  explicit Grid(int n)
+    : n(n)
+  {
+    for (int y = 0; y <= n; ++y)
+      for (int x = 0; x <= n; ++x)
+        points.push_back({ double(x), double(y) });
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x)
+      {
+        const int a = id(x, y), b = id(x + 1, y), c = id(x + 1, y + 1), d = id(x, y + 1);
+        tris.push_back({ a, b, c });
+        tris.push_back({ a, c, d });
+      }
+  }
+  int id(int x, int y) const { return y * (n + 1) + x; }
+};
+
+/// The boundary of the square [x0, x1] x [y0, y1] as constrained (lo, hi) pairs.
+void addLoop(const Grid& g, int x0, int y0, int x1, int y1, std::vector<Segment>& out)
+{
+  auto add = [&](int a, int b) { out.push_back({ std::min(a, b), std::max(a, b) }); };
+  for (int x = x0; x < x1; ++x)
+  {
+    add(g.id(x, y0), g.id(x + 1, y0));
+    add(g.id(x, y1), g.id(x + 1, y1));
+  }
+  for (int y = y0; y < y1; ++y)
+  {
+    add(g.id(x0, y), g.id(x0, y + 1));
+    add(g.id(x1, y), g.id(x1, y + 1));
+  }
+}
+
+/// The true adjacency of the first count triangles, some edges left unknown.
+KnownAdjacency knownFor(const std::vector<Triangle>& tris, const std::vector<Segment>& constrained,
+  int count, std::mt19937& rng)
+{
+  const unsigned salt = rng() % 4;
+  std::map<std::pair<int, int>, std::vector<int>> byEdge;
+  auto key = [](int a, int b) { return std::make_pair(std::min(a, b), std::max(a, b)); };
+  for (int t = 0; t < static_cast<int>(tris.size()); ++t)
+    for (int i = 0; i < 3; ++i)
+      byEdge[key(tris[t][(i + 1) % 3], tris[t][(i + 2) % 3])].push_back(t);
+  std::set<std::pair<int, int>> isConstrained;
+  for (const Segment& s : constrained)
+    isConstrained.insert(key(s[0], s[1]));
+  KnownAdjacency known;
+  for (int t = 0; t < count; ++t)
+  {
+    std::array<int, 3> nbr{};
+    std::uint8_t bits = 0;
+    for (int i = 0; i < 3; ++i)
+    {
+      const auto k = key(tris[t][(i + 1) % 3], tris[t][(i + 2) % 3]);
+      const std::vector<int>& both = byEdge[k];
+      const int other = both.size() < 2 ? -1 : both[0] == t ? both[1] : both[0];
+      // Unknown on both sides or neither: an edge is matched only if both sides are.
+      const bool unknown = other >= count || (k.first * 7 + k.second * 13 + salt) % 4 == 0;
+      nbr[i] = unknown ? KnownAdjacency::kUnknownNeighbour : other;
+      bits |= static_cast<std::uint8_t>(isConstrained.count(k) << i);
+    }
+    known.nbr.push_back(nbr);
+    known.constrained.push_back(bits);
+  }
+  return known;
+}
+
+} // namespace
+
+TEST(Domain, KnownAdjacencyCarvesAsMatchingDoes)
+{
+  const Grid g(12);
+  std::vector<Segment> constrained;
+  addLoop(g, 2, 2, 9, 9, constrained);
+  addLoop(g, 4, 4, 6, 6, constrained);
+  const std::vector<Point> holes{ { 5.25, 5.5 }, { 30, 30 } };
+  std::mt19937 rng(7);
+  for (const bool removeExterior : { false, true })
+    for (const int count : { 0, 1, 60, 144, 288 })
+    {
+      const Carving plain = carveDomain(g.points, g.tris, constrained, removeExterior, holes);
+      const KnownAdjacency known = knownFor(g.tris, constrained, count, rng);
+      const Carving hinted =
+        carveDomain(g.points, g.tris, constrained, removeExterior, holes, &known);
+      EXPECT_EQ(hinted.regionId, plain.regionId) << count << " known, " << removeExterior;
+      EXPECT_EQ(hinted.regions, plain.regions);
+      EXPECT_EQ(hinted.unusedHoles, plain.unusedHoles);
+      EXPECT_EQ(plain.regions, removeExterior ? 1u : 2u); // the ring; the hole removes the core
+      EXPECT_EQ(plain.unusedHoles, std::vector<int>{ 1 });
+    }
+}
+
+TEST(Domain, KnownAdjacencyIsUsed)
+{
+  // Known adjacency is trusted, not rechecked: a corner triangle declared
+  // without neighbours is a region of its own, which matching would not give.
+  const Grid g(4);
+  EXPECT_EQ(carveDomain(g.points, g.tris, {}, false, {}).regions, 1u);
+  KnownAdjacency known;
+  known.nbr = { { -1, -1, -1 } };
+  known.constrained = { 0 };
+  const Carving split = carveDomain(g.points, g.tris, {}, false, {}, &known);
+  EXPECT_EQ(split.regions, 2u);
+  EXPECT_NE(split.regionId[0], split.regionId[1]);
+}
