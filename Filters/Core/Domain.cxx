@@ -246,10 +246,39 @@ Carving carveDomain(const std::vector<Point>& P, const std::vector<Triangle>& tr
   return out;
 }
 
+namespace
+{
+
+/// The points that may be hull vertices: all but those strictly inside the
+/// quadrilateral of the extreme points in x and y (Akl and Toussaint), which
+/// for most inputs leaves few to sort.
+std::vector<int> hullCandidates(const std::vector<Point>& P)
+{
+  std::array<int, 4> extreme{ 0, 0, 0, 0 }; // min x, min y, max x, max y: counter-clockwise
+  for (int i = 1; i < static_cast<int>(P.size()); ++i)
+  {
+    extreme[0] = P[i].x < P[extreme[0]].x ? i : extreme[0];
+    extreme[1] = P[i].y < P[extreme[1]].y ? i : extreme[1];
+    extreme[2] = P[i].x > P[extreme[2]].x ? i : extreme[2];
+    extreme[3] = P[i].y > P[extreme[3]].y ? i : extreme[3];
+  }
+  std::vector<int> out;
+  for (int i = 0; i < static_cast<int>(P.size()); ++i)
+  {
+    bool inside = true;
+    for (int k = 0; k < 4 && inside; ++k)
+      inside = orient2d(P[extreme[k]], P[extreme[(k + 1) % 4]], P[i]) > 0;
+    if (!inside)
+      out.push_back(i);
+  }
+  return out;
+}
+
+} // namespace
+
 std::vector<int> convexHull(const std::vector<Point>& P)
 {
-  std::vector<int> order(P.size());
-  std::iota(order.begin(), order.end(), 0);
+  std::vector<int> order = hullCandidates(P);
   std::sort(order.begin(), order.end(), [&](int a, int b) { return P[a] < P[b]; });
   if (order.size() < 3)
     return order;

@@ -1,6 +1,7 @@
 // carveDomain with adjacency known in advance (the mesher passes that of the
 // overlay triangles no segment crosses) must carve exactly as without it.
 #include "Domain.h"
+#include "Predicates.h"
 
 #include <gtest/gtest.h>
 
@@ -125,4 +126,60 @@ TEST(Domain, KnownAdjacencyIsUsed)
   const Carving split = carveDomain(g.points, g.tris, {}, false, {}, &known);
   EXPECT_EQ(split.regions, 2u);
   EXPECT_NE(split.regionId[0], split.regionId[1]);
+}
+
+namespace
+{
+
+/// Gift wrapping, independent of convexHull: the strictly convex hull vertices
+/// counter-clockwise from the smallest point (x, then y).
+std::vector<int> giftWrap(const std::vector<Point>& P)
+{
+  const int n = static_cast<int>(P.size());
+  const int first = static_cast<int>(std::min_element(P.begin(), P.end()) - P.begin());
+  std::vector<int> hull;
+  int p = first;
+  do
+  {
+    hull.push_back(p);
+    int q = p == 0 ? 1 : 0;
+    for (int r = 0; r < n; ++r)
+    {
+      if (P[r] == P[p])
+        continue;
+      const double o = orient2d(P[p], P[q], P[r]);
+      // r right of p->q, or on it and farther: r replaces q.
+      if (P[q] == P[p] || o < 0 || (o == 0 && dist2(P[p], P[r]) > dist2(P[p], P[q])))
+        q = r;
+    }
+    p = q;
+  } while (p != first && hull.size() <= P.size());
+  return hull;
+}
+
+} // namespace
+
+TEST(Domain, ConvexHullMatchesGiftWrapping)
+{
+  std::mt19937 rng(11);
+  for (int trial = 0; trial < 200; ++trial)
+  {
+    // Points on a small grid (many collinear and duplicate ones) or in a disc.
+    const int n = 3 + static_cast<int>(rng() % 200);
+    const bool grid = trial % 2 == 0;
+    std::vector<Point> P;
+    std::uniform_real_distribution<double> U(-1, 1);
+    while (static_cast<int>(P.size()) < n)
+    {
+      const Point q =
+        grid ? Point{ double(rng() % 7), double(rng() % 5) } : Point{ U(rng), U(rng) };
+      if (grid || q.x * q.x + q.y * q.y <= 1)
+        P.push_back(q);
+    }
+    const std::vector<int> hull = convexHull(P);
+    const std::vector<int> reference = giftWrap(P);
+    ASSERT_EQ(hull.size(), reference.size()) << "trial " << trial;
+    for (std::size_t k = 0; k < hull.size(); ++k)
+      EXPECT_EQ(P[hull[k]], P[reference[k]]) << "trial " << trial << ", vertex " << k;
+  }
 }
