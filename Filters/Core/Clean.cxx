@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <numeric>
 #include <unordered_map>
 
 namespace osm
@@ -32,16 +31,24 @@ std::string checkFinite(const std::vector<Point>& pts, const char* what)
 /// For each point, the first point (in input order) equal to it.
 std::vector<int> exactRepresentatives(const std::vector<Point>& pts)
 {
+  // Sorting the points with their indices, not indices alone, keeps the
+  // comparisons in cache.
+  struct Indexed
+  {
+    Point p;
+    int i;
+  };
   const std::size_t n = pts.size();
-  std::vector<int> order(n);
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(),
-    [&](int a, int b) { return pts[a] < pts[b] || (pts[a] == pts[b] && a < b); });
+  std::vector<Indexed> sorted(n);
+  for (std::size_t k = 0; k < n; ++k)
+    sorted[k] = { pts[k], static_cast<int>(k) };
+  std::sort(sorted.begin(), sorted.end(),
+    [](const Indexed& a, const Indexed& b) { return a.p < b.p || (a.p == b.p && a.i < b.i); });
   std::vector<int> representative(n);
   for (std::size_t k = 0; k < n; ++k)
   {
-    const bool same = k > 0 && pts[order[k]] == pts[order[k - 1]];
-    representative[order[k]] = same ? representative[order[k - 1]] : order[k];
+    const bool same = k > 0 && sorted[k].p == sorted[k - 1].p;
+    representative[sorted[k].i] = same ? representative[sorted[k - 1].i] : sorted[k].i;
   }
   return representative;
 }
