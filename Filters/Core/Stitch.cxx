@@ -46,14 +46,15 @@ OverlayEdges compactOverlay(const Triangulation& mesh)
     {
       const int u = mesh.tn[3 * t + i];
       ov.nbr[c][i] = u < 0 ? -1 : index[u];
-      ov.vtri[ov.tris[c][i]] = c;
     }
   }
-  // Each edge gets its id from the triangle with the smaller index.
+  // Each edge gets its id from the triangle with the smaller index. In this
+  // order, near in space, vtri is written near in memory too.
   for (int c = 0; c < static_cast<int>(ov.tris.size()); ++c)
   {
     for (int i = 0; i < 3; ++i)
     {
+      ov.vtri[ov.tris[c][i]] = c;
       const int u = ov.nbr[c][i];
       if (u >= 0 && u < c)
         continue;
