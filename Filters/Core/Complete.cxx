@@ -6,6 +6,7 @@
 #include <array>
 #include <limits>
 #include <string>
+#include <utility>
 
 namespace osm
 {
@@ -126,8 +127,8 @@ struct Rotation
 {
   std::vector<int> start;
   std::vector<int> to;
-  std::vector<int> twin;  ///< half-edge v->u for half-edge u->v
-  std::vector<char> open; ///< its face (on its left) is still to be triangulated
+  std::vector<int> twin;    ///< half-edge v->u for half-edge u->v
+  std::vector<char> closed; ///< its face (on its left) is intact or outside: not traced
 };
 
 bool upperHalf(const Point& c, const Point& p)
@@ -176,14 +177,14 @@ Rotation buildRotation(const PlanarGraph& g)
   }
   r.to.resize(half.size());
   r.twin.assign(half.size(), -1);
-  r.open.resize(half.size());
+  r.closed.resize(half.size());
   std::vector<int> firstHalf(g.edges.size(), -1);
   for (int h = 0; h < static_cast<int>(half.size()); ++h)
   {
     r.to[h] = half[h][0];
     const int e = half[h][1];
     // A half-edge's face is on its left: the edge's left side if it runs forward.
-    r.open[h] = g.openSides[e] & (g.edges[e][1] == half[h][0] ? OpenLeft : OpenRight);
+    r.closed[h] = !(g.openSides[e] & (g.edges[e][1] == half[h][0] ? OpenLeft : OpenRight));
     int& first = firstHalf[half[h][1]];
     if (first < 0)
       first = h;
@@ -210,7 +211,7 @@ Completion complete(PlanarGraph& g, Statistics& stats, RunContext& run)
   out.triangles = std::move(g.intact);
   if (!out.triangles.empty())
     stats.largestFace = std::max<std::size_t>(stats.largestFace, 3);
-  const Rotation r = buildRotation(g);
+  Rotation r = buildRotation(g);
   const int nh = static_cast<int>(r.to.size());
   for (std::size_t e = 0; e < g.edges.size(); ++e)
     if (g.constrained[e])
@@ -219,9 +220,7 @@ Completion complete(PlanarGraph& g, Statistics& stats, RunContext& run)
   // Trace every open face: after u->v, turn to the edge clockwise-next from
   // v->u. Half-edges of intact triangles and of the box's outside start seen.
   // Faces are stored flat (faceStart, faceVertices) to avoid an allocation each.
-  std::vector<char> seen(nh);
-  for (int h = 0; h < nh; ++h)
-    seen[h] = !r.open[h];
+  std::vector<char> seen = std::move(r.closed);
   std::vector<int> faceStart{ 0 }, faceVertices;
   faceVertices.reserve(nh);
   for (int h0 = 0; h0 < nh; ++h0)
