@@ -107,7 +107,6 @@ private:
 
   void makeBox();
   void enqueueIfNeeded(int t);
-  bool isPoor(int t) const;
   void refineTriangle(int t);
   void splitHullEdge(int edge);
   /// cavityKnown: cavity and waiting already hold p's cavity and its points.
@@ -128,9 +127,17 @@ private:
 
   Overlay out;
   Triangulation& mesh = out.mesh;
-  std::vector<int> bucketHead;    ///< per triangle slot: first waiting input point
-  std::vector<int> bucketNext;    ///< per input point: next in its bucket
-  std::vector<std::uint32_t> gen; ///< per triangle slot: bumped on every reuse
+  /// Per triangle slot, side by side: a new triangle touches both.
+  struct Slot
+  {
+    int bucket = -1;       ///< first waiting input point
+    std::uint32_t gen = 0; ///< bumped on every reuse of the slot
+  };
+  std::vector<Slot> slot;
+  std::vector<int> bucketNext; ///< per input point: next in its bucket
+  /// Per input point (in Hilbert order, near in memory as insertion proceeds):
+  /// its mesh vertex; out.inputVertex gets it in the caller's order at the end.
+  std::vector<int> vertexOf;
   SizeQueue<Item> queue;
   std::size_t inserted = 0;
   std::size_t hardCap = 0;
@@ -156,53 +163,47 @@ void Refiner::makeBox()
   const int t0 = mesh.newTriangle(c0, c1, c2);
   const int t1 = mesh.newTriangle(c0, c2, c3);
   mesh.link(t0, t1);
-  gen.assign(2, 1);
-  bucketHead.assign(2, -1);
+  slot.assign(2, Slot{ -1, 1 });
   bucketNext.assign(input.size(), -1);
   // Walk in reverse so buckets list points in (Hilbert) index order.
   for (int i = static_cast<int>(input.size()) - 1; i >= 0; --i)
   {
     const int t = orient2d(mesh.points[c0], mesh.points[c2], input[i]) <= 0 ? t0 : t1;
-    bucketNext[i] = bucketHead[t];
-    bucketHead[t] = i;
+    bucketNext[i] = slot[t].bucket;
+    slot[t].bucket = i;
   }
-}
-
-bool Refiner::isPoor(int t) const
-{
-  const Point& a = mesh.vertex(t, 0);
-  const Point& b = mesh.vertex(t, 1);
-  const Point& c = mesh.vertex(t, 2);
-  double ux = b.x - a.x, uy = b.y - a.y, vx = c.x - a.x, vy = c.y - a.y;
-  double la = dist2(b, c), lb = vx * vx + vy * vy, lc = ux * ux + uy * uy;
-  if (maxEdge2 > 0 && std::max({ la, lb, lc }) > maxEdge2)
-    return true;
-  // The ratio test has degree 6: rescale the edge vectors so that tiny (or huge)
-  // triangles neither underflow nor overflow.
-  const double s = 1.0 / std::max({ std::fabs(ux), std::fabs(uy), std::fabs(vx), std::fabs(vy) });
-  ux *= s, uy *= s, vx *= s, vy *= s;
-  la = (vx - ux) * (vx - ux) + (vy - uy) * (vy - uy);
-  lb = vx * vx + vy * vy;
-  lc = ux * ux + uy * uy;
-  const double lmin = std::min({ la, lb, lc });
-  const double cross = ux * vy - uy * vx;
-  // r² = la·lb·lc / (4·area)² with 2·area = cross; compare without dividing.
-  return la * lb * lc > gamma2 * lmin * cross * cross * 4.0 || cross == 0;
 }
 
 void Refiner::enqueueIfNeeded(int t)
 {
-  if (bucketHead[t] < 0 && !isPoor(t))
-    return;
   const Point& a = mesh.vertex(t, 0);
-  const Point c = circumcenter(a, mesh.vertex(t, 1), mesh.vertex(t, 2));
-  queue.push(dist2(a, c), { t, gen[t] });
+  const Point& b = mesh.vertex(t, 1);
+  const Point& c = mesh.vertex(t, 2);
+  // One circumcenter serves the quality test, r / shortest edge > Γ, and the
+  // queue key. A degenerate triangle has an infinite or NaN radius: it counts
+  // as poor, and refineTriangle skips it.
+  const Point o = circumcenterOffset(a, b, c);
+  if (slot[t].bucket < 0)
+  {
+    const double la = dist2(b, c), lb = dist2(a, c), lc = dist2(a, b);
+    const bool tooLong = maxEdge2 > 0 && std::max({ la, lb, lc }) > maxEdge2;
+    if (!tooLong && o.x * o.x + o.y * o.y <= gamma2 * std::min({ la, lb, lc }))
+      return;
+  }
+  // The key as refineTriangle computes the radius (only its size class counts).
+  queue.push(dist2(a, Point{ a.x + o.x, a.y + o.y }), { t, slot[t].gen });
 }
 
 Overlay Refiner::refine()
 {
+  // Most inputs need 2 to 17 overlay vertices per input point (random ones
+  // about 5): reserve for 6, so typical runs never copy the growing arrays.
+  const std::size_t expected = 6 * input.size() + 64;
+  mesh.reserve(expected, 2 * expected);
+  out.isInput.reserve(expected);
+  slot.reserve(2 * expected);
   makeBox();
-  out.inputVertex.assign(input.size(), -1);
+  vertexOf.assign(input.size(), -1);
   // Overlay size is O(n log(L/s)); doubles bound log(L/s), so this cap only
   // catches a numerical runaway, turning a hang into a clear error.
   hardCap = 1000 * input.size() + 1000000;
@@ -214,18 +215,23 @@ Overlay Refiner::refine()
     // A triangle of the same generation is unchanged since it was queued
     // (refining empties a bucket only by destroying its triangle), so it is
     // still poor or crowded: no need to test it again.
-    if (!mesh.alive(item.tri) || gen[item.tri] != item.gen)
+    if (!mesh.alive(item.tri) || slot[item.tri].gen != item.gen)
       continue;
     const std::size_t before = mesh.points.size();
     refineTriangle(item.tri);
     // Yielding or splitting the box may leave this triangle standing: retry it.
-    if (mesh.points.size() > before && mesh.alive(item.tri) && gen[item.tri] == item.gen)
+    if (mesh.points.size() > before && mesh.alive(item.tri) && slot[item.tri].gen == item.gen)
       enqueueIfNeeded(item.tri);
     run.tick(input.empty() ? 1.0 : double(inserted) / double(input.size()));
   }
+  out.inputVertex.assign(input.size(), -1);
   for (std::size_t i = 0; i < input.size(); ++i)
-    if (out.inputVertex[i] < 0)
-      throw Stop{ "internal error: input point " + std::to_string(i) + " was not inserted" };
+  {
+    if (vertexOf[i] < 0)
+      throw Stop{ "internal error: input point " + std::to_string(original[i]) +
+        " was not inserted" };
+    out.inputVertex[original[i]] = vertexOf[i];
+  }
   renumberAlongHilbertCurve(out);
   return std::move(out);
 }
@@ -292,7 +298,7 @@ void Refiner::refineTriangle(int t)
   waiting.clear();
   for (int u : cavity.triangles)
   {
-    for (int i = bucketHead[u]; i >= 0; i = bucketNext[i])
+    for (int i = slot[u].bucket; i >= 0; i = bucketNext[i])
     {
       waiting.push_back(i);
       const double d2 = dist2(input[i], c);
@@ -338,7 +344,7 @@ bool Refiner::insertVertex(const Point& p, int start, int inputIndex, bool cavit
     waiting.clear();
     for (int u : cavity.triangles)
     {
-      for (int i = bucketHead[u]; i >= 0; i = bucketNext[i])
+      for (int i = slot[u].bucket; i >= 0; i = bucketNext[i])
         if (i != inputIndex)
           waiting.push_back(i);
     }
@@ -352,23 +358,19 @@ bool Refiner::insertVertex(const Point& p, int start, int inputIndex, bool cavit
   }
   for (int u : cavity.triangles)
     if (!mesh.alive(u))
-      bucketHead[u] = -1;
+      slot[u].bucket = -1;
   out.isInput.push_back(inputIndex >= 0 ? 1 : 0);
   if (inputIndex >= 0)
   {
-    out.inputVertex[original[inputIndex]] = v;
+    vertexOf[inputIndex] = v;
     ++inserted;
   }
-  if (gen.size() < static_cast<std::size_t>(mesh.slots()))
-  {
-    // Grow ahead (slots not yet in use stay unread), not at every new slot.
-    gen.resize(2 * mesh.slots(), 0);
-    bucketHead.resize(2 * mesh.slots(), -1);
-  }
+  if (slot.size() < static_cast<std::size_t>(mesh.slots()))
+    slot.resize(mesh.slots() + 4096); // ahead, not at every new slot
   for (int u : created)
   {
-    ++gen[u];
-    bucketHead[u] = -1;
+    ++slot[u].gen;
+    slot[u].bucket = -1;
   }
   distribute(v, created);
   for (int u : created)
@@ -412,8 +414,8 @@ void Refiner::distribute(int v, const std::vector<int>& fan)
     if (u < 0)
       throw Stop{ "internal error: lost input point " + std::to_string(original[i]) +
         " during refinement" };
-    bucketNext[i] = bucketHead[u];
-    bucketHead[u] = i;
+    bucketNext[i] = slot[u].bucket;
+    slot[u].bucket = i;
   }
 }
 

@@ -42,6 +42,15 @@ int Triangulation::newTriangle(int a, int b, int c)
   return t;
 }
 
+void Triangulation::reserve(std::size_t pointCount, std::size_t triangleCount)
+{
+  points.reserve(pointCount);
+  vtri.reserve(pointCount);
+  tv.reserve(3 * triangleCount);
+  tn.reserve(3 * triangleCount);
+  mark.reserve(triangleCount);
+}
+
 void Triangulation::releaseTriangles()
 {
   std::vector<int>().swap(tv);
@@ -231,12 +240,12 @@ bool Triangulation::insertIntoCavity(int v, const Cavity& cavity, std::vector<in
   return true;
 }
 
-Point circumcenter(const Point& a, const Point& b, const Point& c)
+Point circumcenterOffset(const Point& a, const Point& b, const Point& c)
 {
   const double bx = b.x - a.x, by = b.y - a.y, cx = c.x - a.x, cy = c.y - a.y;
   const double b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
   const double d = 2.0 * (bx * cy - by * cx);
-  return { a.x + (cy * b2 - by * c2) / d, a.y + (bx * c2 - cx * b2) / d };
+  return { (cy * b2 - by * c2) / d, (bx * c2 - cx * b2) / d };
 }
 
 } // namespace osm

@@ -28,6 +28,10 @@ public:
   bool alive(int t) const { return tv[3 * t] >= 0; }
   int slots() const { return static_cast<int>(tv.size() / 3); }
   int liveTriangles() const { return slots() - static_cast<int>(freeSlots.size()); }
+  /// Room for this many points and triangle slots. Untouched capacity costs
+  /// only address space; growing by doubling instead touches (page faults)
+  /// and copies about twice the final size.
+  void reserve(std::size_t pointCount, std::size_t triangleCount);
   /// Drops every triangle and gives its memory back, keeping the points.
   void releaseTriangles();
   const Point& vertex(int t, int i) const { return points[tv[3 * t + i]]; }
@@ -76,8 +80,16 @@ private:
   std::vector<int> fanByVertex;
 };
 
+/// Circumcenter of triangle (a, b, c) minus a: accurate even for a tiny
+/// triangle far from the origin, where adding a back rounds it away.
+Point circumcenterOffset(const Point& a, const Point& b, const Point& c);
+
 /// Circumcenter of triangle (a, b, c), computed relative to a for accuracy.
-Point circumcenter(const Point& a, const Point& b, const Point& c);
+inline Point circumcenter(const Point& a, const Point& b, const Point& c)
+{
+  const Point o = circumcenterOffset(a, b, c);
+  return { a.x + o.x, a.y + o.y };
+}
 
 } // namespace osm
 
