@@ -447,6 +447,11 @@ void Mesher::buildOutput(const Work& w, const PlanarGraph& g, const Completion& 
     return u;
   };
   std::vector<int> newIndex(g.points.size(), -1);
+  // Upper bounds: room never touched costs nothing, growing copies.
+  res.mesh.vertices.reserve(g.points.size());
+  res.vertexOrigin.reserve(g.points.size());
+  res.mesh.triangles.reserve(c.triangles.size());
+  res.regionId.reserve(c.triangles.size());
   for (std::size_t t = 0; t < c.triangles.size(); ++t)
   {
     if (carve.regionId[t] < 0)

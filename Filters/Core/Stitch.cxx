@@ -37,6 +37,7 @@ OverlayEdges compactOverlay(const Triangulation& mesh)
   ov.nbr.resize(ov.tris.size());
   ov.triEdge.resize(ov.tris.size());
   ov.vtri.assign(mesh.points.size(), -1);
+  std::size_t hullEdges = 0;
   for (int t = 0; t < mesh.slots(); ++t)
   {
     const int c = index[t];
@@ -46,8 +47,10 @@ OverlayEdges compactOverlay(const Triangulation& mesh)
     {
       const int u = mesh.tn[3 * t + i];
       ov.nbr[c][i] = u < 0 ? -1 : index[u];
+      hullEdges += u < 0;
     }
   }
+  ov.edges.reserve((3 * ov.tris.size() + hullEdges) / 2);
   // Each edge gets its id from the triangle with the smaller index. In this
   // order, near in space, vtri is written near in memory too.
   for (int c = 0; c < static_cast<int>(ov.tris.size()); ++c)
@@ -398,7 +401,7 @@ bool tooClose(const Point& p, const Point& q, double edgeLength)
 /// still be traced: those of the other triangles. The box's outside is never
 /// traced.
 std::vector<std::uint8_t> listIntact(const OverlayEdges& ov, const std::vector<char>& crossed,
-  const std::vector<char>& alongInput, PlanarGraph& g)
+  const std::vector<char>& alongInput, const Walk& walk, PlanarGraph& g)
 {
   std::vector<int> intactIndex(ov.tris.size(), -1);
   int count = 0;
@@ -408,7 +411,12 @@ std::vector<std::uint8_t> listIntact(const OverlayEdges& ov, const std::vector<c
     if (!crossed[e[0]] && !crossed[e[1]] && !crossed[e[2]])
       intactIndex[c] = count++;
   }
-  g.intact.reserve(count);
+  // Completion appends its triangles to these: fewer than the half-edges it
+  // traces, which are the sides of the other triangles' edges (split once per
+  // crossing) and of the input subsegments (split at crossings too). Room for
+  // them now spares a copy of the whole list then.
+  const std::size_t others = ov.tris.size() - count;
+  g.intact.reserve(count + 3 * others + 4 * walk.crossings.size() + 2 * walk.pieces.size());
   KnownAdjacency& known = g.intactAdjacency;
   known.nbr.reserve(count);
   known.constrained.reserve(count);
@@ -446,8 +454,18 @@ PlanarGraph stitch(const OverlayEdges& ov, const Overlay& overlay, const Walk& w
   std::vector<Edge>* inspect, Statistics& stats)
 {
   PlanarGraph g;
-  g.points = overlay.mesh.points;
+  // Each crossing may add a stitch vertex, and each overlay edge, crossing
+  // and piece at most two edges: reserve so that appending never copies.
+  const std::size_t ne = ov.edges.size();
+  const std::size_t nc = walk.crossings.size();
+  g.points.reserve(overlay.mesh.points.size() + nc);
+  g.origin.reserve(overlay.mesh.points.size() + nc);
+  g.points.assign(overlay.mesh.points.begin(), overlay.mesh.points.end());
   g.origin.resize(g.points.size());
+  const std::size_t edgeBound = ne + 2 * nc + walk.pieces.size();
+  g.edges.reserve(edgeBound);
+  g.constrained.reserve(edgeBound);
+  g.openSides.reserve(edgeBound);
   for (std::size_t v = 0; v < g.points.size(); ++v)
     g.origin[v] = overlay.isInput[v] ? VertexOrigin::Input : VertexOrigin::Overlay;
   auto addEdge = [&](int a, int b, bool constrained, std::uint8_t open) {
@@ -456,7 +474,6 @@ PlanarGraph stitch(const OverlayEdges& ov, const Overlay& overlay, const Walk& w
     g.openSides.push_back(open);
   };
 
-  const std::size_t ne = ov.edges.size();
   std::vector<char> crossed(ne, 0), kept(ne, 0), alongInput(ne, 0);
   for (const Crossing& c : walk.crossings)
   {
@@ -470,7 +487,7 @@ PlanarGraph stitch(const OverlayEdges& ov, const Overlay& overlay, const Walk& w
   for (const Piece& p : walk.pieces)
     if (p.overlayEdge >= 0 && !p.duplicate)
       alongInput[p.overlayEdge] = 1;
-  const std::vector<std::uint8_t> open = listIntact(ov, crossed, alongInput, g);
+  const std::vector<std::uint8_t> open = listIntact(ov, crossed, alongInput, walk, g);
 
   // Kept crossed edges: one stitch vertex per crossing, in order along the edge.
   std::vector<int> start;
