@@ -58,8 +58,7 @@ void renumberAlongHilbertCurve(Overlay& overlay)
   if (n <= 4)
     return;
   // The box corners stay 0..3; the others follow the curve.
-  const std::vector<Point> inner(mesh.points.begin() + 4, mesh.points.end());
-  const std::vector<int> order = hilbertOrder(inner);
+  const std::vector<int> order = hilbertOrder(mesh.points.data() + 4, n - 4);
   std::vector<int> newIndex(n);
   for (int v = 0; v < 4; ++v)
     newIndex[v] = v;

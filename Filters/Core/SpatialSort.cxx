@@ -68,17 +68,23 @@ std::uint32_t hilbertKey(const HilbertTable& table, std::uint32_t x, std::uint32
 
 } // namespace
 
-std::vector<int> hilbertOrder(const std::vector<Point>& points)
+std::vector<int> hilbertOrder(const Point* points, std::size_t n)
 {
-  std::vector<int> order(points.size());
-  if (points.empty())
+  std::vector<int> order(n);
+  if (n == 0)
     return order;
-  const Bounds b = boundsOf(points);
+  struct Range
+  {
+    const Point *first, *last;
+    const Point* begin() const { return first; }
+    const Point* end() const { return last; }
+  };
+  const Bounds b = boundsOf(Range{ points, points + n });
   const double size = std::max(b.width(), b.height());
   const double scale = size > 0 ? 65535.0 / size : 0.0;
   static const HilbertTable table; // thread-safe initialisation, once
-  std::vector<std::uint32_t> keys(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i)
+  std::vector<std::uint32_t> keys(n);
+  for (std::size_t i = 0; i < n; ++i)
   {
     const auto x = static_cast<std::uint32_t>((points[i].x - b.lo.x) * scale);
     const auto y = static_cast<std::uint32_t>((points[i].y - b.lo.y) * scale);
@@ -87,9 +93,9 @@ std::vector<int> hilbertOrder(const std::vector<Point>& points)
   // Stable LSD radix sort of the indices by key: ties keep input order, as a
   // sort of (key, index) pairs would, in linear time. Small inputs take 8
   // bits a pass, so the counters cost nothing next to them.
-  const int bits = points.size() < 65536 ? 8 : 16;
+  const int bits = n < 65536 ? 8 : 16;
   const std::uint32_t mask = (1u << bits) - 1;
-  std::vector<int> from(points.size());
+  std::vector<int> from(n);
   for (std::size_t i = 0; i < from.size(); ++i)
     from[i] = static_cast<int>(i);
   std::vector<std::size_t> count(std::size_t(mask) + 2);

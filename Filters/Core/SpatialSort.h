@@ -11,8 +11,13 @@
 namespace osm
 {
 
-/// Indices of points in Hilbert-curve order (ties keep input order).
-std::vector<int> hilbertOrder(const std::vector<Point>& points);
+/// Indices of points[0..n) in Hilbert-curve order (ties keep input order).
+std::vector<int> hilbertOrder(const Point* points, std::size_t n);
+
+inline std::vector<int> hilbertOrder(const std::vector<Point>& points)
+{
+  return hilbertOrder(points.data(), points.size());
+}
 
 } // namespace osm
 

@@ -366,23 +366,20 @@ Walk walkSegments(const OverlayEdges& ov, const Overlay& overlay,
 namespace
 {
 
-/// Crossings grouped by overlay edge, each group sorted along its edge.
-std::vector<int> crossingsByEdge(const Walk& walk, std::size_t edgeCount, std::vector<int>& start)
+/// Crossings grouped by overlay edge in increasing edge order, each group
+/// sorted along its edge. A comparison sort of the crossings alone: a
+/// counting sort would need arrays over every overlay edge.
+std::vector<int> crossingsByEdge(const Walk& walk)
 {
-  start.assign(edgeCount + 1, 0);
-  for (const Crossing& c : walk.crossings)
-    ++start[c.edge + 1];
-  for (std::size_t e = 0; e < edgeCount; ++e)
-    start[e + 1] += start[e];
   std::vector<int> order(walk.crossings.size());
-  std::vector<int> fill(start.begin(), start.end() - 1);
-  for (int i = 0; i < static_cast<int>(walk.crossings.size()); ++i)
-    order[fill[walk.crossings[i].edge]++] = i;
-  for (std::size_t e = 0; e < edgeCount; ++e)
-    std::sort(order.begin() + start[e], order.begin() + start[e + 1], [&](int a, int b) {
-      return walk.crossings[a].s < walk.crossings[b].s ||
-        (walk.crossings[a].s == walk.crossings[b].s && a < b);
-    });
+  for (std::size_t i = 0; i < order.size(); ++i)
+    order[i] = static_cast<int>(i);
+  const std::vector<Crossing>& c = walk.crossings;
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    return c[a].edge != c[b].edge ? c[a].edge < c[b].edge
+      : c[a].s != c[b].s          ? c[a].s < c[b].s
+                                  : a < b;
+  });
   return order;
 }
 
@@ -490,11 +487,15 @@ PlanarGraph stitch(const OverlayEdges& ov, const Overlay& overlay, const Walk& w
   const std::vector<std::uint8_t> open = listIntact(ov, crossed, alongInput, walk, g);
 
   // Kept crossed edges: one stitch vertex per crossing, in order along the edge.
-  std::vector<int> start;
-  const std::vector<int> order = crossingsByEdge(walk, ne, start);
+  const std::vector<int> order = crossingsByEdge(walk);
+  std::size_t next = 0; // the first crossing, in order, of the edges still to come
   std::vector<int> stitchVertex(walk.crossings.size(), -1);
   for (std::size_t e = 0; e < ne; ++e)
   {
+    // This edge's crossings are order[first, next).
+    const std::size_t first = next;
+    while (next < order.size() && walk.crossings[order[next]].edge == static_cast<int>(e))
+      ++next;
     std::uint8_t flags = EdgeOverlay;
     if (!crossed[e])
     {
@@ -510,7 +511,7 @@ PlanarGraph stitch(const OverlayEdges& ov, const Overlay& overlay, const Walk& w
       ++stats.keptEdges;
       flags |= EdgeKept | EdgeCrossed;
       int prev = ov.edges[e][0];
-      for (int k = start[e]; k < start[e + 1]; ++k)
+      for (std::size_t k = first; k < next; ++k)
       {
         const Crossing& c = walk.crossings[order[k]];
         if (walk.pieces[c.piece].duplicate)
