@@ -250,24 +250,54 @@ namespace
 {
 
 /// The points that may be hull vertices: all but those strictly inside the
-/// quadrilateral of the extreme points in x and y (Akl and Toussaint), which
-/// for most inputs leaves few to sort.
+/// polygon of the extreme points in 8 directions (Akl and Toussaint), which
+/// for most inputs leaves few to sort. The extremes of x + y and x - y come
+/// from rounded sums; any points of the set in counter-clockwise order would
+/// do: a point strictly left of every edge of such a closed polygon is
+/// strictly inside the hull.
 std::vector<int> hullCandidates(const std::vector<Point>& P)
 {
-  std::array<int, 4> extreme{ 0, 0, 0, 0 }; // min x, min y, max x, max y: counter-clockwise
+  // Directions counter-clockwise from -x: -x, -x-y, -y, x-y, x, x+y, y, y-x.
+  const auto along = [&](int i, int k) {
+    const double x = P[i].x, y = P[i].y;
+    switch (k)
+    {
+      case 0:
+        return -x;
+      case 1:
+        return -x - y;
+      case 2:
+        return -y;
+      case 3:
+        return x - y;
+      case 4:
+        return x;
+      case 5:
+        return x + y;
+      case 6:
+        return y;
+      default:
+        return y - x;
+    }
+  };
+  std::array<int, 8> extreme{};
   for (int i = 1; i < static_cast<int>(P.size()); ++i)
-  {
-    extreme[0] = P[i].x < P[extreme[0]].x ? i : extreme[0];
-    extreme[1] = P[i].y < P[extreme[1]].y ? i : extreme[1];
-    extreme[2] = P[i].x > P[extreme[2]].x ? i : extreme[2];
-    extreme[3] = P[i].y > P[extreme[3]].y ? i : extreme[3];
-  }
+    for (int k = 0; k < 8; ++k)
+      extreme[k] = along(i, k) > along(extreme[k], k) ? i : extreme[k];
+  // A point extreme in consecutive directions would give an empty edge.
+  std::vector<int> polygon;
+  for (int k = 0; k < 8; ++k)
+    if (polygon.empty() || P[extreme[k]] != P[polygon.back()])
+      polygon.push_back(extreme[k]);
+  while (polygon.size() > 1 && P[polygon.back()] == P[polygon.front()])
+    polygon.pop_back();
+  const std::size_t m = polygon.size();
   std::vector<int> out;
   for (int i = 0; i < static_cast<int>(P.size()); ++i)
   {
-    bool inside = true;
-    for (int k = 0; k < 4 && inside; ++k)
-      inside = orient2d(P[extreme[k]], P[extreme[(k + 1) % 4]], P[i]) > 0;
+    bool inside = m >= 3;
+    for (std::size_t k = 0; k < m && inside; ++k)
+      inside = orient2d(P[polygon[k]], P[polygon[(k + 1) % m]], P[i]) > 0;
     if (!inside)
       out.push_back(i);
   }
