@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <new>
 #include <string>
 
 namespace osm
@@ -197,10 +198,16 @@ Overlay Refiner::refine()
 {
   // Most inputs need 2 to 17 overlay vertices per input point (random ones
   // about 5): reserve for 6, so typical runs never copy the growing arrays.
+  // Where address space is short (strict overcommit), just grow as needed.
   const std::size_t expected = 6 * input.size() + 64;
-  mesh.reserve(expected, 2 * expected);
-  out.isInput.reserve(expected);
-  slot.reserve(2 * expected);
+  try
+  {
+    mesh.reserve(expected, 2 * expected);
+    out.isInput.reserve(expected);
+    slot.reserve(2 * expected);
+  }
+  catch (const std::bad_alloc&)
+  {}
   makeBox();
   vertexOf.assign(input.size(), -1);
   // Overlay size is O(n log(L/s)); doubles bound log(L/s), so this cap only
