@@ -124,25 +124,42 @@ void flood(std::vector<int> stack, int label, const std::vector<int>& nbr,
   }
 }
 
-/// Finds the triangle under a point: a uniform grid of triangle bounding boxes,
-/// about one cell per triangle, so locating many hole seeds stays linear.
+/// Finds the triangle under a point among those still unlabelled: a uniform
+/// grid of their bounding boxes, about one cell per triangle, so locating many
+/// hole seeds stays linear. Labelled triangles (the exterior, removed first)
+/// are left out: they include the largest ones, where the box is padded, which
+/// would each cover a large share of the cells.
 class TriangleGrid
 {
 public:
-  TriangleGrid(const std::vector<Point>& P, const std::vector<Triangle>& tris)
+  TriangleGrid(
+    const std::vector<Point>& P, const std::vector<Triangle>& tris, const std::vector<int>& labels)
     : P(P)
     , tris(tris)
   {
-    // Every point is a triangle vertex: the completed overlay covers the box.
-    const Bounds b = boundsOf(P);
-    lo = b.lo;
-    hi = b.hi;
-    n = std::max(1, static_cast<int>(std::sqrt(static_cast<double>(tris.size()))));
+    std::vector<int> candidates;
+    for (int t = 0; t < static_cast<int>(tris.size()); ++t)
+      if (labels[t] == -1)
+        candidates.push_back(t);
+    if (candidates.empty())
+    {
+      lo = hi = Point{ 0, 0 };
+      start.assign(2, 0);
+      return;
+    }
+    lo = hi = P[tris[candidates.front()][0]];
+    for (int t : candidates)
+      for (int v : tris[t])
+      {
+        lo = { std::min(lo.x, P[v].x), std::min(lo.y, P[v].y) };
+        hi = { std::max(hi.x, P[v].x), std::max(hi.y, P[v].y) };
+      }
+    n = std::max(1, static_cast<int>(std::sqrt(static_cast<double>(candidates.size()))));
     start.assign(static_cast<std::size_t>(n) * n + 1, 0);
     for (int pass = 0; pass < 2; ++pass)
     {
       std::vector<int> fill(start.begin(), start.end() - 1);
-      for (int t = 0; t < static_cast<int>(tris.size()); ++t)
+      for (int t : candidates)
         forCells(t, [&](std::size_t c) {
           if (pass == 0)
             ++start[c + 1];
@@ -225,7 +242,7 @@ Carving carveDomain(const std::vector<Point>& P, const std::vector<Triangle>& tr
   Carving out;
   if (!holes.empty())
   {
-    const TriangleGrid grid(P, tris);
+    const TriangleGrid grid(P, tris, labels);
     for (std::size_t h = 0; h < holes.size(); ++h)
     {
       const int t = grid.find(holes[h], labels, -1);
