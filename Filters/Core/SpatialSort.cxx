@@ -20,7 +20,7 @@ struct HilbertStep
   std::uint32_t digit, state;
 };
 
-HilbertStep hilbertStep(std::uint32_t state, std::uint32_t bx, std::uint32_t by)
+constexpr HilbertStep hilbertStep(std::uint32_t state, std::uint32_t bx, std::uint32_t by)
 {
   const std::uint32_t swapped = state & 1u, complemented = state >> 1;
   const std::uint32_t rx = (swapped ? by : bx) ^ complemented;
@@ -30,11 +30,13 @@ HilbertStep hilbertStep(std::uint32_t state, std::uint32_t bx, std::uint32_t by)
 
 /// Four levels at once: for a state and 4 bits of x and of y, the 8 key bits
 /// and the next state. A key then costs 4 table lookups instead of 16 levels.
+/// Built at compile time: at run time it cost about 100,000 instructions per
+/// process, 2% of meshing a small input such as A.poly.
 struct HilbertTable
 {
   std::array<std::uint16_t, 4 * 256> entry{};
 
-  HilbertTable()
+  constexpr HilbertTable()
   {
     for (std::uint32_t state = 0; state < 4; ++state)
       for (std::uint32_t xs = 0; xs < 16; ++xs)
@@ -82,7 +84,7 @@ std::vector<int> hilbertOrder(const Point* points, std::size_t n)
   const Bounds b = boundsOf(Range{ points, points + n });
   const double size = std::max(b.width(), b.height());
   const double scale = size > 0 ? 65535.0 / size : 0.0;
-  static const HilbertTable table; // thread-safe initialisation, once
+  static constexpr HilbertTable table{};
   std::vector<std::uint32_t> keys(n);
   for (std::size_t i = 0; i < n; ++i)
   {
