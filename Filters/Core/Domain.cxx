@@ -274,33 +274,24 @@ namespace
 /// strictly inside the hull.
 std::vector<int> hullCandidates(const std::vector<Point>& P)
 {
-  // Directions counter-clockwise from -x: -x, -x-y, -y, x-y, x, x+y, y, y-x.
-  const auto along = [&](int i, int k) {
-    const double x = P[i].x, y = P[i].y;
-    switch (k)
-    {
-      case 0:
-        return -x;
-      case 1:
-        return -x - y;
-      case 2:
-        return -y;
-      case 3:
-        return x - y;
-      case 4:
-        return x;
-      case 5:
-        return x + y;
-      case 6:
-        return y;
-      default:
-        return y - x;
-    }
-  };
+  if (P.empty())
+    return {};
+  // Directions counter-clockwise from -x; the components are 0 or ±1, so
+  // each projection is the rounded sum of (at most) two exact terms.
+  constexpr std::array<std::array<double, 2>, 8> direction{ { { -1, 0 }, { -1, -1 }, { 0, -1 },
+    { 1, -1 }, { 1, 0 }, { 1, 1 }, { 0, 1 }, { -1, 1 } } };
   std::array<int, 8> extreme{};
-  for (int i = 1; i < static_cast<int>(P.size()); ++i)
+  std::array<double, 8> best{};
+  for (int i = 0; i < static_cast<int>(P.size()); ++i)
     for (int k = 0; k < 8; ++k)
-      extreme[k] = along(i, k) > along(extreme[k], k) ? i : extreme[k];
+    {
+      const double along = direction[k][0] * P[i].x + direction[k][1] * P[i].y;
+      if (i == 0 || along > best[k])
+      {
+        best[k] = along;
+        extreme[k] = i;
+      }
+    }
   // A point extreme in consecutive directions would give an empty edge.
   std::vector<int> polygon;
   for (int k = 0; k < 8; ++k)

@@ -183,3 +183,13 @@ TEST(Domain, ConvexHullMatchesGiftWrapping)
       EXPECT_EQ(P[hull[k]], P[reference[k]]) << "trial " << trial << ", vertex " << k;
   }
 }
+
+TEST(Domain, ConvexHullOfFewPoints)
+{
+  // Fewer than 3 points are returned as they are (sorted); none gives none.
+  EXPECT_TRUE(convexHull({}).empty());
+  EXPECT_EQ(convexHull({ { 2, 3 } }), (std::vector<int>{ 0 }));
+  EXPECT_EQ(convexHull({ { 1, 0 }, { 0, 0 } }), (std::vector<int>{ 1, 0 }));
+  // A point extreme in every direction but the others' (a right triangle's corner).
+  EXPECT_EQ(convexHull({ { 0, 0 }, { 1, 0 }, { 0, 1 }, { 0.2, 0.2 } }).size(), 3u);
+}
