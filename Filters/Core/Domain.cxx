@@ -35,23 +35,18 @@ void bucketByLo(
 /// smaller vertex, and each bucket is matched on the larger vertex through
 /// arrays stamped with the bucket's vertex. Edges with the same ends pair in
 /// triangle order, each with the previous one. Edges given in known are taken
-/// from it and not matched.
-std::vector<int> adjacency(const std::vector<Triangle>& tris,
-  const std::vector<Segment>& constrained, const KnownAdjacency* known,
-  std::vector<char>& edgeConstrained)
+/// from it and not matched; its arrays become the result's, so that the
+/// overlay's adjacency is extended, not copied.
+KnownAdjacency adjacency(
+  const std::vector<Triangle>& tris, const std::vector<Segment>& constrained, KnownAdjacency known)
 {
   int n = 0; // vertices 0..n-1
   for (const Triangle& t : tris)
     n = std::max({ n, t[0] + 1, t[1] + 1, t[2] + 1 });
-  const int nk = known ? static_cast<int>(known->nbr.size()) : 0;
-  std::vector<int> nbr(3 * tris.size(), -1);
-  edgeConstrained.assign(3 * tris.size(), 0);
-  for (int t = 0; t < nk; ++t)
-    for (int i = 0; i < 3; ++i)
-    {
-      nbr[3 * t + i] = known->nbr[t][i];
-      edgeConstrained[3 * t + i] = (known->constrained[t] >> i) & 1;
-    }
+  const int nk = static_cast<int>(known.nbr.size());
+  KnownAdjacency a = std::move(known);
+  a.nbr.resize(tris.size(), { -1, -1, -1 });
+  a.constrained.resize(tris.size(), 0);
   std::vector<int> edgeStart, constrainedStart;
   std::vector<std::array<int, 2>> edges, constrainedEdges;
   bucketByLo(
@@ -60,16 +55,17 @@ std::vector<int> adjacency(const std::vector<Triangle>& tris,
       for (int t = 0; t < static_cast<int>(tris.size()); ++t)
         for (int i = 0; i < 3; ++i)
         {
-          if (t < nk && nbr[3 * t + i] != KnownAdjacency::kUnknownNeighbour)
+          if (t < nk && a.nbr[t][i] != KnownAdjacency::kUnknownNeighbour)
             continue;
-          const int a = tris[t][(i + 1) % 3], b = tris[t][(i + 2) % 3];
-          emit(std::min(a, b), std::max(a, b), 3 * t + i);
+          const int u = tris[t][(i + 1) % 3], v = tris[t][(i + 2) % 3];
+          emit(std::min(u, v), std::max(u, v), 3 * t + i);
         }
     },
     edgeStart, edges);
-  for (int e = 0; e < 3 * nk; ++e)
-    if (nbr[e] == KnownAdjacency::kUnknownNeighbour)
-      nbr[e] = -1;
+  for (int t = 0; t < nk; ++t)
+    for (int& u : a.nbr[t])
+      if (u == KnownAdjacency::kUnknownNeighbour)
+        u = -1;
   bucketByLo(
     n,
     [&](auto&& emit) {
@@ -88,23 +84,25 @@ std::vector<int> adjacency(const std::vector<Triangle>& tris,
     for (int k = edgeStart[lo]; k < edgeStart[lo + 1]; ++k)
     {
       const int hi = edges[k][0], e = edges[k][1];
-      edgeConstrained[e] = constrainedStamp[hi] == lo;
+      const int t = e / 3, i = e % 3;
+      const std::uint8_t bit = static_cast<std::uint8_t>(1u << i);
+      a.constrained[t] =
+        constrainedStamp[hi] == lo ? a.constrained[t] | bit : a.constrained[t] & ~bit;
       if (lastStamp[hi] == lo)
       {
-        nbr[e] = last[hi] / 3;
-        nbr[last[hi]] = e / 3;
+        a.nbr[t][i] = last[hi] / 3;
+        a.nbr[last[hi] / 3][last[hi] % 3] = t;
       }
       lastStamp[hi] = lo;
       last[hi] = e;
     }
   }
-  return nbr;
+  return a;
 }
 
 /// Give label to every unlabelled triangle reachable from the seeds without
 /// crossing a constrained edge.
-void flood(std::vector<int> stack, int label, const std::vector<int>& nbr,
-  const std::vector<char>& edgeConstrained, std::vector<int>& labels)
+void flood(std::vector<int> stack, int label, const KnownAdjacency& a, std::vector<int>& labels)
 {
   for (int t : stack)
     labels[t] = label;
@@ -114,8 +112,8 @@ void flood(std::vector<int> stack, int label, const std::vector<int>& nbr,
     stack.pop_back();
     for (int i = 0; i < 3; ++i)
     {
-      const int u = nbr[3 * t + i];
-      if (u >= 0 && !edgeConstrained[3 * t + i] && labels[u] == -1)
+      const int u = a.nbr[t][i];
+      if (u >= 0 && !((a.constrained[t] >> i) & 1) && labels[u] == -1)
       {
         labels[u] = label;
         stack.push_back(u);
@@ -225,19 +223,18 @@ private:
 
 Carving carveDomain(const std::vector<Point>& P, const std::vector<Triangle>& tris,
   const std::vector<Segment>& constrained, bool removeExterior, const std::vector<Point>& holes,
-  const KnownAdjacency* known)
+  KnownAdjacency known)
 {
-  std::vector<char> edgeConstrained;
-  const std::vector<int> nbr = adjacency(tris, constrained, known, edgeConstrained);
+  const KnownAdjacency a = adjacency(tris, constrained, std::move(known));
   const int removed = -2;
   std::vector<int> labels(tris.size(), -1);
   if (removeExterior)
   {
     std::vector<int> seeds;
     for (int t = 0; t < static_cast<int>(tris.size()); ++t)
-      if (nbr[3 * t] < 0 || nbr[3 * t + 1] < 0 || nbr[3 * t + 2] < 0)
+      if (a.nbr[t][0] < 0 || a.nbr[t][1] < 0 || a.nbr[t][2] < 0)
         seeds.push_back(t);
-    flood(seeds, removed, nbr, edgeConstrained, labels);
+    flood(seeds, removed, a, labels);
   }
   Carving out;
   if (!holes.empty())
@@ -247,7 +244,7 @@ Carving carveDomain(const std::vector<Point>& P, const std::vector<Triangle>& tr
     {
       const int t = grid.find(holes[h], labels, -1);
       if (t >= 0)
-        flood({ t }, removed, nbr, edgeConstrained, labels);
+        flood({ t }, removed, a, labels);
       else
         out.unusedHoles.push_back(static_cast<int>(h));
     }
@@ -255,11 +252,11 @@ Carving carveDomain(const std::vector<Point>& P, const std::vector<Triangle>& tr
   int next = 0;
   for (int t = 0; t < static_cast<int>(tris.size()); ++t)
     if (labels[t] == -1)
-      flood({ t }, next++, nbr, edgeConstrained, labels);
+      flood({ t }, next++, a, labels);
   out.regions = static_cast<std::size_t>(next);
-  out.regionId.resize(tris.size());
-  for (std::size_t t = 0; t < tris.size(); ++t)
-    out.regionId[t] = labels[t] >= 0 ? labels[t] : -1;
+  out.regionId = std::move(labels);
+  for (int& id : out.regionId)
+    id = std::max(id, -1);
   return out;
 }
 

@@ -34,10 +34,11 @@ struct Carving
 
 /// removeExterior: drop triangles reachable from the box boundary without
 /// crossing a constrained edge. constrained holds (lo, hi) vertex pairs.
-/// known, if given, must agree with the triangles; it spares matching those edges.
+/// known, the adjacency of the first triangles, must agree with them; it spares
+/// matching those edges, and its arrays are reused (move it in).
 Carving carveDomain(const std::vector<Point>& points, const std::vector<Triangle>& triangles,
   const std::vector<Segment>& constrained, bool removeExterior, const std::vector<Point>& holes,
-  const KnownAdjacency* known = nullptr);
+  KnownAdjacency known = {});
 
 /// Convex hull of the points, counter-clockwise, without collinear vertices.
 std::vector<int> convexHull(const std::vector<Point>& points);

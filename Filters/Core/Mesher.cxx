@@ -208,7 +208,7 @@ public:
 private:
   void meshRounds(Work& w);
   Domain chooseDomain(const Work& w, std::vector<int>& hull);
-  void buildOutput(const Work& w, const PlanarGraph& g, const Completion& c, const Carving& carve,
+  void buildOutput(const Work& w, const PlanarGraph& g, Completion& c, Carving& carve,
     const Overlay& overlay, std::vector<Edge>& edges);
 
   const Pslg& input;
@@ -355,29 +355,29 @@ void Mesher::meshRounds(Work& w)
     st.overlayTriangles = ov.tris.size();
 
     t = Clock::now();
-    std::vector<Edge> edges;
-    PlanarGraph g = stitch(ov, overlay, walk, options.keepEdges ? &edges : nullptr, st);
-    st.secondsStitch += since(t);
-    // The overlay is only output from here on: move it there, or free it.
+    // The overlay is only output from here on, and stitching builds the
+    // graph in its arrays: copy what the output keeps.
     if (options.keepOverlay)
     {
-      res.overlay.vertices = std::move(overlay.mesh.points);
-      res.overlay.triangles = std::move(ov.tris);
+      res.overlay.vertices = overlay.mesh.points;
+      res.overlay.triangles = ov.tris;
     }
+    std::vector<Edge> edges;
+    PlanarGraph g = stitch(std::move(ov), std::move(overlay.mesh.points), overlay.isInput, walk,
+      options.keepEdges ? &edges : nullptr, st);
+    st.secondsStitch += since(t);
     overlay.mesh = Triangulation();
-    ov = OverlayEdges();
     walk = Walk();
 
     t = Clock::now();
     run.phase("complete", 0.75, 0.9);
-    const Completion c = complete(g, st, run);
+    Completion c = complete(g, st, run);
     st.secondsComplete = since(t);
 
     t = Clock::now();
     run.phase("domain", 0.9, 1.0);
-    const Carving carve = carveDomain(g.points, c.triangles, c.constrainedEdges,
-      domain != Domain::Box, w.holes, &g.intactAdjacency);
-    g.intactAdjacency = KnownAdjacency();
+    Carving carve = carveDomain(g.points, c.triangles, c.constrainedEdges, domain != Domain::Box,
+      w.holes, std::move(g.intactAdjacency));
     st.secondsDomain = since(t);
     if (!carve.unusedHoles.empty())
       res.warnings.push_back(std::to_string(carve.unusedHoles.size()) +
@@ -422,8 +422,8 @@ void angleExtremes(const TriMesh& mesh, double& minDeg, double& maxDeg)
     }
 }
 
-void Mesher::buildOutput(const Work& w, const PlanarGraph& g, const Completion& c,
-  const Carving& carve, const Overlay& overlay, std::vector<Edge>& edges)
+void Mesher::buildOutput(const Work& w, const PlanarGraph& g, Completion& c, Carving& carve,
+  const Overlay& overlay, std::vector<Edge>& edges)
 {
   Statistics& st = res.stats;
   // Scaling back is exact unless a point falls among the subnormal numbers,
@@ -450,13 +450,17 @@ void Mesher::buildOutput(const Work& w, const PlanarGraph& g, const Completion& 
   // Upper bounds: room never touched costs nothing, growing copies.
   res.mesh.vertices.reserve(g.points.size());
   res.vertexOrigin.reserve(g.points.size());
-  res.mesh.triangles.reserve(c.triangles.size());
-  res.regionId.reserve(c.triangles.size());
-  for (std::size_t t = 0; t < c.triangles.size(); ++t)
+  // The kept triangles and their region ids move down in place.
+  res.mesh.triangles = std::move(c.triangles);
+  res.regionId = std::move(carve.regionId);
+  std::vector<Triangle>& tris = res.mesh.triangles;
+  std::vector<int>& region = res.regionId;
+  std::size_t kept = 0;
+  for (std::size_t t = 0; t < tris.size(); ++t)
   {
-    if (carve.regionId[t] < 0)
+    if (region[t] < 0)
       continue;
-    Triangle tri = c.triangles[t];
+    Triangle tri = tris[t];
     for (int& v : tri)
     {
       if (newIndex[v] < 0)
@@ -467,8 +471,17 @@ void Mesher::buildOutput(const Work& w, const PlanarGraph& g, const Completion& 
       }
       v = newIndex[v];
     }
-    res.mesh.triangles.push_back(tri);
-    res.regionId.push_back(carve.regionId[t]);
+    tris[kept] = tri;
+    region[kept++] = region[t];
+  }
+  // Where the domain dropped much (a large exterior), give the memory back.
+  const bool shrink = kept < tris.size() / 4 * 3;
+  tris.resize(kept);
+  region.resize(kept);
+  if (shrink)
+  {
+    tris.shrink_to_fit();
+    region.shrink_to_fit();
   }
   // Points created by splitting crossing segments are neither input nor Steiner.
   for (std::size_t i = 0; i < w.points.size(); ++i)

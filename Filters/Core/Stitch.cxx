@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <new>
 #include <string>
 
 namespace osm
@@ -25,7 +26,18 @@ OverlayEdges compactOverlay(const Triangulation& mesh)
   for (std::size_t v = 0; v + 1 < start.size(); ++v)
     start[v + 1] += start[v];
   std::vector<int> index(mesh.slots(), -1);
-  ov.tris.resize(start.back());
+  // Stitching makes the intact triangles and their adjacency out of tris and
+  // nbr in place, and completion appends to them: room now (untouched, it
+  // costs only address space) spares copying them then.
+  const std::size_t n = start.back(), room = n + n / 2 + 64;
+  try
+  {
+    ov.tris.reserve(room);
+    ov.nbr.reserve(room);
+  }
+  catch (const std::bad_alloc&)
+  {}
+  ov.tris.resize(n);
   for (int t = 0; t < mesh.slots(); ++t)
   {
     if (!mesh.alive(t))
@@ -396,8 +408,9 @@ bool tooClose(const Point& p, const Point& q, double edgeLength)
 /// faces of the stitched graph as they are), with their adjacency among
 /// themselves, and returns, per overlay edge, the sides on which a face must
 /// still be traced: those of the other triangles. The box's outside is never
-/// traced.
-std::vector<std::uint8_t> listIntact(const OverlayEdges& ov, const std::vector<char>& crossed,
+/// traced. Takes over ov.tris and ov.nbr: an intact triangle only ever moves
+/// down, over a place already read, so both are filtered in place.
+std::vector<std::uint8_t> listIntact(OverlayEdges& ov, const std::vector<char>& crossed,
   const std::vector<char>& alongInput, const Walk& walk, PlanarGraph& g)
 {
   std::vector<int> intactIndex(ov.tris.size(), -1);
@@ -408,63 +421,72 @@ std::vector<std::uint8_t> listIntact(const OverlayEdges& ov, const std::vector<c
     if (!crossed[e[0]] && !crossed[e[1]] && !crossed[e[2]])
       intactIndex[c] = count++;
   }
-  // Completion appends its triangles to these: fewer than the half-edges it
-  // traces, which are the sides of the other triangles' edges (split once per
-  // crossing) and of the input subsegments (split at crossings too). Room for
-  // them now spares a copy of the whole list then.
-  const std::size_t others = ov.tris.size() - count;
-  g.intact.reserve(count + 3 * others + 4 * walk.crossings.size() + 2 * walk.pieces.size());
+  std::vector<Triangle> tris = std::move(ov.tris);
+  std::vector<std::array<int, 3>> nbrs = std::move(ov.nbr);
   KnownAdjacency& known = g.intactAdjacency;
-  known.nbr.reserve(count);
   known.constrained.reserve(count);
   std::vector<std::uint8_t> open(ov.edges.size(), 0);
-  for (std::size_t c = 0; c < ov.tris.size(); ++c)
+  for (std::size_t c = 0; c < tris.size(); ++c)
   {
     const std::array<int, 3>& e = ov.triEdge[c];
-    if (intactIndex[c] >= 0)
+    const int k = intactIndex[c];
+    if (k >= 0)
     {
-      g.intact.push_back(ov.tris[c]);
       std::array<int, 3> nbr;
       std::uint8_t constrained = 0;
       for (int i = 0; i < 3; ++i)
       {
-        const int u = ov.nbr[c][i];
+        const int u = nbrs[c][i];
         nbr[i] = u < 0          ? -1
           : intactIndex[u] >= 0 ? intactIndex[u]
                                 : KnownAdjacency::kUnknownNeighbour;
         constrained |= alongInput[e[i]] << i;
       }
-      known.nbr.push_back(nbr);
+      tris[k] = tris[c];
+      nbrs[k] = nbr;
       known.constrained.push_back(constrained);
       continue;
     }
     // A counter-clockwise triangle lies left of its edge i taken from vertex i+1 to i+2.
     for (int i = 0; i < 3; ++i)
-      open[e[i]] |= ov.edges[e[i]][0] == ov.tris[c][(i + 1) % 3] ? OpenLeft : OpenRight;
+      open[e[i]] |= ov.edges[e[i]][0] == tris[c][(i + 1) % 3] ? OpenLeft : OpenRight;
   }
+  tris.resize(count);
+  nbrs.resize(count);
+  // Completion appends its triangles to these, and carving the neighbours of
+  // all of them: fewer than the half-edges it traces, which are the sides of
+  // the other triangles' edges (split once per crossing) and of the input
+  // subsegments (split at crossings too). Usually the room is there already.
+  const std::size_t others = intactIndex.size() - count;
+  const std::size_t bound = count + 3 * others + 4 * walk.crossings.size() + 2 * walk.pieces.size();
+  tris.reserve(bound);
+  nbrs.reserve(bound);
+  g.intact = std::move(tris);
+  known.nbr = std::move(nbrs);
   return open;
 }
 
 } // namespace
 
-PlanarGraph stitch(const OverlayEdges& ov, const Overlay& overlay, const Walk& walk,
-  std::vector<Edge>* inspect, Statistics& stats)
+PlanarGraph stitch(OverlayEdges ov, std::vector<Point> points, const std::vector<char>& isInput,
+  const Walk& walk, std::vector<Edge>* inspect, Statistics& stats)
 {
   PlanarGraph g;
   // Each crossing may add a stitch vertex, and each overlay edge, crossing
   // and piece at most two edges: reserve so that appending never copies.
   const std::size_t ne = ov.edges.size();
   const std::size_t nc = walk.crossings.size();
-  g.points.reserve(overlay.mesh.points.size() + nc);
-  g.origin.reserve(overlay.mesh.points.size() + nc);
-  g.points.assign(overlay.mesh.points.begin(), overlay.mesh.points.end());
-  g.origin.resize(g.points.size());
+  const std::size_t overlayVertices = points.size();
+  g.points = std::move(points);
+  g.points.reserve(overlayVertices + nc);
+  g.origin.reserve(overlayVertices + nc);
+  g.origin.resize(overlayVertices);
   const std::size_t edgeBound = ne + 2 * nc + walk.pieces.size();
   g.edges.reserve(edgeBound);
   g.constrained.reserve(edgeBound);
   g.openSides.reserve(edgeBound);
   for (std::size_t v = 0; v < g.points.size(); ++v)
-    g.origin[v] = overlay.isInput[v] ? VertexOrigin::Input : VertexOrigin::Overlay;
+    g.origin[v] = isInput[v] ? VertexOrigin::Input : VertexOrigin::Overlay;
   auto addEdge = [&](int a, int b, bool constrained, std::uint8_t open) {
     g.edges.push_back({ a, b });
     g.constrained.push_back(constrained);
@@ -540,7 +562,7 @@ PlanarGraph stitch(const OverlayEdges& ov, const Overlay& overlay, const Walk& w
     if (inspect)
       inspect->push_back({ ov.edges[e][0], ov.edges[e][1], flags });
   }
-  stats.stitchVertices = g.points.size() - overlay.mesh.points.size();
+  stats.stitchVertices = g.points.size() - overlayVertices;
 
   // Input subsegments: each piece, split at its kept crossings. A piece along
   // an uncrossed overlay edge is that edge, added above.

@@ -99,8 +99,10 @@ struct PlanarGraph
 
 /// Keep or discard overlay edges and insert the kept crossings. When inspect is
 /// given, it receives every overlay edge and input subsegment with its flags.
-PlanarGraph stitch(const OverlayEdges& ov, const Overlay& overlay, const Walk& walk,
-  std::vector<Edge>* inspect, Statistics& stats);
+/// The graph is built in the arrays of ov and of the overlay's points (isInput
+/// per point): move them in, or copy what must outlive the call.
+PlanarGraph stitch(OverlayEdges ov, std::vector<Point> points, const std::vector<char>& isInput,
+  const Walk& walk, std::vector<Edge>* inspect, Statistics& stats);
 
 } // namespace osm
 

@@ -105,7 +105,7 @@ TEST(Domain, KnownAdjacencyCarvesAsMatchingDoes)
       const Carving plain = carveDomain(g.points, g.tris, constrained, removeExterior, holes);
       const KnownAdjacency known = knownFor(g.tris, constrained, count, rng);
       const Carving hinted =
-        carveDomain(g.points, g.tris, constrained, removeExterior, holes, &known);
+        carveDomain(g.points, g.tris, constrained, removeExterior, holes, known);
       EXPECT_EQ(hinted.regionId, plain.regionId) << count << " known, " << removeExterior;
       EXPECT_EQ(hinted.regions, plain.regions);
       EXPECT_EQ(hinted.unusedHoles, plain.unusedHoles);
@@ -123,7 +123,7 @@ TEST(Domain, KnownAdjacencyIsUsed)
   KnownAdjacency known;
   known.nbr = { { -1, -1, -1 } };
   known.constrained = { 0 };
-  const Carving split = carveDomain(g.points, g.tris, {}, false, {}, &known);
+  const Carving split = carveDomain(g.points, g.tris, {}, false, {}, known);
   EXPECT_EQ(split.regions, 2u);
   EXPECT_NE(split.regionId[0], split.regionId[1]);
 }

@@ -102,7 +102,8 @@ TEST(Stitch, EdgesAreKeptOrDiscardedByTheirCrossings)
   }
   std::vector<Edge> edges;
   Statistics stats;
-  const PlanarGraph g = stitch(s.ov, s.overlay, s.walk, &edges, stats);
+  const PlanarGraph g =
+    stitch(s.ov, s.overlay.mesh.points, s.overlay.isInput, s.walk, &edges, stats);
   std::size_t discarded = 0;
   for (std::size_t e = 0; e < s.ov.edges.size(); ++e)
   {
@@ -131,7 +132,8 @@ TEST(Stitch, IntactTrianglesAreTheUncrossedOnesAndOpenSidesFaceTheRest)
   for (const Crossing& c : s.walk.crossings)
     crossed[c.edge] = 1;
   Statistics stats;
-  const PlanarGraph g = stitch(s.ov, s.overlay, s.walk, nullptr, stats);
+  const PlanarGraph g =
+    stitch(s.ov, s.overlay.mesh.points, s.overlay.isInput, s.walk, nullptr, stats);
   ASSERT_EQ(g.openSides.size(), g.edges.size());
   // The sides of each overlay edge (as a directed vertex pair) that a crossed triangle lies on.
   std::map<std::pair<int, int>, int> expectedOpen;
