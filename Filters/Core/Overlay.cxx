@@ -77,9 +77,10 @@ void renumberAlongHilbertCurve(Overlay& overlay)
   mesh.points.swap(points);
   mesh.vtri.swap(vtri);
   overlay.isInput.swap(isInput);
-  for (int& v : mesh.tv)
-    if (v >= 0)
-      v = newIndex[v];
+  for (Triangulation::Slot& t : mesh.tri)
+    if (t.v[0] >= 0)
+      for (int& v : t.v)
+        v = newIndex[v];
   for (int& v : overlay.inputVertex)
     v = newIndex[v];
 }
@@ -286,7 +287,7 @@ void Refiner::refineTriangle(int t)
   // A circumcenter that encroaches the box boundary splits the boundary instead.
   for (int e : cavity.boundary)
   {
-    if (mesh.tn[e] >= 0)
+    if (mesh.across(e) >= 0)
       continue;
     const int u = e / 3, i = e % 3;
     const Point& p = mesh.vertex(u, (i + 1) % 3);
@@ -396,7 +397,7 @@ int Refiner::findInFan(const Point& q, int v, const std::vector<int>& fan) const
   double previousSide = 0;
   for (int u : fan)
   {
-    const int a = mesh.tv[3 * u], b = mesh.tv[3 * u + 1];
+    const int a = mesh.tri[u].v[0], b = mesh.tri[u].v[1];
     const double sideA = a == previousB ? previousSide : orient2d(c, q, mesh.points[a]);
     previousB = -1;
     if (sideA > 0) // q is strictly right of v->a: not in this wedge

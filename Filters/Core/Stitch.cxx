@@ -17,7 +17,7 @@ OverlayEdges compactOverlay(const Triangulation& mesh)
   // Triangles in the order of their smallest vertex (a counting sort): with
   // vertices in spatial order, neighbours in the mesh are near in memory.
   const auto lowest = [&](int t) {
-    return std::min({ mesh.tv[3 * t], mesh.tv[3 * t + 1], mesh.tv[3 * t + 2] });
+    return std::min({ mesh.tri[t].v[0], mesh.tri[t].v[1], mesh.tri[t].v[2] });
   };
   std::vector<int> start(mesh.points.size() + 1, 0);
   for (int t = 0; t < mesh.slots(); ++t)
@@ -43,7 +43,7 @@ OverlayEdges compactOverlay(const Triangulation& mesh)
     if (!mesh.alive(t))
       continue;
     index[t] = start[lowest(t)]++;
-    ov.tris[index[t]] = { mesh.tv[3 * t], mesh.tv[3 * t + 1], mesh.tv[3 * t + 2] };
+    ov.tris[index[t]] = mesh.tri[t].v;
   }
   std::vector<int>().swap(start);
   ov.nbr.resize(ov.tris.size());
@@ -57,7 +57,7 @@ OverlayEdges compactOverlay(const Triangulation& mesh)
       continue;
     for (int i = 0; i < 3; ++i)
     {
-      const int u = mesh.tn[3 * t + i];
+      const int u = mesh.tri[t].n[i];
       ov.nbr[c][i] = u < 0 ? -1 : index[u];
       hullEdges += u < 0;
     }

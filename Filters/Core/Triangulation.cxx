@@ -25,19 +25,11 @@ int Triangulation::newTriangle(int a, int b, int c)
   }
   else
   {
-    // push_back is inline; resize() is an out-of-line call at every new slot.
     t = slots();
-    for (int k = 0; k < 3; ++k)
-    {
-      tv.push_back(-1);
-      tn.push_back(-1);
-    }
-    mark.push_back(0);
+    tri.push_back(Slot{ { -1, -1, -1 }, { -1, -1, -1 }, 0 });
   }
-  tv[3 * t] = a;
-  tv[3 * t + 1] = b;
-  tv[3 * t + 2] = c;
-  tn[3 * t] = tn[3 * t + 1] = tn[3 * t + 2] = -1;
+  tri[t].v = { a, b, c };
+  tri[t].n = { -1, -1, -1 };
   vtri[a] = vtri[b] = vtri[c] = t;
   return t;
 }
@@ -46,30 +38,26 @@ void Triangulation::reserve(std::size_t pointCount, std::size_t triangleCount)
 {
   points.reserve(pointCount);
   vtri.reserve(pointCount);
-  tv.reserve(3 * triangleCount);
-  tn.reserve(3 * triangleCount);
-  mark.reserve(triangleCount);
+  tri.reserve(triangleCount);
 }
 
 void Triangulation::releaseTriangles()
 {
-  std::vector<int>().swap(tv);
-  std::vector<int>().swap(tn);
+  std::vector<Slot>().swap(tri);
   std::vector<int>().swap(vtri);
   std::vector<int>().swap(freeSlots);
-  std::vector<std::uint32_t>().swap(mark);
 }
 
 void Triangulation::freeTriangle(int t)
 {
-  tv[3 * t] = tv[3 * t + 1] = tv[3 * t + 2] = -1;
+  tri[t].v = { -1, -1, -1 };
   freeSlots.push_back(t);
 }
 
 int Triangulation::localIndex(int t, int v) const
 {
   for (int i = 0; i < 3; ++i)
-    if (tv[3 * t + i] == v)
+    if (tri[t].v[i] == v)
       return i;
   return -1;
 }
@@ -79,17 +67,17 @@ void Triangulation::link(int t, int u)
   // The shared edge is opposite the one vertex of t that u does not have.
   for (int i = 0; i < 3; ++i)
   {
-    if (localIndex(u, tv[3 * t + i]) < 0)
+    if (localIndex(u, tri[t].v[i]) < 0)
     {
-      tn[3 * t + i] = u;
+      tri[t].n[i] = u;
       break;
     }
   }
   for (int i = 0; i < 3; ++i)
   {
-    if (localIndex(t, tv[3 * u + i]) < 0)
+    if (localIndex(t, tri[u].v[i]) < 0)
     {
-      tn[3 * u + i] = t;
+      tri[u].n[i] = t;
       break;
     }
   }
@@ -110,11 +98,11 @@ int Triangulation::locate(const Point& p, int t, int* exitEdge) const
     for (int k = 0; k < 3; ++k)
     {
       const int i = static_cast<int>((k + step) % 3);
-      const Point& a = points[tv[3 * t + (i + 1) % 3]];
-      const Point& b = points[tv[3 * t + (i + 2) % 3]];
+      const Point& a = vertex(t, (i + 1) % 3);
+      const Point& b = vertex(t, (i + 2) % 3);
       if (orient2d(a, b, p) < 0)
       {
-        const int next = tn[3 * t + i];
+        const int next = tri[t].n[i];
         if (next < 0)
         {
           if (exitEdge)
@@ -141,13 +129,14 @@ bool Triangulation::cavityOf(const Point& p, int start, Cavity& cavity) const
   // Two stamps per search: in the cavity, and tested and found outside it.
   if (markStamp > UINT32_MAX - 2)
   {
-    std::fill(mark.begin(), mark.end(), 0);
+    for (const Slot& s : tri)
+      s.mark = 0;
     markStamp = 0;
   }
   const std::uint32_t in = ++markStamp, out = ++markStamp;
   // p lies in the closure of start, hence strictly inside its circumcircle.
   cavity.triangles.push_back(start);
-  mark[start] = in;
+  tri[start].mark = in;
   // Each edge is classified when its cavity triangle is searched, so the
   // boundary comes out in cavity order, edge by edge.
   for (std::size_t k = 0; k < cavity.triangles.size(); ++k)
@@ -155,18 +144,18 @@ bool Triangulation::cavityOf(const Point& p, int start, Cavity& cavity) const
     const int t = cavity.triangles[k];
     for (int i = 0; i < 3; ++i)
     {
-      const int u = tn[3 * t + i];
-      if (u >= 0 && mark[u] == in)
+      const int u = tri[t].n[i];
+      if (u >= 0 && tri[u].mark == in)
         continue;
-      if (u >= 0 && mark[u] != out)
+      if (u >= 0 && tri[u].mark != out)
       {
         if (incircle(vertex(u, 0), vertex(u, 1), vertex(u, 2), p) > 0)
         {
-          mark[u] = in;
+          tri[u].mark = in;
           cavity.triangles.push_back(u);
           continue;
         }
-        mark[u] = out;
+        tri[u].mark = out;
       }
       cavity.boundary.push_back(3 * t + i);
     }
@@ -183,7 +172,7 @@ bool Triangulation::insertIntoCavity(int v, const Cavity& cavity, std::vector<in
   for (int e : cavity.boundary)
   {
     const int t = e / 3, i = e % 3;
-    const int u = tn[e];
+    const int u = tri[t].n[i];
     const double o = orient2d(vertex(t, (i + 1) % 3), vertex(t, (i + 2) % 3), p);
     if (o < 0 || (o == 0 && u >= 0))
       return false; // not star-shaped: refuse rather than tangle the mesh
@@ -194,9 +183,9 @@ bool Triangulation::insertIntoCavity(int v, const Cavity& cavity, std::vector<in
     int link = -1;
     if (u >= 0)
       for (int j = 0; j < 3; ++j)
-        if (tn[3 * u + j] == t)
+        if (tri[u].n[j] == t)
           link = 3 * u + j;
-    fan.push_back({ tv[3 * t + (i + 1) % 3], tv[3 * t + (i + 2) % 3], u, link });
+    fan.push_back({ tri[t].v[(i + 1) % 3], tri[t].v[(i + 2) % 3], u, link });
   }
   for (int t : cavity.triangles)
     freeTriangle(t);
@@ -207,20 +196,20 @@ bool Triangulation::insertIntoCavity(int v, const Cavity& cavity, std::vector<in
     const int t = newTriangle(f.a, f.b, v);
     created.push_back(t);
     // Edge (a, b) is opposite v (local index 2).
-    tn[3 * t + 2] = f.outside;
+    tri[t].n[2] = f.outside;
     if (f.outsideLink >= 0)
-      tn[f.outsideLink] = t;
+      tri[f.outsideLink / 3].n[f.outsideLink % 3] = t;
     fanByVertex[f.a] = t; // triangle whose edge (v, a) ... found via vertex a
   }
   // Link fan neighbours: triangle (a, b, v) meets (b, c, v) across edge (b, v).
   for (int t : created)
   {
-    const int b = tv[3 * t + 1];
+    const int b = tri[t].v[1];
     const int u = b < static_cast<int>(fanByVertex.size()) ? fanByVertex[b] : -1;
-    if (u >= 0 && tv[3 * u] == b && tv[3 * u + 2] == v)
+    if (u >= 0 && tri[u].v[0] == b && tri[u].v[2] == v)
     {
-      tn[3 * t] = u;     // opposite a: edge (b, v)
-      tn[3 * u + 1] = t; // opposite b in u=(b, c, v): edge (v, b)
+      tri[t].n[0] = u; // opposite a: edge (b, v)
+      tri[u].n[1] = t; // opposite b in u=(b, c, v): edge (v, b)
     }
   }
   for (const FanTriangle& f : fan)
@@ -230,10 +219,10 @@ bool Triangulation::insertIntoCavity(int v, const Cavity& cavity, std::vector<in
   {
     int first = created.front();
     for (int t : created)
-      if (tn[3 * t + 1] < 0) // no predecessor: the fan is open here (v on the hull)
+      if (tri[t].n[1] < 0) // no predecessor: the fan is open here (v on the hull)
         first = t;
     ordered.clear();
-    for (int t = first; t >= 0 && ordered.size() < created.size(); t = tn[3 * t])
+    for (int t = first; t >= 0 && ordered.size() < created.size(); t = tri[t].n[0])
       ordered.push_back(t);
     created.swap(ordered);
   }

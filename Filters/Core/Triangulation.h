@@ -1,13 +1,15 @@
 // An index-based 2D triangulation with Delaunay (Bowyer-Watson) insertion.
 //
-// Triangles live in flat arrays: vertices tv[3t..3t+2] counter-clockwise and
-// neighbours tn[3t+i] across edge i, the edge opposite vertex i, i.e. from
-// tv[3t+i+1] to tv[3t+i+2]. -1 marks the hull. Deleted slots are recycled.
+// Triangles live in slots: vertices v[0..2] counter-clockwise and neighbours
+// n[i] across edge i, the edge opposite vertex i, i.e. from v[i+1] to v[i+2].
+// -1 marks the hull. Half-edge 3t + i names edge i of slot t. Deleted slots
+// are recycled.
 #ifndef osm_Triangulation_h
 #define osm_Triangulation_h
 
 #include "Geometry.h"
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -17,16 +19,27 @@ namespace osm
 class Triangulation
 {
 public:
+  /// One triangle slot. Vertices, neighbours and the cavity search's stamp
+  /// side by side, in half a cache line: a search or an insertion touching a
+  /// triangle needs all of them, and separate arrays cost a miss each.
+  struct alignas(32) Slot
+  {
+    std::array<int, 3> v; ///< vertices (v[0] == -1: a free slot)
+    std::array<int, 3> n; ///< neighbours
+    mutable std::uint32_t mark;
+  };
+
   std::vector<Point> points;
-  std::vector<int> tv;   ///< 3 vertices per triangle slot (-1: free slot)
-  std::vector<int> tn;   ///< 3 neighbours per triangle slot
+  std::vector<Slot> tri;
   std::vector<int> vtri; ///< one live triangle incident to each vertex
 
   int addPoint(const Point& p);
   int newTriangle(int a, int b, int c);
   void freeTriangle(int t);
-  bool alive(int t) const { return tv[3 * t] >= 0; }
-  int slots() const { return static_cast<int>(tv.size() / 3); }
+  bool alive(int t) const { return tri[t].v[0] >= 0; }
+  int slots() const { return static_cast<int>(tri.size()); }
+  /// The neighbour across half-edge e = 3t + i.
+  int across(int e) const { return tri[e / 3].n[e % 3]; }
   int liveTriangles() const { return slots() - static_cast<int>(freeSlots.size()); }
   /// Room for this many points and triangle slots. Untouched capacity costs
   /// only address space; growing by doubling instead touches (page faults)
@@ -34,7 +47,7 @@ public:
   void reserve(std::size_t pointCount, std::size_t triangleCount);
   /// Drops every triangle and gives its memory back, keeping the points.
   void releaseTriangles();
-  const Point& vertex(int t, int i) const { return points[tv[3 * t + i]]; }
+  const Point& vertex(int t, int i) const { return points[tri[t].v[i]]; }
 
   /// Set the neighbour links of two triangles sharing the edge (a, b).
   void link(int t, int u);
@@ -68,12 +81,11 @@ public:
 private:
   std::vector<int> freeSlots;
   // Scratch state kept between calls so insertion allocates nothing.
-  mutable std::vector<std::uint32_t> mark;
   mutable std::uint32_t markStamp = 0;
   struct FanTriangle
   {
     int a, b, outside; ///< edge (a, b) of the cavity boundary, triangle outside beyond it
-    int outsideLink;   ///< the slot of tn by which outside refers back across (a, b)
+    int outsideLink;   ///< the half-edge of outside that refers back across (a, b)
   };
   std::vector<FanTriangle> fan;
   std::vector<int> ordered;

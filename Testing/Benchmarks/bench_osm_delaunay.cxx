@@ -24,7 +24,7 @@ int main(int argc, char** argv)
       {
         if (!t.alive(s))
           continue;
-        const int a = t.tv[3 * s], b = t.tv[3 * s + 1], c = t.tv[3 * s + 2];
+        const int a = t.tri[s].v[0], b = t.tri[s].v[1], c = t.tri[s].v[2];
         if (a < 4 || b < 4 || c < 4)
           continue;
         tris.push_back({ a, b, c });

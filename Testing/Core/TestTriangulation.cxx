@@ -27,14 +27,14 @@ void expectDelaunay(const Triangulation& T)
     ASSERT_GT(orient2d(T.vertex(t, 0), T.vertex(t, 1), T.vertex(t, 2)), 0) << "triangle " << t;
     for (int i = 0; i < 3; ++i)
     {
-      const int u = T.tn[3 * t + i];
+      const int u = T.tri[t].n[i];
       if (u < 0)
         continue;
       ASSERT_TRUE(T.alive(u));
       int far = -1;
       for (int j = 0; j < 3; ++j)
-        if (T.localIndex(t, T.tv[3 * u + j]) < 0)
-          far = T.tv[3 * u + j];
+        if (T.localIndex(t, T.tri[u].v[j]) < 0)
+          far = T.tri[u].v[j];
       ASSERT_GE(far, 0);
       EXPECT_LE(incircle(T.vertex(t, 0), T.vertex(t, 1), T.vertex(t, 2), T.points[far]), 0)
         << "triangle " << t << " is not Delaunay";
@@ -179,8 +179,8 @@ TEST(Triangulation, LocateGivesUpOnACycleInsteadOfHanging)
   const int t0 = T.newTriangle(a, b, c), t1 = T.newTriangle(d, e, f);
   for (int i = 0; i < 3; ++i)
   {
-    T.tn[3 * t0 + i] = t1;
-    T.tn[3 * t1 + i] = t0;
+    T.tri[t0].n[i] = t1;
+    T.tri[t1].n[i] = t0;
   }
   EXPECT_EQ(T.locate({ 3, 3 }, t0), -2);
   // On the same triangles a point inside t0 is still found at once.
