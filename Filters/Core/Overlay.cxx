@@ -128,13 +128,9 @@ private:
 
   Overlay out;
   Triangulation& mesh = out.mesh;
-  /// Per triangle slot, side by side: a new triangle touches both.
-  struct Slot
-  {
-    int bucket = -1;       ///< first waiting input point
-    std::uint32_t gen = 0; ///< bumped on every reuse of the slot
-  };
-  std::vector<Slot> slot;
+  /// Per triangle slot: bumped on every reuse of the slot. A triangle's
+  /// bucket (its first waiting input point, -1 if none) is its slot's info.
+  std::vector<std::uint32_t> gen;
   std::vector<int> bucketNext; ///< per input point: next in its bucket
   /// Per input point (in Hilbert order, near in memory as insertion proceeds):
   /// its mesh vertex; out.inputVertex gets it in the caller's order at the end.
@@ -164,14 +160,14 @@ void Refiner::makeBox()
   const int t0 = mesh.newTriangle(c0, c1, c2);
   const int t1 = mesh.newTriangle(c0, c2, c3);
   mesh.link(t0, t1);
-  slot.assign(2, Slot{ -1, 1 });
+  gen.assign(2, 1);
   bucketNext.assign(input.size(), -1);
   // Walk in reverse so buckets list points in (Hilbert) index order.
   for (int i = static_cast<int>(input.size()) - 1; i >= 0; --i)
   {
     const int t = orient2d(mesh.points[c0], mesh.points[c2], input[i]) <= 0 ? t0 : t1;
-    bucketNext[i] = slot[t].bucket;
-    slot[t].bucket = i;
+    bucketNext[i] = mesh.tri[t].info;
+    mesh.tri[t].info = i;
   }
 }
 
@@ -184,7 +180,7 @@ void Refiner::enqueueIfNeeded(int t)
   // queue key. A degenerate triangle has an infinite or NaN radius: it counts
   // as poor, and refineTriangle skips it.
   const Point o = circumcenterOffset(a, b, c);
-  if (slot[t].bucket < 0)
+  if (mesh.tri[t].info < 0)
   {
     const double la = dist2(b, c), lb = dist2(a, c), lc = dist2(a, b);
     const bool tooLong = maxEdge2 > 0 && std::max({ la, lb, lc }) > maxEdge2;
@@ -192,7 +188,7 @@ void Refiner::enqueueIfNeeded(int t)
       return;
   }
   // The key as refineTriangle computes the radius (only its size class counts).
-  queue.push(dist2(a, Point{ a.x + o.x, a.y + o.y }), { t, slot[t].gen });
+  queue.push(dist2(a, Point{ a.x + o.x, a.y + o.y }), { t, gen[t] });
 }
 
 Overlay Refiner::refine()
@@ -205,7 +201,7 @@ Overlay Refiner::refine()
   {
     mesh.reserve(expected, 2 * expected);
     out.isInput.reserve(expected);
-    slot.reserve(2 * expected);
+    gen.reserve(2 * expected);
   }
   catch (const std::bad_alloc&)
   {}
@@ -222,12 +218,12 @@ Overlay Refiner::refine()
     // A triangle of the same generation is unchanged since it was queued
     // (refining empties a bucket only by destroying its triangle), so it is
     // still poor or crowded: no need to test it again.
-    if (!mesh.alive(item.tri) || slot[item.tri].gen != item.gen)
+    if (!mesh.alive(item.tri) || gen[item.tri] != item.gen)
       continue;
     const std::size_t before = mesh.points.size();
     refineTriangle(item.tri);
     // Yielding or splitting the box may leave this triangle standing: retry it.
-    if (mesh.points.size() > before && mesh.alive(item.tri) && slot[item.tri].gen == item.gen)
+    if (mesh.points.size() > before && mesh.alive(item.tri) && gen[item.tri] == item.gen)
       enqueueIfNeeded(item.tri);
     run.tick(input.empty() ? 1.0 : double(inserted) / double(input.size()));
   }
@@ -305,7 +301,7 @@ void Refiner::refineTriangle(int t)
   waiting.clear();
   for (int u : cavity.triangles)
   {
-    for (int i = slot[u].bucket; i >= 0; i = bucketNext[i])
+    for (int i = mesh.tri[u].info; i >= 0; i = bucketNext[i])
     {
       waiting.push_back(i);
       const double d2 = dist2(input[i], c);
@@ -351,7 +347,7 @@ bool Refiner::insertVertex(const Point& p, int start, int inputIndex, bool cavit
     waiting.clear();
     for (int u : cavity.triangles)
     {
-      for (int i = slot[u].bucket; i >= 0; i = bucketNext[i])
+      for (int i = mesh.tri[u].info; i >= 0; i = bucketNext[i])
         if (i != inputIndex)
           waiting.push_back(i);
     }
@@ -363,22 +359,17 @@ bool Refiner::insertVertex(const Point& p, int start, int inputIndex, bool cavit
     mesh.vtri.pop_back();
     return false;
   }
-  for (int u : cavity.triangles)
-    if (!mesh.alive(u))
-      slot[u].bucket = -1;
   out.isInput.push_back(inputIndex >= 0 ? 1 : 0);
   if (inputIndex >= 0)
   {
     vertexOf[inputIndex] = v;
     ++inserted;
   }
-  if (slot.size() < static_cast<std::size_t>(mesh.slots()))
-    slot.resize(mesh.slots() + 4096); // ahead, not at every new slot
+  if (gen.size() < static_cast<std::size_t>(mesh.slots()))
+    gen.resize(mesh.slots() + 4096); // ahead, not at every new slot
+  // The new triangles' buckets start empty (newTriangle resets info).
   for (int u : created)
-  {
-    ++slot[u].gen;
-    slot[u].bucket = -1;
-  }
+    ++gen[u];
   distribute(v, created);
   for (int u : created)
     enqueueIfNeeded(u);
@@ -421,8 +412,8 @@ void Refiner::distribute(int v, const std::vector<int>& fan)
     if (u < 0)
       throw Stop{ "internal error: lost input point " + std::to_string(original[i]) +
         " during refinement" };
-    bucketNext[i] = slot[u].bucket;
-    slot[u].bucket = i;
+    bucketNext[i] = mesh.tri[u].info;
+    mesh.tri[u].info = i;
   }
 }
 

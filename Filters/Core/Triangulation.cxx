@@ -26,10 +26,11 @@ int Triangulation::newTriangle(int a, int b, int c)
   else
   {
     t = slots();
-    tri.push_back(Slot{ { -1, -1, -1 }, { -1, -1, -1 }, 0 });
+    tri.push_back(Slot{ { -1, -1, -1 }, { -1, -1, -1 }, 0, -1 });
   }
   tri[t].v = { a, b, c };
   tri[t].n = { -1, -1, -1 };
+  tri[t].info = -1;
   vtri[a] = vtri[b] = vtri[c] = t;
   return t;
 }

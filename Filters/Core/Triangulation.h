@@ -27,6 +27,7 @@ public:
     std::array<int, 3> v; ///< vertices (v[0] == -1: a free slot)
     std::array<int, 3> n; ///< neighbours
     mutable std::uint32_t mark;
+    int info; ///< the user's, -1 in a new triangle (the refinement keeps a list head here)
   };
 
   std::vector<Point> points;
