@@ -47,9 +47,6 @@ OverlayEdges compactOverlay(const Triangulation& mesh)
   }
   std::vector<int>().swap(start);
   ov.nbr.resize(ov.tris.size());
-  ov.triEdge.resize(ov.tris.size());
-  ov.vtri.assign(mesh.points.size(), -1);
-  std::size_t hullEdges = 0;
   for (int t = 0; t < mesh.slots(); ++t)
   {
     const int c = index[t];
@@ -59,30 +56,23 @@ OverlayEdges compactOverlay(const Triangulation& mesh)
     {
       const int u = mesh.tri[t].n[i];
       ov.nbr[c][i] = u < 0 ? -1 : index[u];
-      hullEdges += u < 0;
     }
   }
-  ov.edges.reserve((3 * ov.tris.size() + hullEdges) / 2);
-  // Each edge gets its id from the triangle with the smaller index. In this
-  // order, near in space, vtri is written near in memory too.
+  // In this order, near in space, vtri is written near in memory too.
+  ov.vtri.assign(mesh.points.size(), -1);
   for (int c = 0; c < static_cast<int>(ov.tris.size()); ++c)
-  {
-    for (int i = 0; i < 3; ++i)
-    {
-      ov.vtri[ov.tris[c][i]] = c;
-      const int u = ov.nbr[c][i];
-      if (u >= 0 && u < c)
-        continue;
-      const int id = static_cast<int>(ov.edges.size());
-      ov.edges.push_back({ ov.tris[c][(i + 1) % 3], ov.tris[c][(i + 2) % 3] });
-      ov.triEdge[c][i] = id;
-      if (u >= 0)
-        for (int j = 0; j < 3; ++j)
-          if (ov.nbr[u][j] == c)
-            ov.triEdge[u][j] = id;
-    }
-  }
+    for (int v : ov.tris[c])
+      ov.vtri[v] = c;
   return ov;
+}
+
+int OverlayEdges::edgeId(int c, int i) const
+{
+  const int u = nbr[c][i];
+  if (u < 0 || c < u)
+    return 3 * c + i;
+  const std::array<int, 3>& back = nbr[u];
+  return 3 * u + (back[0] == c ? 0 : back[1] == c ? 1 : 2);
 }
 
 namespace
@@ -156,7 +146,7 @@ int Walker::firstStep(int cur, int b, int& l, int& r, int& tri)
     const int u = ov.tris[t][(i + 1) % 3];
     if (ahead(C, P[u], B) && onLineWithinRounding(A, B, P[u], std::sqrt(dist2(C, P[u]))))
     {
-      tri = ov.triEdge[t][(i + 2) % 3];
+      tri = ov.edgeId(t, (i + 2) % 3);
       return u;
     }
     t = ov.nbr[t][(i + 1) % 3]; // rotate counter-clockwise around cur
@@ -185,8 +175,9 @@ int Walker::firstStep(int cur, int b, int& l, int& r, int& tri)
 
 void Walker::addCrossing(int edge, int piece, const Point& A, const Point& B)
 {
-  const Point& p0 = P[ov.edges[edge][0]];
-  const Point& p1 = P[ov.edges[edge][1]];
+  const Segment ends = ov.ends(edge);
+  const Point& p0 = P[ends[0]];
+  const Point& p1 = P[ends[1]];
   const double dx = B.x - A.x, dy = B.y - A.y, ex = p1.x - p0.x, ey = p1.y - p0.y;
   const double d0 = cross(dx, dy, p0.x - A.x, p0.y - A.y);
   const double d1 = cross(dx, dy, p1.x - A.x, p1.y - A.y);
@@ -230,7 +221,7 @@ void Walker::walk(int segment, int a, int b)
       {
         if (guard > ov.tris.size())
           throw Stop{ "internal error: a stitching walk does not terminate" };
-        addCrossing(ov.triEdge[t][across], piece, A, B);
+        addCrossing(ov.edgeId(t, across), piece, A, B);
         t = ov.nbr[t][across];
         if (t < 0)
           throw Stop{ "internal error: a segment left the overlay while stitching" };
@@ -333,13 +324,21 @@ void Walker::findSegmentCrossings()
     k = end;
   }
   // ...or one crosses an overlay edge along which the other runs.
-  std::vector<int> edgePiece(ov.edges.size(), -1);
+  std::vector<std::pair<int, int>> edgePiece; // (overlay edge, piece along it)
   for (int i = 0; i < static_cast<int>(out.pieces.size()); ++i)
     if (out.pieces[i].overlayEdge >= 0 && !out.pieces[i].duplicate)
-      edgePiece[out.pieces[i].overlayEdge] = i;
+      edgePiece.push_back({ out.pieces[i].overlayEdge, i });
+  std::sort(edgePiece.begin(), edgePiece.end());
   for (const Crossing& c : out.crossings)
-    if (edgePiece[c.edge] >= 0 && !out.pieces[c.piece].duplicate)
-      record(c.piece, edgePiece[c.edge], c.p);
+  {
+    if (out.pieces[c.piece].duplicate)
+      continue;
+    // The last piece along the edge, as an array over the edges would keep.
+    const auto after = std::upper_bound(
+      edgePiece.begin(), edgePiece.end(), std::make_pair(c.edge, std::numeric_limits<int>::max()));
+    if (after != edgePiece.begin() && std::prev(after)->first == c.edge)
+      record(c.piece, std::prev(after)->second, c.p);
+  }
   // ...or both pass exactly through the same Steiner vertex.
   std::sort(steinerHits.begin(), steinerHits.end());
   for (std::size_t k = 1; k < steinerHits.size(); ++k)
@@ -404,52 +403,64 @@ bool tooClose(const Point& p, const Point& q, double edgeLength)
   return dist2(p, q) <= tolerance * tolerance;
 }
 
-/// Lists the overlay triangles with no crossed edge in g.intact (they are
-/// faces of the stitched graph as they are), with their adjacency among
-/// themselves, and returns, per overlay edge, the sides on which a face must
-/// still be traced: those of the other triangles. The box's outside is never
-/// traced. Takes over ov.tris and ov.nbr: an intact triangle only ever moves
-/// down, over a place already read, so both are filtered in place.
-std::vector<std::uint8_t> listIntact(OverlayEdges& ov, const std::vector<char>& crossed,
-  const std::vector<char>& alongInput, const Walk& walk, PlanarGraph& g)
+/// Per overlay half-edge (both halves of an edge alike): crossed by a
+/// segment, kept, and along an input segment.
+enum HalfEdgeFlag : std::uint8_t
 {
-  std::vector<int> intactIndex(ov.tris.size(), -1);
-  int count = 0;
-  for (std::size_t c = 0; c < ov.tris.size(); ++c)
-  {
-    const std::array<int, 3>& e = ov.triEdge[c];
-    if (!crossed[e[0]] && !crossed[e[1]] && !crossed[e[2]])
+  HalfCrossed = 1,
+  HalfKept = 2,
+  HalfAlongInput = 4
+};
+
+/// Sets flag on edge id and on its other half, if any.
+void flagEdge(const OverlayEdges& ov, std::vector<std::uint8_t>& flags, int id, std::uint8_t flag)
+{
+  flags[id] |= flag;
+  const int c = id / 3, u = ov.nbr[c][id % 3];
+  if (u >= 0)
+    flags[3 * u + localIndex(ov.nbr[u], c)] |= flag;
+}
+
+/// Per overlay triangle: its index among the triangles that no segment
+/// crosses (faces of the stitched graph as they are), or -1.
+std::vector<int> numberIntact(const std::vector<std::uint8_t>& flags, int& count)
+{
+  std::vector<int> intactIndex(flags.size() / 3, -1);
+  count = 0;
+  for (std::size_t c = 0; c < intactIndex.size(); ++c)
+    if (!((flags[3 * c] | flags[3 * c + 1] | flags[3 * c + 2]) & HalfCrossed))
       intactIndex[c] = count++;
-  }
+  return intactIndex;
+}
+
+/// Lists the intact triangles in g.intact, with their adjacency among
+/// themselves. Takes over ov.tris and ov.nbr: an intact triangle only ever
+/// moves down, over a place already read, so both are filtered in place.
+void listIntact(OverlayEdges& ov, const std::vector<std::uint8_t>& flags,
+  const std::vector<int>& intactIndex, int count, const Walk& walk, PlanarGraph& g)
+{
   std::vector<Triangle> tris = std::move(ov.tris);
   std::vector<std::array<int, 3>> nbrs = std::move(ov.nbr);
   KnownAdjacency& known = g.intactAdjacency;
   known.constrained.reserve(count);
-  std::vector<std::uint8_t> open(ov.edges.size(), 0);
   for (std::size_t c = 0; c < tris.size(); ++c)
   {
-    const std::array<int, 3>& e = ov.triEdge[c];
     const int k = intactIndex[c];
-    if (k >= 0)
-    {
-      std::array<int, 3> nbr;
-      std::uint8_t constrained = 0;
-      for (int i = 0; i < 3; ++i)
-      {
-        const int u = nbrs[c][i];
-        nbr[i] = u < 0          ? -1
-          : intactIndex[u] >= 0 ? intactIndex[u]
-                                : KnownAdjacency::kUnknownNeighbour;
-        constrained |= alongInput[e[i]] << i;
-      }
-      tris[k] = tris[c];
-      nbrs[k] = nbr;
-      known.constrained.push_back(constrained);
+    if (k < 0)
       continue;
-    }
-    // A counter-clockwise triangle lies left of its edge i taken from vertex i+1 to i+2.
+    std::array<int, 3> nbr;
+    std::uint8_t constrained = 0;
     for (int i = 0; i < 3; ++i)
-      open[e[i]] |= ov.edges[e[i]][0] == tris[c][(i + 1) % 3] ? OpenLeft : OpenRight;
+    {
+      const int u = nbrs[c][i];
+      nbr[i] = u < 0          ? -1
+        : intactIndex[u] >= 0 ? intactIndex[u]
+                              : KnownAdjacency::kUnknownNeighbour;
+      constrained |= ((flags[3 * c + i] & HalfAlongInput) ? 1 : 0) << i;
+    }
+    tris[k] = tris[c];
+    nbrs[k] = nbr;
+    known.constrained.push_back(constrained);
   }
   tris.resize(count);
   nbrs.resize(count);
@@ -463,7 +474,6 @@ std::vector<std::uint8_t> listIntact(OverlayEdges& ov, const std::vector<char>& 
   nbrs.reserve(bound);
   g.intact = std::move(tris);
   known.nbr = std::move(nbrs);
-  return open;
 }
 
 } // namespace
@@ -474,14 +484,14 @@ PlanarGraph stitch(OverlayEdges ov, std::vector<Point> points, const std::vector
   PlanarGraph g;
   // Each crossing may add a stitch vertex, and each overlay edge, crossing
   // and piece at most two edges: reserve so that appending never copies.
-  const std::size_t ne = ov.edges.size();
+  const std::size_t ne = ov.idBound();
   const std::size_t nc = walk.crossings.size();
   const std::size_t overlayVertices = points.size();
   g.points = std::move(points);
   g.points.reserve(overlayVertices + nc);
   g.origin.reserve(overlayVertices + nc);
   g.origin.resize(overlayVertices);
-  const std::size_t edgeBound = ne + 2 * nc + walk.pieces.size();
+  const std::size_t edgeBound = ne / 2 + 2 * nc + walk.pieces.size();
   g.edges.reserve(edgeBound);
   g.constrained.reserve(edgeBound);
   g.openSides.reserve(edgeBound);
@@ -493,46 +503,57 @@ PlanarGraph stitch(OverlayEdges ov, std::vector<Point> points, const std::vector
     g.openSides.push_back(open);
   };
 
-  std::vector<char> crossed(ne, 0), kept(ne, 0), alongInput(ne, 0);
+  std::vector<std::uint8_t> flags(ne, 0);
   for (const Crossing& c : walk.crossings)
   {
     if (walk.pieces[c.piece].duplicate)
       continue;
-    crossed[c.edge] = 1;
-    kept[c.edge] |= c.good;
+    flagEdge(ov, flags, c.edge, c.good ? HalfCrossed | HalfKept : HalfCrossed);
     ++(c.good ? stats.goodCrossings : stats.badCrossings);
   }
   stats.crossings = stats.goodCrossings + stats.badCrossings;
   for (const Piece& p : walk.pieces)
     if (p.overlayEdge >= 0 && !p.duplicate)
-      alongInput[p.overlayEdge] = 1;
-  const std::vector<std::uint8_t> open = listIntact(ov, crossed, alongInput, walk, g);
+      flagEdge(ov, flags, p.overlayEdge, HalfAlongInput);
+  int intactCount = 0;
+  const std::vector<int> intactIndex = numberIntact(flags, intactCount);
+  // The faces still to trace lie on the sides of an edge whose triangle there
+  // is not intact; an edge's id names the triangle on its left.
+  auto openSides = [&](int id) {
+    const int u = ov.nbr[id / 3][id % 3];
+    return static_cast<std::uint8_t>(
+      (intactIndex[id / 3] < 0 ? OpenLeft : 0) | (u >= 0 && intactIndex[u] < 0 ? OpenRight : 0));
+  };
 
   // Kept crossed edges: one stitch vertex per crossing, in order along the edge.
   const std::vector<int> order = crossingsByEdge(walk);
   std::size_t next = 0; // the first crossing, in order, of the edges still to come
   std::vector<int> stitchVertex(walk.crossings.size(), -1);
-  for (std::size_t e = 0; e < ne; ++e)
+  for (int e = 0; e < static_cast<int>(ne); ++e)
   {
+    if (!ov.isEdge(e))
+      continue;
     // This edge's crossings are order[first, next).
     const std::size_t first = next;
-    while (next < order.size() && walk.crossings[order[next]].edge == static_cast<int>(e))
+    while (next < order.size() && walk.crossings[order[next]].edge == e)
       ++next;
-    std::uint8_t flags = EdgeOverlay;
-    if (!crossed[e])
+    const Segment ends = ov.ends(e);
+    const bool alongInput = flags[e] & HalfAlongInput;
+    std::uint8_t edgeFlags = EdgeOverlay;
+    if (!(flags[e] & HalfCrossed))
     {
       ++stats.uncrossedEdges;
-      flags |= EdgeKept | (alongInput[e] ? EdgeInput : 0);
-      if (alongInput[e] || open[e])
-        addEdge(ov.edges[e][0], ov.edges[e][1], alongInput[e], open[e]);
+      edgeFlags |= EdgeKept | (alongInput ? EdgeInput : 0);
+      const std::uint8_t open = openSides(e);
+      if (alongInput || open)
+        addEdge(ends[0], ends[1], alongInput, open);
     }
-    else if (kept[e])
+    else if (flags[e] & HalfKept)
     {
-      const double edgeLength =
-        std::sqrt(dist2(g.points[ov.edges[e][0]], g.points[ov.edges[e][1]]));
+      const double edgeLength = std::sqrt(dist2(g.points[ends[0]], g.points[ends[1]]));
       ++stats.keptEdges;
-      flags |= EdgeKept | EdgeCrossed;
-      int prev = ov.edges[e][0];
+      edgeFlags |= EdgeKept | EdgeCrossed;
+      int prev = ends[0];
       for (std::size_t k = first; k < next; ++k)
       {
         const Crossing& c = walk.crossings[order[k]];
@@ -541,7 +562,7 @@ PlanarGraph stitch(OverlayEdges ov, std::vector<Point> points, const std::vector
         // Crossings within rounding of each other (or of the edge's ends) cannot
         // be told apart: the segments meet at an angle below double precision.
         if (tooClose(c.p, g.points[prev], edgeLength) ||
-          tooClose(c.p, g.points[ov.edges[e][1]], edgeLength))
+          tooClose(c.p, g.points[ends[1]], edgeLength))
           throw Stop{ "input segments come closer to each other than double precision can "
                       "separate",
             true, c.p };
@@ -552,23 +573,24 @@ PlanarGraph stitch(OverlayEdges ov, std::vector<Point> points, const std::vector
         addEdge(prev, v, false, OpenBoth);
         prev = v;
       }
-      addEdge(prev, ov.edges[e][1], false, OpenBoth);
+      addEdge(prev, ends[1], false, OpenBoth);
     }
     else
     {
       ++stats.discardedEdges;
-      flags |= EdgeDiscarded | EdgeCrossed;
+      edgeFlags |= EdgeDiscarded | EdgeCrossed;
     }
     if (inspect)
-      inspect->push_back({ ov.edges[e][0], ov.edges[e][1], flags });
+      inspect->push_back({ ends[0], ends[1], edgeFlags });
   }
+  listIntact(ov, flags, intactIndex, intactCount, walk, g);
   stats.stitchVertices = g.points.size() - overlayVertices;
 
   // Input subsegments: each piece, split at its kept crossings. A piece along
   // an uncrossed overlay edge is that edge, added above.
   for (const Piece& p : walk.pieces)
   {
-    if (p.duplicate || (p.overlayEdge >= 0 && !crossed[p.overlayEdge]))
+    if (p.duplicate || (p.overlayEdge >= 0 && !(flags[p.overlayEdge] & HalfCrossed)))
       continue;
     int prev = p.v0;
     for (int k = p.firstCrossing; k < p.firstCrossing + p.crossingCount; ++k)

@@ -22,14 +22,32 @@
 namespace osm
 {
 
-/// The overlay in compact form: live triangles, neighbours and edge ids.
+/// The overlay in compact form: live triangles and their neighbours. An edge
+/// is named by a half-edge, 3c + i for edge i (opposite vertex i, from vertex
+/// i+1 to i+2) of c, the smaller of its two triangles: increasing ids list
+/// every edge once, with no array over the edges.
 struct OverlayEdges
 {
   std::vector<Triangle> tris;
-  std::vector<std::array<int, 3>> nbr;     ///< across the edge opposite vertex i, or -1
-  std::vector<std::array<int, 3>> triEdge; ///< id of the edge opposite vertex i
-  std::vector<Segment> edges;
-  std::vector<int> vtri; ///< one triangle per vertex
+  std::vector<std::array<int, 3>> nbr; ///< across the edge opposite vertex i, or -1
+  std::vector<int> vtri;               ///< one triangle per vertex
+
+  /// Whether half-edge h is an edge id (its triangle is the smaller one).
+  bool isEdge(int h) const
+  {
+    const int u = nbr[h / 3][h % 3];
+    return u < 0 || h / 3 < u;
+  }
+  /// The id of edge i of triangle c.
+  int edgeId(int c, int i) const;
+  /// The ends of an edge, in the order of the triangle its id names.
+  Segment ends(int id) const
+  {
+    const Triangle& t = tris[id / 3];
+    return { t[(id % 3 + 1) % 3], t[(id % 3 + 2) % 3] };
+  }
+  /// Ids are below this bound.
+  std::size_t idBound() const { return 3 * tris.size(); }
 };
 
 OverlayEdges compactOverlay(const Triangulation& mesh);
@@ -49,7 +67,7 @@ struct Crossing
 {
   int edge = -1;
   int piece = -1;
-  double s = 0; ///< position along the overlay edge, from edges[edge][0] to [1]
+  double s = 0; ///< position along the overlay edge, from ends(edge)[0] to [1]
   Point p;
   bool good = false;
 };

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <map>
 #include <random>
+#include <set>
 
 using namespace osm;
 
@@ -49,6 +50,35 @@ Stitched stitchInput(const std::vector<Point>& pts, const std::vector<Segment>& 
 
 } // namespace
 
+TEST(Stitch, EdgeIdsNameEveryOverlayEdgeOnce)
+{
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> U(0, 1);
+  std::vector<Point> pts;
+  for (int i = 0; i < 300; ++i)
+    pts.push_back({ U(rng), U(rng) });
+  const Stitched s = stitchInput(pts, {}, 30);
+  const OverlayEdges& ov = s.ov;
+  std::set<std::pair<int, int>> distinct;
+  for (int c = 0; c < static_cast<int>(ov.tris.size()); ++c)
+    for (int i = 0; i < 3; ++i)
+    {
+      const int a = ov.tris[c][(i + 1) % 3], b = ov.tris[c][(i + 2) % 3];
+      distinct.insert({ std::min(a, b), std::max(a, b) });
+      // Both triangles of an edge give the same id, which names the edge.
+      const int id = ov.edgeId(c, i);
+      ASSERT_TRUE(ov.isEdge(id)) << c << " " << i;
+      const Segment e = ov.ends(id);
+      EXPECT_EQ(std::minmax(e[0], e[1]), std::minmax(a, b));
+      const int u = ov.nbr[c][i];
+      EXPECT_EQ(id / 3, u < 0 ? c : std::min(c, u));
+    }
+  std::size_t ids = 0;
+  for (int h = 0; h < static_cast<int>(ov.idBound()); ++h)
+    ids += ov.isEdge(h);
+  EXPECT_EQ(ids, distinct.size());
+}
+
 TEST(Stitch, CrossingsAreClassifiedAtTheta1)
 {
   std::mt19937_64 rng(5);
@@ -73,8 +103,8 @@ TEST(Stitch, CrossingsAreClassifiedAtTheta1)
       const Piece& piece = s.walk.pieces[c.piece];
       const Point& a = s.overlay.mesh.points[s.segments[piece.segment][0]];
       const Point& b = s.overlay.mesh.points[s.segments[piece.segment][1]];
-      const Point& p = s.overlay.mesh.points[s.ov.edges[c.edge][0]];
-      const Point& q = s.overlay.mesh.points[s.ov.edges[c.edge][1]];
+      const Point& p = s.overlay.mesh.points[s.ov.ends(c.edge)[0]];
+      const Point& q = s.overlay.mesh.points[s.ov.ends(c.edge)[1]];
       // The crossing is real: the edge's ends lie strictly on either side.
       EXPECT_LT(orientSign(a, b, p) * orientSign(a, b, q), 0);
       const double angle = lineAngle(b.x - a.x, b.y - a.y, q.x - p.x, q.y - p.y);
@@ -94,7 +124,7 @@ TEST(Stitch, EdgesAreKeptOrDiscardedByTheirCrossings)
   std::vector<Point> pts{ { 0, 0 }, { 1, 0.02 }, { 0, 0.05 }, { 1, 0.08 }, { 0.3, 0.9 } };
   std::vector<Segment> segs{ { 0, 1 }, { 2, 3 }, { 0, 4 } };
   Stitched s = stitchInput(pts, segs, 30);
-  std::vector<int> crossings(s.ov.edges.size(), 0), goods(s.ov.edges.size(), 0);
+  std::vector<int> crossings(s.ov.idBound(), 0), goods(s.ov.idBound(), 0);
   for (const Crossing& c : s.walk.crossings)
   {
     ++crossings[c.edge];
@@ -104,13 +134,19 @@ TEST(Stitch, EdgesAreKeptOrDiscardedByTheirCrossings)
   Statistics stats;
   const PlanarGraph g =
     stitch(s.ov, s.overlay.mesh.points, s.overlay.isInput, s.walk, &edges, stats);
-  std::size_t discarded = 0;
-  for (std::size_t e = 0; e < s.ov.edges.size(); ++e)
+  std::size_t discarded = 0, k = 0; // edges[k] is the overlay edge with the k-th id
+  for (int e = 0; e < static_cast<int>(s.ov.idBound()); ++e)
   {
+    if (!s.ov.isEdge(e))
+      continue;
+    ASSERT_LT(k, edges.size());
+    EXPECT_EQ(edges[k].a, s.ov.ends(e)[0]);
+    EXPECT_EQ(edges[k].b, s.ov.ends(e)[1]);
     const bool expectKept = crossings[e] == 0 || goods[e] > 0;
-    EXPECT_EQ(bool(edges[e].flags & EdgeKept), expectKept) << "edge " << e;
-    EXPECT_EQ(bool(edges[e].flags & EdgeDiscarded), !expectKept) << "edge " << e;
+    EXPECT_EQ(bool(edges[k].flags & EdgeKept), expectKept) << "edge " << e;
+    EXPECT_EQ(bool(edges[k].flags & EdgeDiscarded), !expectKept) << "edge " << e;
     discarded += !expectKept;
+    ++k;
   }
   EXPECT_EQ(stats.discardedEdges, discarded);
   EXPECT_GT(discarded, 0u); // the two long near-horizontal segments
@@ -128,7 +164,7 @@ TEST(Stitch, IntactTrianglesAreTheUncrossedOnesAndOpenSidesFaceTheRest)
     { 0.7, 0.6 }, { 0.2, 0.4 } };
   std::vector<Segment> segs{ { 0, 1 }, { 2, 3 }, { 0, 4 }, { 4, 5 } };
   Stitched s = stitchInput(pts, segs, 30);
-  std::vector<char> crossed(s.ov.edges.size(), 0);
+  std::vector<char> crossed(s.ov.idBound(), 0);
   for (const Crossing& c : s.walk.crossings)
     crossed[c.edge] = 1;
   Statistics stats;
@@ -143,7 +179,7 @@ TEST(Stitch, IntactTrianglesAreTheUncrossedOnesAndOpenSidesFaceTheRest)
     const Triangle& t = s.ov.tris[c];
     bool anyCrossed = false;
     for (int i = 0; i < 3; ++i)
-      anyCrossed |= crossed[s.ov.triEdge[c][i]] != 0;
+      anyCrossed |= crossed[s.ov.edgeId(static_cast<int>(c), i)] != 0;
     if (!anyCrossed)
     {
       ++intact;
