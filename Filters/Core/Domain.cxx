@@ -100,44 +100,54 @@ KnownAdjacency adjacency(
   return a;
 }
 
-/// Give label to every unlabelled triangle reachable from the seeds without
-/// crossing a constrained edge.
-void flood(std::vector<int> stack, int label, const KnownAdjacency& a, std::vector<int>& labels)
+/// The component of every triangle, among the triangles joined across
+/// unconstrained edges, named by its smallest triangle index. Union-find in
+/// index order touches memory in (spatial) order, where a flood jumps around.
+/// Both sides of an edge agree whether it is constrained: one side decides.
+std::vector<int> components(const KnownAdjacency& a)
 {
-  for (int t : stack)
-    labels[t] = label;
-  while (!stack.empty())
-  {
-    const int t = stack.back();
-    stack.pop_back();
+  const int n = static_cast<int>(a.nbr.size());
+  std::vector<int> root(n);
+  std::iota(root.begin(), root.end(), 0);
+  auto find = [&](int t) {
+    while (root[t] != t)
+      t = root[t] = root[root[t]]; // path halving
+    return t;
+  };
+  for (int t = 0; t < n; ++t)
     for (int i = 0; i < 3; ++i)
     {
       const int u = a.nbr[t][i];
-      if (u >= 0 && !((a.constrained[t] >> i) & 1) && labels[u] == -1)
-      {
-        labels[u] = label;
-        stack.push_back(u);
-      }
+      if (u < 0 || u > t || ((a.constrained[t] >> i) & 1))
+        continue;
+      // The smaller index becomes the root: links only ever point down.
+      const int ru = find(u), rt = find(t);
+      if (ru < rt)
+        root[rt] = ru;
+      else
+        root[ru] = rt;
     }
-  }
+  for (int t = 0; t < n; ++t)
+    root[t] = root[root[t]]; // root[t] <= t is final already
+  return root;
 }
 
-/// Finds the triangle under a point among those still unlabelled: a uniform
-/// grid of their bounding boxes, about one cell per triangle, so locating many
-/// hole seeds stays linear. Labelled triangles (the exterior, removed first)
+/// Finds the triangle under a point among those not removed: a uniform grid
+/// of their bounding boxes, about one cell per triangle, so locating many hole
+/// seeds stays linear. Triangles removed before it is built (the exterior)
 /// are left out: they include the largest ones, where the box is padded, which
-/// would each cover a large share of the cells.
+/// would each cover a large share of the cells. removed is per component.
 class TriangleGrid
 {
 public:
-  TriangleGrid(
-    const std::vector<Point>& P, const std::vector<Triangle>& tris, const std::vector<int>& labels)
+  TriangleGrid(const std::vector<Point>& P, const std::vector<Triangle>& tris,
+    const std::vector<int>& component, const std::vector<char>& removed)
     : P(P)
     , tris(tris)
   {
     std::vector<int> candidates;
     for (int t = 0; t < static_cast<int>(tris.size()); ++t)
-      if (labels[t] == -1)
+      if (!removed[component[t]])
         candidates.push_back(t);
     if (candidates.empty())
     {
@@ -173,8 +183,9 @@ public:
     }
   }
 
-  /// A triangle with the given label whose closure contains q, or -1.
-  int find(const Point& q, const std::vector<int>& labels, int label) const
+  /// A triangle not removed whose closure contains q, or -1.
+  int find(
+    const Point& q, const std::vector<int>& component, const std::vector<char>& removed) const
   {
     if (q.x < lo.x || q.x > hi.x || q.y < lo.y || q.y > hi.y)
       return -1;
@@ -184,7 +195,7 @@ public:
     {
       const int t = items[k];
       const Point &a = P[tris[t][0]], &b = P[tris[t][1]], &d = P[tris[t][2]];
-      if (labels[t] == label && orient2d(a, b, q) >= 0 && orient2d(b, d, q) >= 0 &&
+      if (!removed[component[t]] && orient2d(a, b, q) >= 0 && orient2d(b, d, q) >= 0 &&
         orient2d(d, a, q) >= 0)
         return t;
     }
@@ -226,37 +237,35 @@ Carving carveDomain(const std::vector<Point>& P, const std::vector<Triangle>& tr
   KnownAdjacency known)
 {
   const KnownAdjacency a = adjacency(tris, constrained, std::move(known));
-  const int removed = -2;
-  std::vector<int> labels(tris.size(), -1);
+  std::vector<int> component = components(a);
+  std::vector<char> removed(tris.size(), 0); // per component
   if (removeExterior)
-  {
-    std::vector<int> seeds;
     for (int t = 0; t < static_cast<int>(tris.size()); ++t)
       if (a.nbr[t][0] < 0 || a.nbr[t][1] < 0 || a.nbr[t][2] < 0)
-        seeds.push_back(t);
-    flood(seeds, removed, a, labels);
-  }
+        removed[component[t]] = 1;
   Carving out;
   if (!holes.empty())
   {
-    const TriangleGrid grid(P, tris, labels);
+    const TriangleGrid grid(P, tris, component, removed);
     for (std::size_t h = 0; h < holes.size(); ++h)
     {
-      const int t = grid.find(holes[h], labels, -1);
+      const int t = grid.find(holes[h], component, removed);
       if (t >= 0)
-        flood({ t }, removed, a, labels);
+        removed[component[t]] = 1;
       else
         out.unusedHoles.push_back(static_cast<int>(h));
     }
   }
+  // Regions are numbered in the order of their smallest triangle index: a
+  // component's root comes before its other triangles, which take its id.
   int next = 0;
+  out.regionId = std::move(component);
   for (int t = 0; t < static_cast<int>(tris.size()); ++t)
-    if (labels[t] == -1)
-      flood({ t }, next++, a, labels);
+  {
+    const int root = out.regionId[t];
+    out.regionId[t] = root != t ? out.regionId[root] : removed[t] ? -1 : next++;
+  }
   out.regions = static_cast<std::size_t>(next);
-  out.regionId = std::move(labels);
-  for (int& id : out.regionId)
-    id = std::max(id, -1);
   return out;
 }
 
