@@ -100,12 +100,19 @@ public:
   Overlay refine();
 
 private:
+  /// A triangle made by an insertion has the new vertex at index 2, so a
+  /// slot and that vertex name one triangle over the whole run: an item whose
+  /// slot holds another apex is stale (its triangle was destroyed).
   struct Item
   {
     int tri;
-    std::uint32_t gen;
+    int apex;
   };
 
+  bool standing(const Item& item) const
+  {
+    return mesh.alive(item.tri) && mesh.tri[item.tri].v[2] == item.apex;
+  }
   void makeBox();
   void enqueueIfNeeded(int t);
   void refineTriangle(int t);
@@ -128,9 +135,8 @@ private:
 
   Overlay out;
   Triangulation& mesh = out.mesh;
-  /// Per triangle slot: bumped on every reuse of the slot. A triangle's
-  /// bucket (its first waiting input point, -1 if none) is its slot's info.
-  std::vector<std::uint32_t> gen;
+  // A triangle's bucket (its first waiting input point, -1 if none) is its
+  // slot's info.
   std::vector<int> bucketNext; ///< per input point: next in its bucket
   /// Per input point (in Hilbert order, near in memory as insertion proceeds):
   /// its mesh vertex; out.inputVertex gets it in the caller's order at the end.
@@ -160,7 +166,6 @@ void Refiner::makeBox()
   const int t0 = mesh.newTriangle(c0, c1, c2);
   const int t1 = mesh.newTriangle(c0, c2, c3);
   mesh.link(t0, t1);
-  gen.assign(2, 1);
   bucketNext.assign(input.size(), -1);
   // Walk in reverse so buckets list points in (Hilbert) index order.
   for (int i = static_cast<int>(input.size()) - 1; i >= 0; --i)
@@ -188,7 +193,7 @@ void Refiner::enqueueIfNeeded(int t)
       return;
   }
   // The key as refineTriangle computes the radius (only its size class counts).
-  queue.push(dist2(a, Point{ a.x + o.x, a.y + o.y }), { t, gen[t] });
+  queue.push(dist2(a, Point{ a.x + o.x, a.y + o.y }), { t, mesh.tri[t].v[2] });
 }
 
 Overlay Refiner::refine()
@@ -201,7 +206,6 @@ Overlay Refiner::refine()
   {
     mesh.reserve(expected, 2 * expected);
     out.isInput.reserve(expected);
-    gen.reserve(2 * expected);
   }
   catch (const std::bad_alloc&)
   {}
@@ -215,15 +219,15 @@ Overlay Refiner::refine()
   while (!queue.empty())
   {
     const Item item = queue.pop();
-    // A triangle of the same generation is unchanged since it was queued
-    // (refining empties a bucket only by destroying its triangle), so it is
-    // still poor or crowded: no need to test it again.
-    if (!mesh.alive(item.tri) || gen[item.tri] != item.gen)
+    // A triangle still standing is unchanged since it was queued (refining
+    // empties a bucket only by destroying its triangle), so it is still poor
+    // or crowded: no need to test it again.
+    if (!standing(item))
       continue;
     const std::size_t before = mesh.points.size();
     refineTriangle(item.tri);
     // Yielding or splitting the box may leave this triangle standing: retry it.
-    if (mesh.points.size() > before && mesh.alive(item.tri) && gen[item.tri] == item.gen)
+    if (mesh.points.size() > before && standing(item))
       enqueueIfNeeded(item.tri);
     run.tick(input.empty() ? 1.0 : double(inserted) / double(input.size()));
   }
@@ -365,11 +369,7 @@ bool Refiner::insertVertex(const Point& p, int start, int inputIndex, bool cavit
     vertexOf[inputIndex] = v;
     ++inserted;
   }
-  if (gen.size() < static_cast<std::size_t>(mesh.slots()))
-    gen.resize(mesh.slots() + 4096); // ahead, not at every new slot
   // The new triangles' buckets start empty (newTriangle resets info).
-  for (int u : created)
-    ++gen[u];
   distribute(v, created);
   for (int u : created)
     enqueueIfNeeded(u);

@@ -76,7 +76,8 @@ public:
 
   /// Replace the cavity by a fan around the new vertex v (a point already added).
   /// Returns false, changing nothing, if the cavity is not star-shaped from v.
-  /// created receives the new triangles in counter-clockwise order around v.
+  /// created receives the new triangles in counter-clockwise order around v,
+  /// each with v as its vertex 2.
   bool insertIntoCavity(int v, const Cavity& cavity, std::vector<int>& created);
 
 private:

@@ -186,3 +186,35 @@ TEST(Triangulation, LocateGivesUpOnACycleInsteadOfHanging)
   // On the same triangles a point inside t0 is still found at once.
   EXPECT_EQ(T.locate({ 0.2, 0.2 }, t0), t0);
 }
+
+TEST(Triangulation, InsertionPutsTheNewVertexAtIndex2)
+{
+  // The refinement's queue tells a standing triangle from a stale item by
+  // its slot and vertex 2: every triangle an insertion makes must have the
+  // new vertex there, and be counter-clockwise.
+  Triangulation T;
+  const int c0 = T.addPoint({ -4, -4 }), c1 = T.addPoint({ 4, -4 });
+  const int c2 = T.addPoint({ 4, 4 }), c3 = T.addPoint({ -4, 4 });
+  const int t0 = T.newTriangle(c0, c1, c2), t1 = T.newTriangle(c0, c2, c3);
+  T.link(t0, t1);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> U(-3, 3);
+  Triangulation::Cavity cavity;
+  std::vector<int> created;
+  for (int k = 0; k < 500; ++k)
+  {
+    const Point p{ U(rng), U(rng) };
+    const int start = T.locate(p, T.vtri[c0]);
+    ASSERT_GE(start, 0);
+    if (!T.cavityOf(p, start, cavity))
+      continue;
+    const int v = T.addPoint(p);
+    ASSERT_TRUE(T.insertIntoCavity(v, cavity, created));
+    for (int t : created)
+    {
+      EXPECT_EQ(T.tri[t].v[2], v);
+      EXPECT_GT(orient2d(T.vertex(t, 0), T.vertex(t, 1), T.vertex(t, 2)), 0);
+    }
+  }
+  expectDelaunay(T);
+}
