@@ -101,7 +101,8 @@ public:
 
 private:
   /// A triangle made by an insertion has the new vertex at index 2, so a
-  /// slot and that vertex name one triangle over the whole run: an item whose
+  /// slot and that vertex name one triangle over the whole run (a failed
+  /// insertion makes none, so its vertex index may come again): an item whose
   /// slot holds another apex is stale (its triangle was destroyed).
   struct Item
   {

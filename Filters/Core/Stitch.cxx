@@ -66,11 +66,11 @@ OverlayEdges compactOverlay(const Triangulation& mesh)
   return ov;
 }
 
-int OverlayEdges::edgeId(int c, int i) const
+int OverlayEdges::twin(int c, int i) const
 {
   const int u = nbr[c][i];
-  if (u < 0 || c < u)
-    return 3 * c + i;
+  if (u < 0)
+    return -1;
   const std::array<int, 3>& back = nbr[u];
   return 3 * u + (back[0] == c ? 0 : back[1] == c ? 1 : 2);
 }
@@ -416,9 +416,8 @@ enum HalfEdgeFlag : std::uint8_t
 void flagEdge(const OverlayEdges& ov, std::vector<std::uint8_t>& flags, int id, std::uint8_t flag)
 {
   flags[id] |= flag;
-  const int c = id / 3, u = ov.nbr[c][id % 3];
-  if (u >= 0)
-    flags[3 * u + localIndex(ov.nbr[u], c)] |= flag;
+  if (const int other = ov.twin(id / 3, id % 3); other >= 0)
+    flags[other] |= flag;
 }
 
 /// Per overlay triangle: its index among the triangles that no segment

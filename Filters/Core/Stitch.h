@@ -38,8 +38,15 @@ struct OverlayEdges
     const int u = nbr[h / 3][h % 3];
     return u < 0 || h / 3 < u;
   }
+  /// The half-edge of the neighbour across edge i of triangle c that faces
+  /// back, or -1 on the box's boundary.
+  int twin(int c, int i) const;
   /// The id of edge i of triangle c.
-  int edgeId(int c, int i) const;
+  int edgeId(int c, int i) const
+  {
+    const int u = nbr[c][i];
+    return u < 0 || c < u ? 3 * c + i : twin(c, i);
+  }
   /// The ends of an edge, in the order of the triangle its id names.
   Segment ends(int id) const
   {

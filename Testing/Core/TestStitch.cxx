@@ -72,6 +72,15 @@ TEST(Stitch, EdgeIdsNameEveryOverlayEdgeOnce)
       EXPECT_EQ(std::minmax(e[0], e[1]), std::minmax(a, b));
       const int u = ov.nbr[c][i];
       EXPECT_EQ(id / 3, u < 0 ? c : std::min(c, u));
+      // The twin is u's half-edge back to c.
+      const int twin = ov.twin(c, i);
+      if (u < 0)
+        EXPECT_EQ(twin, -1);
+      else
+      {
+        EXPECT_EQ(twin / 3, u);
+        EXPECT_EQ(ov.nbr[u][twin % 3], c);
+      }
     }
   std::size_t ids = 0;
   for (int h = 0; h < static_cast<int>(ov.idBound()); ++h)
