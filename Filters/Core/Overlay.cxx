@@ -240,6 +240,7 @@ Overlay Refiner::refine()
         " was not inserted" };
     out.inputVertex[original[i]] = vertexOf[i];
   }
+  mesh.releaseInsertionScratch();
   renumberAlongHilbertCurve(out);
   return std::move(out);
 }

@@ -49,6 +49,13 @@ void Triangulation::releaseTriangles()
   std::vector<int>().swap(freeSlots);
 }
 
+void Triangulation::releaseInsertionScratch()
+{
+  std::vector<int>().swap(fanByVertex);
+  std::vector<FanTriangle>().swap(fan);
+  std::vector<int>().swap(ordered);
+}
+
 void Triangulation::freeTriangle(int t)
 {
   tri[t].v = { -1, -1, -1 };

@@ -48,6 +48,9 @@ public:
   void reserve(std::size_t pointCount, std::size_t triangleCount);
   /// Drops every triangle and gives its memory back, keeping the points.
   void releaseTriangles();
+  /// Gives back the scratch memory insertion keeps between calls (an array
+  /// over the vertices): once insertions are over, it only adds to the peak.
+  void releaseInsertionScratch();
   const Point& vertex(int t, int i) const { return points[tri[t].v[i]]; }
 
   /// Set the neighbour links of two triangles sharing the edge (a, b).

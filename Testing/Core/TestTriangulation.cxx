@@ -218,3 +218,41 @@ TEST(Triangulation, InsertionPutsTheNewVertexAtIndex2)
   }
   expectDelaunay(T);
 }
+
+TEST(Triangulation, LargeFanIsLinkedAroundTheNewVertexInOrder)
+{
+  // The centre of a circle of points has them all in its cavity: a fan far
+  // larger than refinement makes, which insertion matches by sorting.
+  Triangulation T;
+  const int c0 = T.addPoint({ -4, -4 }), c1 = T.addPoint({ 4, -4 });
+  const int c2 = T.addPoint({ 4, 4 }), c3 = T.addPoint({ -4, 4 });
+  const int t0 = T.newTriangle(c0, c1, c2), t1 = T.newTriangle(c0, c2, c3);
+  T.link(t0, t1);
+  Triangulation::Cavity cavity;
+  std::vector<int> created;
+  auto insert = [&](const Point& p) {
+    const int start = T.locate(p, T.vtri[c0]);
+    EXPECT_GE(start, 0);
+    EXPECT_TRUE(T.cavityOf(p, start, cavity));
+    const int v = T.addPoint(p);
+    EXPECT_TRUE(T.insertIntoCavity(v, cavity, created));
+    return v;
+  };
+  const int n = 64;
+  const double pi = std::acos(-1.0);
+  for (int k = 0; k < n; ++k)
+    insert({ std::cos(2 * pi * k / n), std::sin(2 * pi * k / n) });
+  const int v = insert({ 0.01, 0.02 });
+  ASSERT_GE(created.size(), std::size_t(n));
+  for (std::size_t k = 0; k < created.size(); ++k)
+  {
+    const int t = created[k], next = created[(k + 1) % created.size()];
+    EXPECT_EQ(T.tri[t].v[2], v);
+    // Counter-clockwise around v: each triangle's successor is across its
+    // edge (b, v), and faces back across the successor's edge (v, b).
+    EXPECT_EQ(T.tri[t].n[0], next) << "fan position " << k;
+    EXPECT_EQ(T.tri[next].n[1], t) << "fan position " << k;
+    EXPECT_EQ(T.tri[t].v[1], T.tri[next].v[0]);
+  }
+  expectDelaunay(T);
+}
