@@ -8,7 +8,7 @@
 #    command-line tool when the tree has it, and no tests;
 # 2. builds the drivers (bench/bench_*) and osm-mesh;
 # 3. runs Testing/Benchmarks/run_benchmarks.py, which writes BENCHMARKS.md at the
-#    top level and Testing/Benchmarks/benchmarks.png (about 40 minutes on 2 cores).
+#    top level and Testing/Benchmarks/benchmarks.png (about 20 minutes on 2 cores).
 #
 # Needs: cmake, ninja, a C++17 compiler, libcgal-dev (CGAL drivers), ParaView's
 # VTK (paraview-dev), valgrind (the profile), python3-matplotlib (the plot),

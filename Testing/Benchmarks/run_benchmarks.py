@@ -69,11 +69,9 @@ CLI_FAMILIES = ("random-segments",)      # osm-mesh end to end: the same, plus t
 TIMEOUT = 120.0        # CPU seconds per run (RLIMIT_CPU); the wall limit is WALL_FACTOR times it
 WALL_FACTOR = 6.0      # the machine is shared: a run may wait for a core that long
 RUNS_FAST = 5          # runs when one takes under FAST_SECONDS (CPU)
-RUNS = 3               # when one takes under SLOW_SECONDS
-RUNS_SLOW = 1          # otherwise: the checked run alone
+RUNS = 3               # otherwise: a median of several, even for the slowest runs
 FAST_SECONDS = 1.0
-SLOW_SECONDS = 10.0
-REPEAT_BUDGET = 120.0  # no further repeat once runs so far + one more would exceed this (wall)
+REPEAT_BUDGET = 240.0  # no further repeat once runs so far + one more would exceed this (wall)
 MEMORY_LIMIT = 12 << 30  # address-space limit of each child (the machine is shared)
 
 
@@ -292,7 +290,7 @@ def measure(exe, spec, args, timeout):
     result["cpu"].append(first.get("cpu_seconds"))
     result["phases"].append(phases_of(first))
     c = first.get("cpu_seconds") or first["seconds"]
-    target = RUNS_FAST if c < FAST_SECONDS else RUNS if c < SLOW_SECONDS else RUNS_SLOW
+    target = RUNS_FAST if c < FAST_SECONDS else RUNS
     spent = first["wall"]
     last = first["wall"]
     core = [first["core_seconds"]] if "core_seconds" in first else None
@@ -1242,11 +1240,11 @@ def notes_text(data, plot_note):
         "(this machine's process CPU clock sometimes reads 0 for them). Wall times are in "
         "the table too. osm-mesh's CPU time is GNU time's user + system time (0.01 s "
         "resolution)." % SHORT_RUN,
-        "- **Runs.** %d runs when one takes under %g CPU s, %d under %g s, else %d; fewer "
-        "when they would exceed %d s of wall time together; the first run also checks the "
-        "output (angles, conformity). Limit per run: %d CPU seconds (RLIMIT_CPU; a run "
-        "killed by it is a time-out), %d s of wall time, %d GiB of address space." % (
-            RUNS_FAST, FAST_SECONDS, RUNS, SLOW_SECONDS, RUNS_SLOW, REPEAT_BUDGET,
+        "- **Runs.** %d runs when one takes under %g CPU s, else %d; fewer when they would "
+        "exceed %d s of wall time together; the first run also checks the output (angles, "
+        "conformity). Limit per run: %d CPU seconds (RLIMIT_CPU; a run killed by it is a "
+        "time-out), %d s of wall time, %d GiB of address space." % (
+            RUNS_FAST, FAST_SECONDS, RUNS, REPEAT_BUDGET,
             meta["timeout"], meta["timeout"] * WALL_FACTOR, MEMORY_LIMIT >> 30),
         "- **Memory.** Peak RSS of the child during the meshing call (the kernel's peak mark "
         "is reset just before it); *B/tri* is its increase over the RSS before the call, so "
