@@ -52,6 +52,16 @@ std::vector<Point> randomPoints(int n, unsigned seed)
   return pts;
 }
 
+/// Two triangles covering the square [-4, 4]^2; its corners are vertices 0 to 3.
+Triangulation squareOfSide8()
+{
+  Triangulation T;
+  const int c0 = T.addPoint({ -4, -4 }), c1 = T.addPoint({ 4, -4 });
+  const int c2 = T.addPoint({ 4, 4 }), c3 = T.addPoint({ -4, 4 });
+  T.link(T.newTriangle(c0, c1, c2), T.newTriangle(c0, c2, c3));
+  return T;
+}
+
 } // namespace
 
 TEST(Triangulation, BulkDelaunayOfRandomAndGridPoints)
@@ -192,11 +202,7 @@ TEST(Triangulation, InsertionPutsTheNewVertexAtIndex2)
   // The refinement's queue tells a standing triangle from a stale item by
   // its slot and vertex 2: every triangle an insertion makes must have the
   // new vertex there, and be counter-clockwise.
-  Triangulation T;
-  const int c0 = T.addPoint({ -4, -4 }), c1 = T.addPoint({ 4, -4 });
-  const int c2 = T.addPoint({ 4, 4 }), c3 = T.addPoint({ -4, 4 });
-  const int t0 = T.newTriangle(c0, c1, c2), t1 = T.newTriangle(c0, c2, c3);
-  T.link(t0, t1);
+  Triangulation T = squareOfSide8();
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> U(-3, 3);
   Triangulation::Cavity cavity;
@@ -204,7 +210,7 @@ TEST(Triangulation, InsertionPutsTheNewVertexAtIndex2)
   for (int k = 0; k < 500; ++k)
   {
     const Point p{ U(rng), U(rng) };
-    const int start = T.locate(p, T.vtri[c0]);
+    const int start = T.locate(p, T.vtri[0]);
     ASSERT_GE(start, 0);
     if (!T.cavityOf(p, start, cavity))
       continue;
@@ -222,16 +228,12 @@ TEST(Triangulation, InsertionPutsTheNewVertexAtIndex2)
 TEST(Triangulation, LargeFanIsLinkedAroundTheNewVertexInOrder)
 {
   // The centre of a circle of points has them all in its cavity: a fan far
-  // larger than refinement makes, which insertion matches by sorting.
-  Triangulation T;
-  const int c0 = T.addPoint({ -4, -4 }), c1 = T.addPoint({ 4, -4 });
-  const int c2 = T.addPoint({ 4, 4 }), c3 = T.addPoint({ -4, 4 });
-  const int t0 = T.newTriangle(c0, c1, c2), t1 = T.newTriangle(c0, c2, c3);
-  T.link(t0, t1);
+  // larger than refinement makes.
+  Triangulation T = squareOfSide8();
   Triangulation::Cavity cavity;
   std::vector<int> created;
   auto insert = [&](const Point& p) {
-    const int start = T.locate(p, T.vtri[c0]);
+    const int start = T.locate(p, T.vtri[0]);
     EXPECT_GE(start, 0);
     EXPECT_TRUE(T.cavityOf(p, start, cavity));
     const int v = T.addPoint(p);
