@@ -47,6 +47,7 @@ void Triangulation::releaseTriangles()
   std::vector<Slot>().swap(tri);
   std::vector<int>().swap(vtri);
   std::vector<int>().swap(freeSlots);
+  releaseInsertionScratch();
 }
 
 void Triangulation::releaseInsertionScratch()

@@ -50,6 +50,7 @@ public:
   void releaseTriangles();
   /// Gives back the scratch memory insertion keeps between calls (an array
   /// over the vertices): once insertions are over, it only adds to the peak.
+  /// A later insertion allocates it again.
   void releaseInsertionScratch();
   const Point& vertex(int t, int i) const { return points[tri[t].v[i]]; }
 

@@ -201,7 +201,8 @@ TEST(Triangulation, InsertionPutsTheNewVertexAtIndex2)
 {
   // The refinement's queue tells a standing triangle from a stale item by
   // its slot and vertex 2: every triangle an insertion makes must have the
-  // new vertex there, and be counter-clockwise.
+  // new vertex there, and be counter-clockwise. Halfway, the insertion
+  // scratch is given back: insertion must work on without it.
   Triangulation T = squareOfSide8();
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> U(-3, 3);
@@ -209,6 +210,8 @@ TEST(Triangulation, InsertionPutsTheNewVertexAtIndex2)
   std::vector<int> created;
   for (int k = 0; k < 500; ++k)
   {
+    if (k == 250)
+      T.releaseInsertionScratch();
     const Point p{ U(rng), U(rng) };
     const int start = T.locate(p, T.vtri[0]);
     ASSERT_GE(start, 0);
