@@ -1,0 +1,183 @@
+// Allocation failure injected into the mesher, one large allocation at a time.
+//
+// The mesher reserves its large arrays up front and falls back to growing them
+// when the reservation fails (strict overcommit, little address space). This
+// executable replaces the global operator new so that the k-th large
+// allocation of a mesh call throws std::bad_alloc, for every k in turn. Each
+// run must end either with the same mesh as without the failure (the failure
+// hit a reservation that has a fallback) or with the clean "out of memory"
+// error: never a crash, a hang, a changed mesh or a partial result.
+// It is its own executable because the replacement applies to the whole
+// program.
+
+#include "Mesher.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+#include <random>
+#include <string>
+
+namespace
+{
+
+/// Only allocations of at least this size count: the mesher's arrays, not
+/// the small strings and scratch of its bookkeeping.
+constexpr std::size_t kLarge = 16 * 1024;
+
+std::atomic<bool> counting{ false };
+std::atomic<long> largeSeen{ 0 };
+std::atomic<long> failAt{ -1 };
+
+void failIfChosen(std::size_t n)
+{
+  if (n >= kLarge && counting.load() && largeSeen.fetch_add(1) == failAt.load())
+    throw std::bad_alloc();
+}
+
+void* allocate(std::size_t n)
+{
+  failIfChosen(n);
+  if (void* p = std::malloc(n == 0 ? 1 : n))
+    return p;
+  throw std::bad_alloc();
+}
+
+/// Over-aligned types (the triangulation's 32-byte slots) come here.
+void* allocateAligned(std::size_t n, std::align_val_t alignment)
+{
+  failIfChosen(n);
+  const std::size_t a = static_cast<std::size_t>(alignment);
+  // aligned_alloc wants a size that is a multiple of the alignment.
+  if (void* p = std::aligned_alloc(a, (n + a - 1) / a * a + (n == 0 ? a : 0)))
+    return p;
+  throw std::bad_alloc();
+}
+
+} // namespace
+
+void* operator new(std::size_t n)
+{
+  return allocate(n);
+}
+void* operator new[](std::size_t n)
+{
+  return allocate(n);
+}
+void* operator new(std::size_t n, std::align_val_t a)
+{
+  return allocateAligned(n, a);
+}
+void* operator new[](std::size_t n, std::align_val_t a)
+{
+  return allocateAligned(n, a);
+}
+void operator delete(void* p, std::align_val_t) noexcept
+{
+  std::free(p);
+}
+void operator delete[](void* p, std::align_val_t) noexcept
+{
+  std::free(p);
+}
+void operator delete(void* p, std::size_t, std::align_val_t) noexcept
+{
+  std::free(p);
+}
+void operator delete[](void* p, std::size_t, std::align_val_t) noexcept
+{
+  std::free(p);
+}
+void operator delete(void* p) noexcept
+{
+  std::free(p);
+}
+void operator delete[](void* p) noexcept
+{
+  std::free(p);
+}
+void operator delete(void* p, std::size_t) noexcept
+{
+  std::free(p);
+}
+void operator delete[](void* p, std::size_t) noexcept
+{
+  std::free(p);
+}
+
+namespace osm
+{
+namespace
+{
+
+/// Random points inside a square with a triangular hole: every phase runs
+/// (refinement, stitching with crossings, completion, carving a hole).
+Pslg squareWithHole()
+{
+  Pslg in;
+  in.points = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 }, { 0.4, 0.4 }, { 0.6, 0.4 }, { 0.5, 0.6 } };
+  in.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 }, { 4, 5 }, { 5, 6 }, { 6, 4 } };
+  in.holes = { { 0.5, 0.45 } };
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(0.01, 0.99);
+  while (in.points.size() < 3000)
+    in.points.push_back({ u(rng), u(rng) });
+  return in;
+}
+
+/// Mesh with the k-th large allocation failing (k < 0: none); returns the
+/// number of large allocations made.
+long meshFailingAt(const Pslg& in, long k, Result& r)
+{
+  largeSeen = 0;
+  failAt = k;
+  counting = true;
+  r = mesh(in, Options{});
+  counting = false;
+  return largeSeen.load();
+}
+
+bool sameMesh(const Result& a, const Result& b)
+{
+  return a.mesh.vertices == b.mesh.vertices && a.mesh.triangles == b.mesh.triangles &&
+    a.regionId == b.regionId && a.vertexOrigin == b.vertexOrigin && a.inputVertex == b.inputVertex;
+}
+
+TEST(AllocationFailure, EveryLargeAllocationFailsCleanlyOrFallsBack)
+{
+  const Pslg in = squareWithHole();
+  Result reference;
+  const long large = meshFailingAt(in, -1, reference);
+  ASSERT_TRUE(reference.ok) << reference.error;
+  ASSERT_GT(reference.mesh.triangles.size(), 10000u);
+  ASSERT_GT(large, 10) << "the input is too small to exercise the large arrays";
+
+  long same = 0, outOfMemory = 0;
+  for (long k = 0; k < large; ++k)
+  {
+    Result r;
+    meshFailingAt(in, k, r);
+    if (r.ok)
+    {
+      EXPECT_TRUE(sameMesh(r, reference)) << "allocation " << k << " failed: the mesh changed";
+      ++same;
+    }
+    else
+    {
+      EXPECT_EQ(r.error.rfind("out of memory", 0), 0u)
+        << "allocation " << k << " failed: " << r.error;
+      EXPECT_TRUE(r.mesh.triangles.empty()) << "allocation " << k << ": partial mesh";
+      ++outOfMemory;
+    }
+  }
+  // The fallbacks: the refinement reserves its points, vertex links, triangle
+  // slots and input flags (Overlay.cxx), compaction its triangles and
+  // neighbours (Stitch.cxx). Every other large allocation is needed.
+  EXPECT_EQ(same, 6) << "of " << large << " large allocations";
+  EXPECT_EQ(outOfMemory, large - same);
+}
+
+} // namespace
+} // namespace osm
