@@ -10,13 +10,16 @@
 # 3. runs Testing/Benchmarks/run_benchmarks.py, which writes BENCHMARKS.md at the
 #    top level and Testing/Benchmarks/benchmarks.png (about 20 minutes on 2 cores).
 #
-# Needs: cmake, ninja, a C++17 compiler, libcgal-dev (CGAL drivers), ParaView's
-# VTK (paraview-dev), valgrind (the profile), python3-matplotlib (the plot),
-# GNU time (/usr/bin/time, the osm-mesh memory figure). None of them is needed
-# by the project itself; missing ones only drop that part of the suite.
+# It first installs the Debian packages it needs that are missing: the
+# project's own (.ci/common.sh) and, for the suite only, libcgal-dev (the CGAL
+# drivers), valgrind (the profile), python3-matplotlib (the plot) and time (GNU
+# time, the osm-mesh memory figure). The plugin never links CGAL.
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
+source "$root/.ci/common.sh"
+OSM_PACKAGES+=(libcgal-dev valgrind python3-matplotlib time)
+osm_install_packages
 build="${OSM_BENCH_BUILD:-$root/build-bench}"
 vtk_dir="${VTK_DIR:-/usr/lib/x86_64-linux-gnu/cmake/paraview-5.11/vtk}"
 
