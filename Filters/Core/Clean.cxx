@@ -1,5 +1,7 @@
 #include "Clean.h"
 
+#include "HugePages.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -102,7 +104,8 @@ void mergeDuplicates(
       if (example < 0)
         example = static_cast<int>(i);
     }
-  out.pointOf.assign(n, -1);
+  assignHuge(out.pointOf, n, -1);
+  reserveHuge(out.points, n);
   for (std::size_t i = 0; i < n; ++i)
   {
     const int r = representative[i];

@@ -1,5 +1,6 @@
 #include "Complete.h"
 
+#include "HugePages.h"
 #include "Predicates.h"
 
 #include <algorithm>
@@ -142,7 +143,7 @@ Rotation buildRotation(const PlanarGraph& g)
   const int n = static_cast<int>(g.points.size());
   const int ne = static_cast<int>(g.edges.size());
   Rotation r;
-  r.start.assign(n + 1, 0);
+  assignHuge(r.start, n + 1, 0);
   for (int e = 0; e < ne; ++e)
   {
     if (!g.openSides[e])

@@ -1,5 +1,6 @@
 #include "Domain.h"
 
+#include "HugePages.h"
 #include "Predicates.h"
 
 #include <algorithm>
@@ -20,10 +21,11 @@ template <typename ForEach>
 void bucketByLo(
   int n, ForEach&& forEach, std::vector<int>& start, std::vector<std::array<int, 2>>& items)
 {
-  start.assign(static_cast<std::size_t>(n) + 1, 0);
+  assignHuge(start, static_cast<std::size_t>(n) + 1, 0);
   forEach([&](int lo, int, int) { ++start[lo + 1]; });
   for (int v = 0; v < n; ++v)
     start[v + 1] += start[v];
+  reserveHuge(items, static_cast<std::size_t>(start[n]));
   items.resize(start[n]);
   std::vector<int> fill(start.begin(), start.end() - 1);
   forEach([&](int lo, int hi, int id) { items[fill[lo]++] = { hi, id }; });
@@ -76,7 +78,10 @@ KnownAdjacency adjacency(
     constrainedStart, constrainedEdges);
   // Per larger vertex hi, valid while its stamp is the current lo: (lo, hi) is
   // constrained; the last edge seen with ends (lo, hi).
-  std::vector<int> constrainedStamp(n, -1), lastStamp(n, -1), last(n, -1);
+  std::vector<int> constrainedStamp, lastStamp, last;
+  assignHuge(constrainedStamp, static_cast<std::size_t>(n), -1);
+  assignHuge(lastStamp, static_cast<std::size_t>(n), -1);
+  assignHuge(last, static_cast<std::size_t>(n), -1);
   for (int lo = 0; lo < n; ++lo)
   {
     for (int k = constrainedStart[lo]; k < constrainedStart[lo + 1]; ++k)
@@ -107,7 +112,8 @@ KnownAdjacency adjacency(
 std::vector<int> components(const KnownAdjacency& a)
 {
   const int n = static_cast<int>(a.nbr.size());
-  std::vector<int> root(n);
+  std::vector<int> root;
+  assignHuge(root, static_cast<std::size_t>(n), 0);
   std::iota(root.begin(), root.end(), 0);
   auto find = [&](int t) {
     while (root[t] != t)
@@ -238,7 +244,8 @@ Carving carveDomain(const std::vector<Point>& P, const std::vector<Triangle>& tr
 {
   const KnownAdjacency a = adjacency(tris, constrained, std::move(known));
   std::vector<int> component = components(a);
-  std::vector<char> removed(tris.size(), 0); // per component
+  std::vector<char> removed; // per component
+  assignHuge(removed, tris.size(), char{ 0 });
   if (removeExterior)
     for (int t = 0; t < static_cast<int>(tris.size()); ++t)
       if (a.nbr[t][0] < 0 || a.nbr[t][1] < 0 || a.nbr[t][2] < 0)

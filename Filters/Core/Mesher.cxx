@@ -5,6 +5,7 @@
 #include "Clean.h"
 #include "Complete.h"
 #include "Domain.h"
+#include "HugePages.h"
 #include "Overlay.h"
 #include "Predicates.h"
 #include "RunContext.h"
@@ -446,10 +447,11 @@ void Mesher::buildOutput(const Work& w, const PlanarGraph& g, Completion& c, Car
         true, p };
     return u;
   };
-  std::vector<int> newIndex(g.points.size(), -1);
+  std::vector<int> newIndex;
+  assignHuge(newIndex, g.points.size(), -1);
   // Upper bounds: room never touched costs nothing, growing copies.
-  res.mesh.vertices.reserve(g.points.size());
-  res.vertexOrigin.reserve(g.points.size());
+  reserveHuge(res.mesh.vertices, g.points.size());
+  reserveHuge(res.vertexOrigin, g.points.size());
   // The kept triangles and their region ids move down in place.
   res.mesh.triangles = std::move(c.triangles);
   res.regionId = std::move(carve.regionId);

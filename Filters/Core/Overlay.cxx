@@ -11,6 +11,7 @@
 // quality Delaunay mesh throughout, which bounds the work.
 #include "Overlay.h"
 
+#include "HugePages.h"
 #include "Predicates.h"
 #include "SizeQueue.h"
 #include "SpatialSort.h"
@@ -60,14 +61,18 @@ void renumberAlongHilbertCurve(Overlay& overlay)
     return;
   // The box corners stay 0..3; the others follow the curve.
   const std::vector<int> order = hilbertOrder(mesh.points.data() + 4, n - 4);
-  std::vector<int> newIndex(n);
+  std::vector<int> newIndex;
+  assignHuge(newIndex, n, 0);
   for (int v = 0; v < 4; ++v)
     newIndex[v] = v;
   for (int k = 0; k < n - 4; ++k)
     newIndex[order[k] + 4] = k + 4;
-  std::vector<Point> points(n);
-  std::vector<int> vtri(n);
-  std::vector<char> isInput(n);
+  std::vector<Point> points;
+  std::vector<int> vtri;
+  std::vector<char> isInput;
+  assignHuge(points, n, Point{});
+  assignHuge(vtri, n, 0);
+  assignHuge(isInput, n, char{ 0 });
   for (int v = 0; v < n; ++v)
   {
     points[newIndex[v]] = mesh.points[v];
@@ -167,7 +172,7 @@ void Refiner::makeBox()
   const int t0 = mesh.newTriangle(c0, c1, c2);
   const int t1 = mesh.newTriangle(c0, c2, c3);
   mesh.link(t0, t1);
-  bucketNext.assign(input.size(), -1);
+  assignHuge(bucketNext, input.size(), -1);
   // Walk in reverse so buckets list points in (Hilbert) index order.
   for (int i = static_cast<int>(input.size()) - 1; i >= 0; --i)
   {
@@ -206,12 +211,12 @@ Overlay Refiner::refine()
   try
   {
     mesh.reserve(expected, 2 * expected);
-    out.isInput.reserve(expected);
+    reserveHuge(out.isInput, expected);
   }
   catch (const std::bad_alloc&)
   {}
   makeBox();
-  vertexOf.assign(input.size(), -1);
+  assignHuge(vertexOf, input.size(), -1);
   // Overlay size is O(n log(L/s)); doubles bound log(L/s), so this cap only
   // catches a numerical runaway, turning a hang into a clear error.
   hardCap = 1000 * input.size() + 1000000;

@@ -1,5 +1,6 @@
 #include "Stitch.h"
 
+#include "HugePages.h"
 #include "Predicates.h"
 
 #include <algorithm>
@@ -19,21 +20,23 @@ OverlayEdges compactOverlay(const Triangulation& mesh)
   const auto lowest = [&](int t) {
     return std::min({ mesh.tri[t].v[0], mesh.tri[t].v[1], mesh.tri[t].v[2] });
   };
-  std::vector<int> start(mesh.points.size() + 1, 0);
+  std::vector<int> start;
+  assignHuge(start, mesh.points.size() + 1, 0);
   for (int t = 0; t < mesh.slots(); ++t)
     if (mesh.alive(t))
       ++start[lowest(t) + 1];
   for (std::size_t v = 0; v + 1 < start.size(); ++v)
     start[v + 1] += start[v];
-  std::vector<int> index(mesh.slots(), -1);
+  std::vector<int> index;
+  assignHuge(index, static_cast<std::size_t>(mesh.slots()), -1);
   // Stitching makes the intact triangles and their adjacency out of tris and
   // nbr in place, and completion appends to them: room now (untouched, it
   // costs only address space) spares copying them then.
   const std::size_t n = start.back(), room = n + n / 2 + 64;
   try
   {
-    ov.tris.reserve(room);
-    ov.nbr.reserve(room);
+    reserveHuge(ov.tris, room);
+    reserveHuge(ov.nbr, room);
   }
   catch (const std::bad_alloc&)
   {}
@@ -59,7 +62,7 @@ OverlayEdges compactOverlay(const Triangulation& mesh)
     }
   }
   // In this order, near in space, vtri is written near in memory too.
-  ov.vtri.assign(mesh.points.size(), -1);
+  assignHuge(ov.vtri, mesh.points.size(), -1);
   for (int c = 0; c < static_cast<int>(ov.tris.size()); ++c)
     for (int v : ov.tris[c])
       ov.vtri[v] = c;
@@ -424,7 +427,8 @@ void flagEdge(const OverlayEdges& ov, std::vector<std::uint8_t>& flags, int id, 
 /// crosses (faces of the stitched graph as they are), or -1.
 std::vector<int> numberIntact(const std::vector<std::uint8_t>& flags, int& count)
 {
-  std::vector<int> intactIndex(flags.size() / 3, -1);
+  std::vector<int> intactIndex;
+  assignHuge(intactIndex, flags.size() / 3, -1);
   count = 0;
   for (std::size_t c = 0; c < intactIndex.size(); ++c)
     if (!((flags[3 * c] | flags[3 * c + 1] | flags[3 * c + 2]) & HalfCrossed))
@@ -441,7 +445,7 @@ void listIntact(OverlayEdges& ov, const std::vector<std::uint8_t>& flags,
   std::vector<Triangle> tris = std::move(ov.tris);
   std::vector<std::array<int, 3>> nbrs = std::move(ov.nbr);
   KnownAdjacency& known = g.intactAdjacency;
-  known.constrained.reserve(count);
+  reserveHuge(known.constrained, static_cast<std::size_t>(count));
   for (std::size_t c = 0; c < tris.size(); ++c)
   {
     const int k = intactIndex[c];
@@ -488,12 +492,12 @@ PlanarGraph stitch(OverlayEdges ov, std::vector<Point> points, const std::vector
   const std::size_t overlayVertices = points.size();
   g.points = std::move(points);
   g.points.reserve(overlayVertices + nc);
-  g.origin.reserve(overlayVertices + nc);
+  reserveHuge(g.origin, overlayVertices + nc);
   g.origin.resize(overlayVertices);
   const std::size_t edgeBound = ne / 2 + 2 * nc + walk.pieces.size();
-  g.edges.reserve(edgeBound);
-  g.constrained.reserve(edgeBound);
-  g.openSides.reserve(edgeBound);
+  reserveHuge(g.edges, edgeBound);
+  reserveHuge(g.constrained, edgeBound);
+  reserveHuge(g.openSides, edgeBound);
   for (std::size_t v = 0; v < g.points.size(); ++v)
     g.origin[v] = isInput[v] ? VertexOrigin::Input : VertexOrigin::Overlay;
   auto addEdge = [&](int a, int b, bool constrained, std::uint8_t open) {
@@ -502,7 +506,8 @@ PlanarGraph stitch(OverlayEdges ov, std::vector<Point> points, const std::vector
     g.openSides.push_back(open);
   };
 
-  std::vector<std::uint8_t> flags(ne, 0);
+  std::vector<std::uint8_t> flags;
+  assignHuge(flags, ne, std::uint8_t{ 0 });
   for (const Crossing& c : walk.crossings)
   {
     if (walk.pieces[c.piece].duplicate)

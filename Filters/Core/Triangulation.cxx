@@ -1,5 +1,6 @@
 #include "Triangulation.h"
 
+#include "HugePages.h"
 #include "Predicates.h"
 
 #include <algorithm>
@@ -10,8 +11,8 @@ namespace osm
 
 int Triangulation::addPoint(const Point& p)
 {
-  points.push_back(p);
-  vtri.push_back(-1);
+  pushBackHuge(points, p);
+  pushBackHuge(vtri, -1);
   return static_cast<int>(points.size()) - 1;
 }
 
@@ -26,7 +27,7 @@ int Triangulation::newTriangle(int a, int b, int c)
   else
   {
     t = slots();
-    tri.push_back(Slot{ { -1, -1, -1 }, { -1, -1, -1 }, 0, -1 });
+    pushBackHuge(tri, Slot{ { -1, -1, -1 }, { -1, -1, -1 }, 0, -1 });
   }
   tri[t].v = { a, b, c };
   tri[t].n = { -1, -1, -1 };
@@ -37,9 +38,9 @@ int Triangulation::newTriangle(int a, int b, int c)
 
 void Triangulation::reserve(std::size_t pointCount, std::size_t triangleCount)
 {
-  points.reserve(pointCount);
-  vtri.reserve(pointCount);
-  tri.reserve(triangleCount);
+  reserveHuge(points, pointCount);
+  reserveHuge(vtri, pointCount);
+  reserveHuge(tri, triangleCount);
 }
 
 void Triangulation::releaseTriangles()
@@ -198,8 +199,9 @@ bool Triangulation::insertIntoCavity(int v, const Cavity& cavity, std::vector<in
   }
   for (int t : cavity.triangles)
     freeTriangle(t);
+  // Not at every new point; every entry is -1 between insertions.
   if (fanByVertex.size() < points.size())
-    fanByVertex.resize(2 * points.size(), -1); // not at every new point
+    assignHuge(fanByVertex, 2 * points.size(), -1);
   for (const FanTriangle& f : fan)
   {
     const int t = newTriangle(f.a, f.b, v);
