@@ -27,6 +27,7 @@
 #include "vtkUnsignedCharArray.h"
 
 #include "Geometry.h"
+#include "HugePages.h"
 #include "Mesher.h"
 #include "OverlayStitchGather.h"
 #include "Plane.h"
@@ -263,6 +264,14 @@ void ReadSegments(
   }
 }
 
+/// The core's huge-page advice (HugePages.h) for an array just sized and not
+/// yet filled: the output arrays of a large mesh are hundreds of megabytes.
+void AdviseHugePages(vtkDataArray* array)
+{
+  osm::adviseHugePages(array->GetVoidPointer(0),
+    static_cast<std::size_t>(array->GetDataSize()) * array->GetDataTypeSize());
+}
+
 /// Builds a vtkCellArray in bulk from offsets and connectivity.
 template <typename VertexOf>
 vtkSmartPointer<vtkCellArray> MakeCells(
@@ -272,6 +281,8 @@ vtkSmartPointer<vtkCellArray> MakeCells(
   offsets->SetNumberOfValues(static_cast<vtkIdType>(numberOfCells) + 1);
   vtkNew<vtkIdTypeArray> connectivity;
   connectivity->SetNumberOfValues(static_cast<vtkIdType>(numberOfCells) * cellSize);
+  AdviseHugePages(offsets);
+  AdviseHugePages(connectivity);
   vtkIdType next = 0;
   for (std::size_t c = 0; c < numberOfCells; ++c)
   {
@@ -294,6 +305,7 @@ vtkSmartPointer<vtkPoints> MakePoints(const std::vector<osm::Point>& vertices,
   vtkNew<vtkDoubleArray> coordinates;
   coordinates->SetNumberOfComponents(3);
   coordinates->SetNumberOfTuples(static_cast<vtkIdType>(vertices.size()));
+  AdviseHugePages(coordinates);
   for (std::size_t i = 0; i < vertices.size(); ++i)
   {
     const osm::Vec3 q = map.toSpace(vertices[i], inputOf ? (*inputOf)[i] : -1);
@@ -319,6 +331,7 @@ vtkSmartPointer<ArrayT> MakeArray(const char* name, vtkIdType size)
   auto array = vtkSmartPointer<ArrayT>::New();
   array->SetName(name);
   array->SetNumberOfTuples(size);
+  AdviseHugePages(array);
   return array;
 }
 

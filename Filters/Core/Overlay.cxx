@@ -44,7 +44,7 @@ constexpr double kYield = 0.6;
 std::vector<Point> permuted(const std::vector<Point>& points, const std::vector<int>& order)
 {
   std::vector<Point> out;
-  out.reserve(order.size());
+  reserveHuge(out, order.size());
   for (int i : order)
     out.push_back(points[i]);
   return out;

@@ -9,6 +9,8 @@
 #ifndef osm_SizeQueue_h
 #define osm_SizeQueue_h
 
+#include "HugePages.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -27,7 +29,7 @@ public:
   void push(double key, const T& item)
   {
     const int b = bucketOf(key);
-    buckets[b].push_back(item);
+    pushBackHuge(buckets[b], item); // a bucket can hold millions
     top = std::max(top, b);
     ++size;
   }

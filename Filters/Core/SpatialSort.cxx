@@ -1,5 +1,7 @@
 #include "SpatialSort.h"
 
+#include "HugePages.h"
+
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -72,7 +74,8 @@ std::uint32_t hilbertKey(const HilbertTable& table, std::uint32_t x, std::uint32
 
 std::vector<int> hilbertOrder(const Point* points, std::size_t n)
 {
-  std::vector<int> order(n);
+  std::vector<int> order;
+  assignHuge(order, n, 0);
   if (n == 0)
     return order;
   struct Range
@@ -85,7 +88,8 @@ std::vector<int> hilbertOrder(const Point* points, std::size_t n)
   const double size = std::max(b.width(), b.height());
   const double scale = size > 0 ? 65535.0 / size : 0.0;
   static constexpr HilbertTable table{};
-  std::vector<std::uint32_t> keys(n);
+  std::vector<std::uint32_t> keys;
+  assignHuge(keys, n, std::uint32_t{ 0 });
   for (std::size_t i = 0; i < n; ++i)
   {
     const auto x = static_cast<std::uint32_t>((points[i].x - b.lo.x) * scale);
@@ -97,7 +101,8 @@ std::vector<int> hilbertOrder(const Point* points, std::size_t n)
   // bits a pass, so the counters cost nothing next to them.
   const int bits = n < 65536 ? 8 : 16;
   const std::uint32_t mask = (1u << bits) - 1;
-  std::vector<int> from(n);
+  std::vector<int> from;
+  assignHuge(from, n, 0);
   for (std::size_t i = 0; i < from.size(); ++i)
     from[i] = static_cast<int>(i);
   std::vector<std::size_t> count(std::size_t(mask) + 2);
