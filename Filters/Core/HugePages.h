@@ -7,6 +7,9 @@
 // virtual machine). 2 MiB pages remove most of both. Debian's kernels give them
 // only to memory that asks (transparent_hugepage=madvise), so the mesher asks
 // for its own large arrays; the host application's heap stays as it was.
+// Where huge pages cost more than they save (a kernel that compacts memory
+// on every such fault), OSM_NO_HUGE_PAGES=1 in the environment turns the
+// advice off.
 #ifndef osm_HugePages_h
 #define osm_HugePages_h
 
@@ -18,9 +21,13 @@ namespace osm
 
 /// Asks the kernel to back the whole 2 MiB pages inside [p, p + bytes) with
 /// transparent huge pages, where it can (Linux; elsewhere, for ranges under a
-/// few pages, or when the kernel declines, nothing changes). Best called
-/// before the memory is first touched.
+/// few pages, when the kernel declines, or with OSM_NO_HUGE_PAGES set to
+/// anything but 0, nothing changes). Best called before the memory is first
+/// touched.
 void adviseHugePages(const void* p, std::size_t bytes);
+
+/// Whether the advice is on: OSM_NO_HUGE_PAGES unset, empty or 0.
+bool hugePagesWanted();
 
 /// v.reserve(n), then the advice for v's storage.
 template <class T>

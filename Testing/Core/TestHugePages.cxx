@@ -6,6 +6,10 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
 #include <vector>
 
 namespace osm
@@ -53,6 +57,43 @@ TEST(HugePages, AdviceOnAnyRangeIsHarmless)
   adviseHugePages(big.data() + 3, big.size() - 3); // unaligned both ends
   for (char c : big)
     ASSERT_EQ(c, 'x');
+}
+
+/// The VmFlags of the mapping that holds address a (/proc/self/smaps), or ""
+/// where there is no such file.
+std::string mappingFlags(const void* a)
+{
+  std::ifstream smaps("/proc/self/smaps");
+  const auto at = reinterpret_cast<std::uintptr_t>(a);
+  bool inside = false;
+  for (std::string line; std::getline(smaps, line);)
+  {
+    std::uintptr_t lo = 0, hi = 0;
+    char dash = 0;
+    std::istringstream head(line);
+    if (head >> std::hex >> lo >> dash >> hi && dash == '-')
+      inside = lo <= at && at < hi;
+    else if (inside && line.rfind("VmFlags:", 0) == 0)
+      return line;
+  }
+  return "";
+}
+
+// madvise marks the mapping (VmFlags "hg") whatever memory the kernel has
+// free, so this checks that the advice is given, and not given when
+// OSM_NO_HUGE_PAGES is set (the second CTest run of this test sets it).
+TEST(HugePages, AdviceMarksTheMappingUnlessTurnedOff)
+{
+  if (!std::ifstream("/sys/kernel/mm/transparent_hugepage/enabled"))
+    GTEST_SKIP() << "no transparent huge pages in this kernel";
+  const char* off = std::getenv("OSM_NO_HUGE_PAGES");
+  const bool expected = !off || !*off || std::string(off) == "0";
+  EXPECT_EQ(hugePagesWanted(), expected);
+  std::vector<char> v;
+  reserveHuge(v, 64u << 20);
+  const std::string flags = mappingFlags(v.data() + (32u << 20));
+  ASSERT_FALSE(flags.empty()) << "no mapping found in /proc/self/smaps";
+  EXPECT_EQ(flags.find(" hg") != std::string::npos, expected) << flags;
 }
 
 } // namespace
