@@ -44,10 +44,13 @@ void pushBackHuge(std::vector<T>& v, const T& x)
 {
   if (v.size() == v.capacity())
   {
+    const T copy = x; // x may be an element of v, which growing frees
     std::vector<T> bigger;
     reserveHuge(bigger, 2 * v.capacity() + 16);
     bigger.insert(bigger.end(), v.begin(), v.end());
+    bigger.push_back(copy);
     v.swap(bigger);
+    return;
   }
   v.push_back(x);
 }

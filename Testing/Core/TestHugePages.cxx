@@ -29,6 +29,15 @@ TEST(HugePages, PushBackKeepsEveryElementAcrossGrowth)
     ASSERT_EQ(v[i], i * 7) << i;
 }
 
+TEST(HugePages, PushBackOfAnElementOfTheVectorItself)
+{
+  std::vector<double> v{ 0.5 };
+  for (int i = 0; i < 3000000; ++i)
+    pushBackHuge(v, v[v.size() / 2]); // often at a growth, which frees v's storage
+  for (double x : v)
+    ASSERT_EQ(x, 0.5);
+}
+
 TEST(HugePages, AssignAndReserveGiveTheRequestedContents)
 {
   std::vector<std::int64_t> v{ 1, 2, 3 };
