@@ -176,22 +176,41 @@ int Walker::firstStep(int cur, int b, int& l, int& r, int& tri)
   throw Stop{ "internal error: cannot leave vertex " + std::to_string(cur) + " while stitching" };
 }
 
+/// Where the line through E with direction (dx, dy) crosses the edge p0 p1,
+/// as a fraction of the edge from p0 (in [0, 1]). The subtractions from E
+/// round by about machine epsilon times the largest coordinate of E, p0 and
+/// p1, and the direction only relatively, so the point is off by a few of
+/// those rounding errors (over the sine of the crossing angle, at most 3 for
+/// a kept crossing). resolved: that error is well below the edge's length.
+double crossingFraction(const Point& E, double dx, double dy, const Point& p0, const Point& p1,
+  double edgeLength, bool& resolved)
+{
+  const double d0 = cross(dx, dy, p0.x - E.x, p0.y - E.y);
+  const double d1 = cross(dx, dy, p1.x - E.x, p1.y - E.y);
+  const double s = d0 / (d0 - d1);
+  const double scale = std::max({ std::fabs(E.x), std::fabs(E.y), std::fabs(p0.x), std::fabs(p0.y),
+    std::fabs(p1.x), std::fabs(p1.y) });
+  resolved = edgeLength >= 64 * std::numeric_limits<double>::epsilon() * scale;
+  return std::min(1.0, std::max(0.0, std::isfinite(s) ? s : 0.5));
+}
+
 void Walker::addCrossing(int edge, int piece, const Point& A, const Point& B)
 {
   const Segment ends = ov.ends(edge);
   const Point& p0 = P[ends[0]];
   const Point& p1 = P[ends[1]];
   const double dx = B.x - A.x, dy = B.y - A.y, ex = p1.x - p0.x, ey = p1.y - p0.y;
-  const double d0 = cross(dx, dy, p0.x - A.x, p0.y - A.y);
-  const double d1 = cross(dx, dy, p1.x - A.x, p1.y - A.y);
-  double s = d0 / (d0 - d1);
-  s = std::min(1.0, std::max(0.0, std::isfinite(s) ? s : 0.5));
+  const double edgeLength = std::hypot(ex, ey);
   Crossing c;
   c.edge = edge;
   c.piece = piece;
-  c.s = s;
-  c.p = { p0.x + s * ex, p0.y + s * ey };
-  const double sine = std::fabs(cross(dx, dy, ex, ey)) / (std::hypot(dx, dy) * std::hypot(ex, ey));
+  c.s = crossingFraction(A, dx, dy, p0, p1, edgeLength, c.resolved);
+  // Far from A, among features that A's coordinates do not resolve (a
+  // segment reaching into a tiny cluster at its other end), measure from B.
+  if (!c.resolved)
+    c.s = crossingFraction(B, dx, dy, p0, p1, edgeLength, c.resolved);
+  c.p = { p0.x + c.s * ex, p0.y + c.s * ey };
+  const double sine = std::fabs(cross(dx, dy, ex, ey)) / (std::hypot(dx, dy) * edgeLength);
   c.good = sine > sinTheta1;
   out.crossings.push_back(c);
 }
@@ -563,6 +582,11 @@ PlanarGraph stitch(OverlayEdges ov, std::vector<Point> points, const std::vector
         const Crossing& c = walk.crossings[order[k]];
         if (walk.pieces[c.piece].duplicate)
           continue;
+        if (!c.resolved)
+          throw Stop{ "a segment passes input points closer together than double precision "
+                      "resolves at the coordinates of both its ends (features below about "
+                      "1e-14 of them)",
+            true, c.p };
         // Crossings within rounding of each other (or of the edge's ends) cannot
         // be told apart: the segments meet at an angle below double precision.
         if (tooClose(c.p, g.points[prev], edgeLength) ||

@@ -77,6 +77,9 @@ struct Crossing
   double s = 0; ///< position along the overlay edge, from ends(edge)[0] to [1]
   Point p;
   bool good = false;
+  /// p is within rounding of where it should be, relative to the edge's
+  /// length (false where the segment's coordinates are too large for it).
+  bool resolved = true;
 };
 
 /// Two clean segments that cross at p.
