@@ -4,6 +4,7 @@
 #include "MeshTestUtils.h"
 #include "Predicates.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <random>
@@ -118,6 +119,39 @@ Pslg translated(Pslg p, double offset)
   return p;
 }
 
+/// Smallest distance between two input points over the largest coordinate.
+double relativeSpacing(const Pslg& p)
+{
+  double least = INFINITY, largest = 0;
+  for (std::size_t i = 0; i < p.points.size(); ++i)
+  {
+    largest = std::max({ largest, std::fabs(p.points[i].x), std::fabs(p.points[i].y) });
+    for (std::size_t j = i + 1; j < p.points.size(); ++j)
+      least = std::min(least,
+        std::hypot(p.points[i].x - p.points[j].x, p.points[i].y - p.points[j].y));
+  }
+  return least / largest;
+}
+
+/// The mesher refuses features below about 1e-14 of the coordinates (a few
+/// dozen units in the last place), with a clear error. Far from the origin a
+/// generated spiral can wind down to there: then that error is the right
+/// answer; from 1e-13 up, the input must mesh.
+void meshValidateOrRefuseBelowPrecision(const Pslg& p, const std::string& name)
+{
+  if (relativeSpacing(p) >= 1e-13)
+  {
+    meshAndValidate(p, name);
+    return;
+  }
+  const Result r = mesh(p);
+  if (r.ok)
+    meshAndValidate(p, name);
+  else
+    EXPECT_NE(r.error.find("closer together than double precision resolves"), std::string::npos)
+      << name << ": " << r.error;
+}
+
 /// Seeds per family; OSM_PROPERTY_SEEDS raises it for a long stress run.
 const int kSeeds =
   std::getenv("OSM_PROPERTY_SEEDS") ? std::atoi(std::getenv("OSM_PROPERTY_SEEDS")) : 25;
@@ -180,7 +214,7 @@ TEST(Properties, TranslatedFarFromTheOrigin)
     std::mt19937_64 rng(seed);
     const std::string s = std::to_string(seed);
     meshAndValidate(translated(fan(rng, 1.0), 1e7), "far fan seed " + s);
-    meshAndValidate(translated(spiral(rng), 1e7), "far spiral seed " + s);
+    meshValidateOrRefuseBelowPrecision(translated(spiral(rng), 1e7), "far spiral seed " + s);
     meshAndValidate(translated(randomSegments(rng, 30), 1e7), "far random seed " + s);
     meshAndValidate(translated(nearParallel(rng, 1e-6), 1e7), "far parallel seed " + s);
   }
