@@ -127,8 +127,8 @@ double relativeSpacing(const Pslg& p)
   {
     largest = std::max({ largest, std::fabs(p.points[i].x), std::fabs(p.points[i].y) });
     for (std::size_t j = i + 1; j < p.points.size(); ++j)
-      least = std::min(least,
-        std::hypot(p.points[i].x - p.points[j].x, p.points[i].y - p.points[j].y));
+      least =
+        std::min(least, std::hypot(p.points[i].x - p.points[j].x, p.points[i].y - p.points[j].y));
   }
   return least / largest;
 }
