@@ -442,4 +442,9 @@ OSM_COLD double incircleFallback(const Point& a, const Point& b, const Point& c,
 
 } // namespace detail
 
+double orient2dAccurate(const Point& a, const Point& b, const Point& c)
+{
+  return orient2dExact(a, b, c);
+}
+
 } // namespace osm

@@ -71,6 +71,11 @@ inline double incircle(const Point& a, const Point& b, const Point& c, const Poi
   return detail::incircleFallback(a, b, c, d);
 }
 
+/// The determinant orient2d signs, with its magnitude too within about one
+/// unit in the last place (evaluated exactly, then rounded): for computing
+/// where two lines cross, where orient2d's estimate can be far off.
+double orient2dAccurate(const Point& a, const Point& b, const Point& c);
+
 inline int orientSign(const Point& a, const Point& b, const Point& c)
 {
   const double o = orient2d(a, b, c);

@@ -529,6 +529,33 @@ TEST(Stitch, SegmentIntoATinyClusterIsPlacedFromItsNearEnd)
     }
 }
 
+TEST(Stitch, CrossingOfAShortAndAVeryLongSegmentLiesOnBoth)
+{
+  // Found by fuzzing: a segment of length 4.5 crosses one 1.5e9 long near
+  // (13, 12). The crossing point, measured along the long segment, landed
+  // 8.7e-9 off the short one, which then bent there: no chain of mesh edges
+  // followed it. Measured along the short one, it is within rounding of both.
+  const double far = 1545787398.9374385;
+  Pslg alone;
+  alone.points = { { 11, 13 }, { 15, 11 }, { 8, 12 }, { far, 15 } };
+  alone.segments = { { 0, 1 }, { 2, 3 } };
+  Pslg fuzzed; // the input as found, with a vertex on the short segment and overlaps
+  fuzzed.points = { { 12, 12 }, { far, 15 }, { 11, 13 }, { 0, 1 }, { 13, 12 }, { 8, 12 },
+    { 12, 12 }, { 12, far }, { 15, 11 } };
+  fuzzed.segments = { { 5, 0 }, { 1, 5 }, { 1, 8 }, { 4, 4 }, { 5, 1 }, { 8, 8 }, { 8, 4 },
+    { 4, 5 }, { 1, 8 }, { 8, 1 }, { 5, 2 }, { 2, 8 } };
+  for (const Pslg* p : { &alone, &fuzzed })
+    for (double angle : { 20.0, 25.0, 30.0 })
+      for (Domain d : { Domain::Hull, Domain::Box })
+      {
+        Options o;
+        o.minAngleDeg = angle;
+        o.domain = d;
+        const Result r = meshAndValidate(*p, "short and long segment crossing", o);
+        EXPECT_GT(r.stats.crossingsSplit, 0u);
+      }
+}
+
 TEST(Stitch, SegmentsDivergingBelowPrecisionAreRefused)
 {
   // Found by fuzzing: a segment and a hull edge leave one point 1e-29 rad apart.
