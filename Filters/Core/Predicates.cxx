@@ -141,8 +141,18 @@ struct Expansion
     c[n] = x;
     n += x != 0.0;
   }
-  // The largest component dominates the sum of all the others, so it carries the sign.
+  // The largest component dominates the sum of all the others, so it carries the sign. Its
+  // magnitude can be off by up to a factor of 2 (a power of two above a long tail).
   double top() const { return n > 0 ? c[n - 1] : 0.0; }
+  // The value rounded to within about one unit in the last place: the components summed from
+  // the smallest, each below the last bit of the next, so no partial sum loses more than that.
+  double sum() const
+  {
+    double s = 0.0;
+    for (int i = 0; i < n; ++i)
+      s += c[i];
+    return s;
+  }
 };
 
 // h = e + fSign * f for raw arrays of lengths n and m (fSign = +-1, so the scaling is exact); h
@@ -322,11 +332,11 @@ Expansion<K> asExpansion(const TwoTerm& t)
 // result capacities follow from the operand types: orient2d 8 K^2, incircle 96 K^4 (96 or 1536,
 // about 12 KiB of stack for the latter). Zero elimination keeps the actual lengths much shorter.
 template <int K>
-double orientDeterminant(const Differences<4>& d)
+auto orientDeterminant(const Differences<4>& d)
 {
   const Expansion<K> acx = asExpansion<K>(d[0]), acy = asExpansion<K>(d[1]);
   const Expansion<K> bcx = asExpansion<K>(d[2]), bcy = asExpansion<K>(d[3]);
-  return (acx * bcy - acy * bcx).top();
+  return acx * bcy - acy * bcx;
 }
 
 template <int K>
@@ -392,7 +402,8 @@ std::optional<double> incircleFirstOrder(const Expansion<96>& head, const Differ
   return std::nullopt;
 }
 
-OSM_NOINLINE double orient2dExact(const Point& a, const Point& b, const Point& c)
+// The orientation determinant evaluated exactly; rounded (accurate) or only its top component.
+OSM_NOINLINE double orient2dExact(const Point& a, const Point& b, const Point& c, bool rounded)
 {
   std::array<double, 6> v{ a.x, a.y, b.x, b.y, c.x, c.y };
   int shift = 0;
@@ -400,8 +411,9 @@ OSM_NOINLINE double orient2dExact(const Point& a, const Point& b, const Point& c
     return std::numeric_limits<double>::quiet_NaN();
   const Differences<4> d{ twoDiff(v[0], v[4]), twoDiff(v[1], v[5]), twoDiff(v[2], v[4]),
     twoDiff(v[3], v[5]) };
-  const double det =
-    tailsAreZero(d.data(), d.size()) ? orientDeterminant<1>(d) : orientDeterminant<2>(d);
+  const auto value = [rounded](const auto& e) { return rounded ? e.sum() : e.top(); };
+  const double det = tailsAreZero(d.data(), d.size()) ? value(orientDeterminant<1>(d))
+                                                      : value(orientDeterminant<2>(d));
   return restore(det, shift, 2);
 }
 
@@ -432,7 +444,7 @@ namespace detail
 
 OSM_COLD double orient2dFallback(const Point& a, const Point& b, const Point& c)
 {
-  return orient2dExact(a, b, c);
+  return orient2dExact(a, b, c, false);
 }
 
 OSM_COLD double incircleFallback(const Point& a, const Point& b, const Point& c, const Point& d)
@@ -444,7 +456,7 @@ OSM_COLD double incircleFallback(const Point& a, const Point& b, const Point& c,
 
 double orient2dAccurate(const Point& a, const Point& b, const Point& c)
 {
-  return orient2dExact(a, b, c);
+  return orient2dExact(a, b, c, true);
 }
 
 } // namespace osm

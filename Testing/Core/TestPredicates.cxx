@@ -316,6 +316,44 @@ TEST(Orient2d, ArbitrarySlopeLines)
   }
 }
 
+// orient2dAccurate places crossing points, so its magnitude, not only its sign, must be right:
+// within 2 units in the last place of the exact determinant, on near-collinear sets where the
+// filtered orient2d's magnitude is often far off (which the test requires, to show it is hard).
+TEST(Orient2d, AccurateMagnitudeNearLines)
+{
+  Rng rng(0xACC);
+  for (const Frame& f : orientFrames)
+  {
+    if (f.scale > 1e150 || f.scale < 1e-200)
+      continue; // the determinant itself would overflow or underflow a double
+    int estimateFarOff = 0;
+    for (int i = 0; i < 4000; ++i)
+    {
+      const Point a = f({ rng.uniform(-100, 100), rng.uniform(-100, 100) });
+      const Point b = f({ rng.uniform(-100, 100), rng.uniform(-100, 100) });
+      const double s = rng.uniform(-1, 2);
+      const Point c = perturb({ a.x + s * (b.x - a.x), a.y + s * (b.y - a.y) }, rng, 4);
+      const mpq_class acx = mpq_class(a.x) - mpq_class(c.x), acy = mpq_class(a.y) - mpq_class(c.y);
+      const mpq_class bcx = mpq_class(b.x) - mpq_class(c.x), bcy = mpq_class(b.y) - mpq_class(c.y);
+      const mpq_class determinant = acx * bcy - acy * bcx;
+      const double exact = determinant.get_d();
+      const double accurate = osm::orient2dAccurate(a, b, c);
+      if (sgn(determinant) == 0)
+      {
+        EXPECT_EQ(accurate, 0.0) << f.name << str(a) << str(b) << str(c);
+        continue;
+      }
+      // (Plus two of the smallest subnormals: tiny frames give subnormal determinants.)
+      EXPECT_LE(std::fabs(accurate - exact), 0x1p-51 * std::fabs(exact) + 0x1p-1073)
+        << f.name << str(a) << str(b) << str(c) << " exact " << exact << " got " << accurate;
+      if (std::fabs(osm::orient2d(a, b, c) - exact) > 1e-3 * std::fabs(exact))
+        ++estimateFarOff;
+    }
+    if (f.hard)
+      EXPECT_GT(estimateFarOff, 0) << f.name << ": no case where orient2d's magnitude is off";
+  }
+}
+
 // Exactly collinear inputs, built only from exact operations, must give exactly 0.
 TEST(Orient2d, ExactlyDegenerateIsZero)
 {
