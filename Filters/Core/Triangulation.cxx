@@ -199,9 +199,6 @@ bool Triangulation::insertIntoCavity(int v, const Cavity& cavity, std::vector<in
   }
   for (int t : cavity.triangles)
     freeTriangle(t);
-  // Not at every new point; every entry is -1 between insertions.
-  if (fanByVertex.size() < points.size())
-    assignHuge(fanByVertex, 2 * points.size(), -1);
   for (const FanTriangle& f : fan)
   {
     const int t = newTriangle(f.a, f.b, v);
@@ -210,21 +207,38 @@ bool Triangulation::insertIntoCavity(int v, const Cavity& cavity, std::vector<in
     tri[t].n[2] = f.outside;
     if (f.outsideLink >= 0)
       tri[f.outsideLink / 3].n[f.outsideLink % 3] = t;
-    fanByVertex[f.a] = t; // triangle whose edge (v, a) ... found via vertex a
   }
   // Link fan neighbours: triangle (a, b, v) meets (b, c, v) across edge (b, v).
-  for (int t : created)
+  // Each boundary vertex starts one fan edge (a, b) at most.
+  const auto link = [&](std::size_t i, std::size_t j) {
+    tri[created[i]].n[0] = created[j]; // opposite a: edge (b, v)
+    tri[created[j]].n[1] = created[i]; // opposite b in (b, c, v): edge (v, b)
+  };
+  if (fan.size() <= kSmallFan)
   {
-    const int b = tri[t].v[1];
-    const int u = b < static_cast<int>(fanByVertex.size()) ? fanByVertex[b] : -1;
-    if (u >= 0 && tri[u].v[0] == b && tri[u].v[2] == v)
-    {
-      tri[t].n[0] = u; // opposite a: edge (b, v)
-      tri[u].n[1] = t; // opposite b in u=(b, c, v): edge (v, b)
-    }
+    // Typical fans have 4 to 8 triangles: comparing their ends beats
+    // looking them up in an array over all the vertices (a cache miss each).
+    for (std::size_t i = 0; i < fan.size(); ++i)
+      for (std::size_t j = 0; j < fan.size(); ++j)
+        if (fan[j].a == fan[i].b)
+        {
+          link(i, j);
+          break;
+        }
   }
-  for (const FanTriangle& f : fan)
-    fanByVertex[f.a] = -1;
+  else
+  {
+    // Not at every new point; every entry is -1 between insertions.
+    if (fanByVertex.size() < points.size())
+      assignHuge(fanByVertex, 2 * points.size(), -1);
+    for (std::size_t j = 0; j < fan.size(); ++j)
+      fanByVertex[fan[j].a] = static_cast<int>(j);
+    for (std::size_t i = 0; i < fan.size(); ++i)
+      if (const int j = fanByVertex[fan[i].b]; j >= 0)
+        link(i, static_cast<std::size_t>(j));
+    for (const FanTriangle& f : fan)
+      fanByVertex[f.a] = -1;
+  }
   // Order the fan counter-clockwise around v (chain a -> b).
   if (created.size() > 2)
   {

@@ -94,6 +94,7 @@ private:
     int outsideLink;   ///< the half-edge of outside that refers back across (a, b)
   };
   std::vector<FanTriangle> fan;
+  static constexpr std::size_t kSmallFan = 16;
   std::vector<int> ordered;
   std::vector<int> fanByVertex;
 };
