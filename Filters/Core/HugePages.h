@@ -20,8 +20,8 @@ namespace osm
 {
 
 /// Asks the kernel to back the whole 2 MiB pages inside [p, p + bytes) with
-/// transparent huge pages, where it can (Linux; elsewhere, for ranges under a
-/// few pages, when the kernel declines, or with OSM_NO_HUGE_PAGES set to
+/// transparent huge pages, where it can (Linux; elsewhere, for ranges without
+/// a whole huge page, when the kernel declines, or with OSM_NO_HUGE_PAGES set to
 /// anything but 0, nothing changes). Best called before the memory is first
 /// touched.
 void adviseHugePages(const void* p, std::size_t bytes);

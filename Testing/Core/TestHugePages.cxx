@@ -105,5 +105,20 @@ TEST(HugePages, AdviceMarksTheMappingUnlessTurnedOff)
   EXPECT_EQ(flags.find(" hg") != std::string::npos, expected) << flags;
 }
 
+// Arrays of a few MiB are advised too: the whole huge page that a 5 MiB array
+// always contains is marked.
+TEST(HugePages, AdviceReachesArraysOfAFewMegabytes)
+{
+  if (!std::ifstream("/sys/kernel/mm/transparent_hugepage/enabled"))
+    GTEST_SKIP() << "no transparent huge pages in this kernel";
+  std::vector<char> v;
+  reserveHuge(v, 5u << 20);
+  constexpr std::uintptr_t huge = std::uintptr_t{ 2 } << 20;
+  const std::uintptr_t page = (reinterpret_cast<std::uintptr_t>(v.data()) + huge - 1) & ~(huge - 1);
+  const std::string flags = mappingFlags(reinterpret_cast<const char*>(page + huge / 2));
+  ASSERT_FALSE(flags.empty()) << "no mapping found in /proc/self/smaps";
+  EXPECT_EQ(flags.find(" hg") != std::string::npos, hugePagesWanted()) << flags;
+}
+
 } // namespace
 } // namespace osm
