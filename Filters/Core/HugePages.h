@@ -37,22 +37,28 @@ void reserveHuge(std::vector<T>& v, std::size_t n)
   adviseHugePages(v.data(), v.capacity() * sizeof(T));
 }
 
-/// v.push_back(x); when v is full, its storage doubles into advised memory
-/// (for arrays that outgrow their reservation).
+/// pushBackHuge when v is full: its storage doubles into advised memory.
 template <class T>
-void pushBackHuge(std::vector<T>& v, const T& x)
+[[gnu::noinline]] void pushBackGrowingHuge(std::vector<T>& v, const T& x)
+{
+  const T copy = x; // x may be an element of v, which growing frees
+  std::vector<T> bigger;
+  reserveHuge(bigger, 2 * v.capacity() + 16);
+  bigger.insert(bigger.end(), v.begin(), v.end());
+  bigger.push_back(copy);
+  v.swap(bigger);
+}
+
+/// v.push_back(x); when v is full, its storage doubles into advised memory
+/// (for arrays that outgrow their reservation). The growth is apart so that
+/// the common case inlines: the refinement pushes a slot or an item per step.
+template <class T>
+inline void pushBackHuge(std::vector<T>& v, const T& x)
 {
   if (v.size() == v.capacity())
-  {
-    const T copy = x; // x may be an element of v, which growing frees
-    std::vector<T> bigger;
-    reserveHuge(bigger, 2 * v.capacity() + 16);
-    bigger.insert(bigger.end(), v.begin(), v.end());
-    bigger.push_back(copy);
-    v.swap(bigger);
-    return;
-  }
-  v.push_back(x);
+    pushBackGrowingHuge(v, x);
+  else
+    v.push_back(x);
 }
 
 /// v.assign(n, value) on storage advised before it is filled.

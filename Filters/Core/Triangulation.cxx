@@ -254,12 +254,4 @@ bool Triangulation::insertIntoCavity(int v, const Cavity& cavity, std::vector<in
   return true;
 }
 
-Point circumcenterOffset(const Point& a, const Point& b, const Point& c)
-{
-  const double bx = b.x - a.x, by = b.y - a.y, cx = c.x - a.x, cy = c.y - a.y;
-  const double b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
-  const double d = 2.0 * (bx * cy - by * cx);
-  return { (cy * b2 - by * c2) / d, (bx * c2 - cx * b2) / d };
-}
-
 } // namespace osm

@@ -101,7 +101,14 @@ private:
 
 /// Circumcenter of triangle (a, b, c) minus a: accurate even for a tiny
 /// triangle far from the origin, where adding a back rounds it away.
-Point circumcenterOffset(const Point& a, const Point& b, const Point& c);
+/// (Inline: the refinement computes one per new triangle.)
+inline Point circumcenterOffset(const Point& a, const Point& b, const Point& c)
+{
+  const double bx = b.x - a.x, by = b.y - a.y, cx = c.x - a.x, cy = c.y - a.y;
+  const double b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
+  const double d = 2.0 * (bx * cy - by * cx);
+  return { (cy * b2 - by * c2) / d, (bx * c2 - cx * b2) / d };
+}
 
 /// Circumcenter of triangle (a, b, c), computed relative to a for accuracy.
 inline Point circumcenter(const Point& a, const Point& b, const Point& c)
