@@ -20,9 +20,11 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <limits>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -835,63 +837,86 @@ void checkInputVertices(const Pslg& input, const VertexMap& map, Errors& errors)
       });
 }
 
-/// Walks input segment ab along mesh edges from vertex A to vertex B. Each step goes to a
-/// neighbour within the rounding tolerance of line ab and strictly further along it; among
-/// several, the one pointing most directly at b. Returns "" or why the walk got stuck.
+/// Searches a chain of mesh edges for input segment ab, from vertex A to vertex B. Each step
+/// goes to a neighbour within the rounding tolerance of line ab and strictly further along it.
+/// Depth first, nearest the line first, and back out of dead ends: where another input segment
+/// runs within the tolerance of this one (two segments diverging by 1e-9 rad from a shared end),
+/// the step most directly towards b could take its chain and get stuck, though this segment's
+/// own chain was there. Each vertex is entered once, so the search is linear. Returns "" or why
+/// no chain was found (from the furthest vertex reached).
 std::string walkSegment(const Mesh& m, int A, int B)
 {
   const Point &a = m.at(A), &b = m.at(B);
   const double dx = b.x - a.x, dy = b.y - a.y, len = std::hypot(dx, dy);
   const double scale = std::max({ std::fabs(a.x), std::fabs(a.y), std::fabs(b.x), std::fabs(b.y) });
   const double eps = std::numeric_limits<double>::epsilon();
-  int u = A;
-  for (std::size_t steps = 0; u != B; ++steps)
+  struct Step
   {
-    if (steps > m.points.size())
-      return "its chain of mesh edges does not advance from " + m.vertexName(u);
-    int best = -1;
-    double bestCos = -2.0, nearestOff = std::numeric_limits<double>::infinity();
+    int vertex;
+    std::vector<std::pair<double, int>> next; ///< (distance to the line, neighbour), nearest last
+  };
+  std::vector<Step> path;
+  std::unordered_set<int> entered;
+  int furthest = A;
+  double furthestAlong = -std::numeric_limits<double>::infinity(), furthestOff = 0;
+  const auto enter = [&](int u) {
+    entered.insert(u);
+    Step s{ u, {} };
     const Point& pu = m.at(u);
-    for (int i = m.firstCorner[u]; i < m.firstCorner[u + 1] && best != B; ++i)
+    double nearestOff = std::numeric_limits<double>::infinity();
+    for (int i = m.firstCorner[u]; i < m.firstCorner[u + 1]; ++i)
       for (int w : { m.nextVertex(m.cornersAt[i]), m.prevVertex(m.cornersAt[i]) })
       {
         if (w == B)
         {
-          best = B;
-          break;
+          s.next.push_back({ -1.0, B }); // nearest of all: B ends the search
+          continue;
         }
         const Point& pw = m.at(w);
         // Progress is measured by the step itself, not by parameters from a:
         // near a far-away a, steps below one ulp of the parameter would vanish.
         const double step = (pw.x - pu.x) * dx + (pw.y - pu.y) * dy;
         const double rest = (b.x - pw.x) * dx + (b.y - pw.y) * dy;
-        if (!(step > 0 && rest > 0))
+        if (!(step > 0 && rest > 0) || entered.count(w))
           continue;
         const double off = std::fabs(dx * (pw.y - a.y) - dy * (pw.x - a.x)) / len;
         const double tol =
           1e-9 * len + 16 * eps * std::max({ scale, std::fabs(pw.x), std::fabs(pw.y) });
         if (off > tol)
-        {
           nearestOff = std::min(nearestOff, off);
-          continue;
-        }
-        const double ux = pw.x - pu.x, uy = pw.y - pu.y, vx = b.x - pu.x, vy = b.y - pu.y;
-        const double cosine =
-          (ux * vx + uy * vy) / std::sqrt((ux * ux + uy * uy) * (vx * vx + vy * vy));
-        if (cosine > bestCos)
-        {
-          best = w;
-          bestCos = cosine;
-        }
+        else
+          s.next.push_back({ off, w });
       }
-    if (best < 0)
-      return "no mesh edge continues it from " + m.vertexName(u) +
-        (std::isfinite(nearestOff)
-            ? " (nearest forward neighbour is " + num(nearestOff) + " off the line)"
-            : "");
-    u = best;
+    std::sort(s.next.begin(), s.next.end(), std::greater<>());
+    const double along = (pu.x - a.x) * dx + (pu.y - a.y) * dy;
+    if (along > furthestAlong)
+    {
+      furthest = u;
+      furthestAlong = along;
+      furthestOff = nearestOff;
+    }
+    path.push_back(std::move(s));
+  };
+  enter(A);
+  while (!path.empty())
+  {
+    Step& s = path.back();
+    if (s.next.empty())
+    {
+      path.pop_back(); // a dead end: back out
+      continue;
+    }
+    const int w = s.next.back().second;
+    s.next.pop_back();
+    if (w == B)
+      return "";
+    if (!entered.count(w))
+      enter(w);
   }
-  return "";
+  return "no mesh edge continues it from " + m.vertexName(furthest) +
+    (std::isfinite(furthestOff)
+        ? " (nearest forward neighbour is " + num(furthestOff) + " off the line)"
+        : "");
 }
 
 /// Check 6: input segments whose endpoints are mesh vertices are chains of mesh edges.

@@ -556,6 +556,24 @@ TEST(Stitch, CrossingOfAShortAndAVeryLongSegmentLiesOnBoth)
       }
 }
 
+TEST(Validate, SegmentsDivergingByNanoradiansAreEachFollowed)
+{
+  // Found by the CI's fuzzing: from (12, 1.5e9), segments to (12, 12), (15, 11)
+  // and (13, 1) diverge by 2e-9 rad, so for 10^9 units each runs within the
+  // validator's tolerance (1e-9 of a segment's length) of another. The mesh had
+  // every chain, but the validator's walk, taking the step most directly towards
+  // the end, took another segment's chain and got stuck: it now backs out.
+  const double far = 1545787398.9374385;
+  Pslg p;
+  p.points = { { 12, 12 }, { 12, far }, { 15, 11 }, { 12, 8 }, { 13, 0 }, { 13, 1 }, { 12, 12 },
+    { 12, 12 }, { far, 15 }, { 11, 13 } };
+  p.segments = { { 0, 1 }, { 7, 2 }, { 1, 2 }, { 1, 5 }, { 1, 1 }, { 1, 1 }, { 2, 0 }, { 0, 0 } };
+  Options o;
+  o.minAngleDeg = 27;
+  o.domain = Domain::Hull;
+  meshAndValidate(p, "segments diverging by nanoradians", o);
+}
+
 TEST(Stitch, SegmentsDivergingBelowPrecisionAreRefused)
 {
   // Found by fuzzing: a segment and a hull edge leave one point 1e-29 rad apart.
