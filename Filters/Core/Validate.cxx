@@ -850,18 +850,15 @@ std::string walkSegment(const Mesh& m, int A, int B)
   const double dx = b.x - a.x, dy = b.y - a.y, len = std::hypot(dx, dy);
   const double scale = std::max({ std::fabs(a.x), std::fabs(a.y), std::fabs(b.x), std::fabs(b.y) });
   const double eps = std::numeric_limits<double>::epsilon();
-  struct Step
-  {
-    int vertex;
-    std::vector<std::pair<double, int>> next; ///< (distance to the line, neighbour), nearest last
-  };
-  std::vector<Step> path;
+  // Per vertex on the current path, its untried neighbours as (distance to the line, vertex),
+  // nearest last.
+  std::vector<std::vector<std::pair<double, int>>> path;
   std::unordered_set<int> entered;
   int furthest = A;
   double furthestAlong = -std::numeric_limits<double>::infinity(), furthestOff = 0;
   const auto enter = [&](int u) {
     entered.insert(u);
-    Step s{ u, {} };
+    std::vector<std::pair<double, int>> next;
     const Point& pu = m.at(u);
     double nearestOff = std::numeric_limits<double>::infinity();
     for (int i = m.firstCorner[u]; i < m.firstCorner[u + 1]; ++i)
@@ -869,7 +866,7 @@ std::string walkSegment(const Mesh& m, int A, int B)
       {
         if (w == B)
         {
-          s.next.push_back({ -1.0, B }); // nearest of all: B ends the search
+          next.push_back({ -1.0, B }); // nearest of all: B ends the search
           continue;
         }
         const Point& pw = m.at(w);
@@ -885,9 +882,9 @@ std::string walkSegment(const Mesh& m, int A, int B)
         if (off > tol)
           nearestOff = std::min(nearestOff, off);
         else
-          s.next.push_back({ off, w });
+          next.push_back({ off, w });
       }
-    std::sort(s.next.begin(), s.next.end(), std::greater<>());
+    std::sort(next.begin(), next.end(), std::greater<>());
     const double along = (pu.x - a.x) * dx + (pu.y - a.y) * dy;
     if (along > furthestAlong)
     {
@@ -895,19 +892,19 @@ std::string walkSegment(const Mesh& m, int A, int B)
       furthestAlong = along;
       furthestOff = nearestOff;
     }
-    path.push_back(std::move(s));
+    path.push_back(std::move(next));
   };
   enter(A);
   while (!path.empty())
   {
-    Step& s = path.back();
-    if (s.next.empty())
+    std::vector<std::pair<double, int>>& next = path.back();
+    if (next.empty())
     {
       path.pop_back(); // a dead end: back out
       continue;
     }
-    const int w = s.next.back().second;
-    s.next.pop_back();
+    const int w = next.back().second;
+    next.pop_back();
     if (w == B)
       return "";
     if (!entered.count(w))
