@@ -299,7 +299,7 @@ vtkSmartPointer<vtkCellArray> MakeCells(
 }
 
 /// The output points, in bulk; inputOf[i] is the input point that vertex i is, or -1.
-vtkSmartPointer<vtkPoints> MakePoints(const std::vector<osm::Point>& vertices,
+vtkSmartPointer<vtkPoints> MakePoints(const osm::Array<osm::Point>& vertices,
   const osm::PlaneMap& map, const std::vector<long long>* inputOf = nullptr)
 {
   vtkNew<vtkDoubleArray> coordinates;

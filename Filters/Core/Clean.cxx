@@ -21,7 +21,7 @@ std::string formatPoint(const Point& p)
 namespace
 {
 
-std::string checkFinite(const std::vector<Point>& pts, const char* what)
+std::string checkFinite(const Array<Point>& pts, const char* what)
 {
   for (std::size_t i = 0; i < pts.size(); ++i)
     if (!std::isfinite(pts[i].x) || !std::isfinite(pts[i].y))
@@ -31,7 +31,7 @@ std::string checkFinite(const std::vector<Point>& pts, const char* what)
 }
 
 /// For each point, the first point (in input order) equal to it.
-std::vector<int> exactRepresentatives(const std::vector<Point>& pts)
+Array<int> exactRepresentatives(const Array<Point>& pts)
 {
   // Sorting the points with their indices, not indices alone, keeps the
   // comparisons in cache.
@@ -41,12 +41,12 @@ std::vector<int> exactRepresentatives(const std::vector<Point>& pts)
     int i;
   };
   const std::size_t n = pts.size();
-  std::vector<Indexed> sorted(n);
+  Array<Indexed> sorted(n);
   for (std::size_t k = 0; k < n; ++k)
     sorted[k] = { pts[k], static_cast<int>(k) };
   std::sort(sorted.begin(), sorted.end(),
     [](const Indexed& a, const Indexed& b) { return a.p < b.p || (a.p == b.p && a.i < b.i); });
-  std::vector<int> representative(n);
+  Array<int> representative(n);
   for (std::size_t k = 0; k < n; ++k)
   {
     const bool same = k > 0 && sorted[k].p == sorted[k - 1].p;
@@ -57,13 +57,13 @@ std::vector<int> exactRepresentatives(const std::vector<Point>& pts)
 
 /// For each point, the first earlier kept point within tol, or itself. A hash
 /// grid of cell size tol finds the candidates in the 3 x 3 cells around it.
-std::vector<int> nearRepresentatives(const std::vector<Point>& pts, double tol)
+Array<int> nearRepresentatives(const Array<Point>& pts, double tol)
 {
-  std::unordered_map<std::uint64_t, std::vector<int>> grid;
+  std::unordered_map<std::uint64_t, Array<int>> grid;
   auto key = [](std::int64_t x, std::int64_t y) {
     return (static_cast<std::uint64_t>(x) << 32) ^ static_cast<std::uint64_t>(y & 0xffffffff);
   };
-  std::vector<int> representative(pts.size());
+  Array<int> representative(pts.size());
   for (std::size_t i = 0; i < pts.size(); ++i)
   {
     const auto cx = static_cast<std::int64_t>(std::floor(pts[i].x / tol));
@@ -94,7 +94,7 @@ void mergeDuplicates(
   const Pslg& in, CleanPslg& out, Statistics& stats, std::vector<std::string>& warnings, double tol)
 {
   const std::size_t n = in.points.size();
-  const std::vector<int> representative =
+  const Array<int> representative =
     tol > 0 ? nearRepresentatives(in.points, tol) : exactRepresentatives(in.points);
   int example = -1;
   for (std::size_t i = 0; i < n; ++i)
@@ -104,8 +104,8 @@ void mergeDuplicates(
       if (example < 0)
         example = static_cast<int>(i);
     }
-  assignHuge(out.pointOf, n, -1);
-  reserveHuge(out.points, n);
+  out.pointOf.assign(n, -1);
+  out.points.reserve(n);
   for (std::size_t i = 0; i < n; ++i)
   {
     const int r = representative[i];
@@ -126,7 +126,7 @@ std::string mapSegments(
   const Pslg& in, CleanPslg& out, Statistics& stats, std::vector<std::string>& warnings)
 {
   const long long n = static_cast<long long>(in.points.size());
-  std::vector<std::pair<Segment, int>> segs;
+  Array<std::pair<Segment, int>> segs;
   segs.reserve(in.segments.size());
   int zeroExample = -1;
   for (std::size_t s = 0; s < in.segments.size(); ++s)

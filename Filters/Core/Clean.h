@@ -4,6 +4,7 @@
 #ifndef osm_Clean_h
 #define osm_Clean_h
 
+#include "HugePages.h"
 #include "Pslg.h"
 #include "Statistics.h"
 
@@ -15,10 +16,10 @@ namespace osm
 
 struct CleanPslg
 {
-  std::vector<Point> points;      ///< distinct, finite
-  std::vector<Segment> segments;  ///< distinct, no zero length, (lo, hi) index order
-  std::vector<int> segmentOrigin; ///< per segment: the first input segment it came from
-  std::vector<int> pointOf;       ///< per input point: its index in points
+  Array<Point> points;      ///< distinct, finite
+  Array<Segment> segments;  ///< distinct, no zero length, (lo, hi) index order
+  Array<int> segmentOrigin; ///< per segment: the first input segment it came from
+  Array<int> pointOf;       ///< per input point: its index in points
 };
 
 /// Check and clean the input. Returns an empty string, or an error naming the

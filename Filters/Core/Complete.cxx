@@ -27,7 +27,7 @@ namespace
 {
 
 /// Does the open segment from polygon vertex i to j lie inside the polygon?
-bool isDiagonal(const std::vector<Point>& P, int i, int j)
+bool isDiagonal(const Array<Point>& P, int i, int j)
 {
   const int k = static_cast<int>(P.size());
   // Inside the interior cone at each end (a straight angle is a half-plane).
@@ -67,19 +67,18 @@ bool isDiagonal(const std::vector<Point>& P, int i, int j)
 
 } // namespace
 
-bool triangulateMinMaxAngle(
-  const std::vector<Point>& P, const std::vector<int>& ids, std::vector<Triangle>& out)
+bool triangulateMinMaxAngle(const Array<Point>& P, const Array<int>& ids, Array<Triangle>& out)
 {
   const int k = static_cast<int>(P.size());
   const double inf = std::numeric_limits<double>::infinity();
   // ok[i][j]: the chord i-j is a polygon edge or an interior diagonal.
-  std::vector<char> ok(k * k, 0);
+  Array<char> ok(k * k, 0);
   for (int i = 0; i < k; ++i)
     for (int j = i + 1; j < k; ++j)
       ok[i * k + j] = (j == i + 1 || (i == 0 && j == k - 1)) ? 1 : isDiagonal(P, i, j);
   // cost[i][j]: best largest angle triangulating the chain i..j closed by chord i-j.
-  std::vector<double> cost(k * k, inf);
-  std::vector<int> apex(k * k, -1);
+  Array<double> cost(k * k, inf);
+  Array<int> apex(k * k, -1);
   for (int i = 0; i + 1 < k; ++i)
     cost[i * k + i + 1] = 0;
   for (int len = 2; len < k; ++len)
@@ -105,7 +104,7 @@ bool triangulateMinMaxAngle(
   }
   if (cost[k - 1] == inf)
     return false;
-  std::vector<std::pair<int, int>> stack{ { 0, k - 1 } };
+  Array<std::pair<int, int>> stack{ { 0, k - 1 } };
   while (!stack.empty())
   {
     const auto [i, j] = stack.back();
@@ -126,10 +125,10 @@ namespace
 /// Neighbours of each vertex sorted counter-clockwise, in CSR form.
 struct Rotation
 {
-  std::vector<int> start;
-  std::vector<int> to;
-  std::vector<int> twin;    ///< half-edge v->u for half-edge u->v
-  std::vector<char> closed; ///< its face (on its left) is intact or outside: not traced
+  Array<int> start;
+  Array<int> to;
+  Array<int> twin;    ///< half-edge v->u for half-edge u->v
+  Array<char> closed; ///< its face (on its left) is intact or outside: not traced
 };
 
 bool upperHalf(const Point& c, const Point& p)
@@ -143,7 +142,7 @@ Rotation buildRotation(const PlanarGraph& g)
   const int n = static_cast<int>(g.points.size());
   const int ne = static_cast<int>(g.edges.size());
   Rotation r;
-  assignHuge(r.start, n + 1, 0);
+  r.start.assign(n + 1, 0);
   for (int e = 0; e < ne; ++e)
   {
     if (!g.openSides[e])
@@ -155,8 +154,8 @@ Rotation buildRotation(const PlanarGraph& g)
     r.start[v + 1] += r.start[v];
   // Each half-edge carries its edge through the angular sort, so the two
   // half-edges of an edge find each other in one linear pass afterwards.
-  std::vector<std::array<int, 2>> half(r.start[n]); // (head, edge)
-  std::vector<int> fill(r.start.begin(), r.start.end() - 1);
+  Array<std::array<int, 2>> half(r.start[n]); // (head, edge)
+  Array<int> fill(r.start.begin(), r.start.end() - 1);
   for (int e = 0; e < ne; ++e)
   {
     if (!g.openSides[e])
@@ -179,7 +178,7 @@ Rotation buildRotation(const PlanarGraph& g)
   r.to.resize(half.size());
   r.twin.assign(half.size(), -1);
   r.closed.resize(half.size());
-  std::vector<int> firstHalf(g.edges.size(), -1);
+  Array<int> firstHalf(g.edges.size(), -1);
   for (int h = 0; h < static_cast<int>(half.size()); ++h)
   {
     r.to[h] = half[h][0];
@@ -221,8 +220,8 @@ Completion complete(PlanarGraph& g, Statistics& stats, RunContext& run)
   // Trace every open face: after u->v, turn to the edge clockwise-next from
   // v->u. Half-edges of intact triangles and of the box's outside start seen.
   // Faces are stored flat (faceStart, faceVertices) to avoid an allocation each.
-  std::vector<char> seen = std::move(r.closed);
-  std::vector<int> faceStart{ 0 }, faceVertices;
+  Array<char> seen = std::move(r.closed);
+  Array<int> faceStart{ 0 }, faceVertices;
   faceVertices.reserve(nh);
   for (int h0 = 0; h0 < nh; ++h0)
   {
@@ -244,8 +243,8 @@ Completion complete(PlanarGraph& g, Statistics& stats, RunContext& run)
   }
   // A face of k sides gives k - 2 triangles.
   out.triangles.reserve(out.triangles.size() + faceVertices.size() - 2 * (faceStart.size() - 1));
-  std::vector<Point> polygon;
-  std::vector<int> face;
+  Array<Point> polygon;
+  Array<int> face;
   for (std::size_t f = 0; f + 1 < faceStart.size(); ++f)
   {
     face.assign(faceVertices.begin() + faceStart[f], faceVertices.begin() + faceStart[f + 1]);

@@ -5,6 +5,7 @@
 #ifndef osm_Complete_h
 #define osm_Complete_h
 
+#include "HugePages.h"
 #include "RunContext.h"
 #include "Statistics.h"
 #include "Stitch.h"
@@ -16,9 +17,9 @@ namespace osm
 
 struct Completion
 {
-  std::vector<Triangle> triangles;
+  Array<Triangle> triangles;
   /// Edges of the planar graph that are input subsegments, as vertex pairs (lo, hi).
-  std::vector<Segment> constrainedEdges;
+  Array<Segment> constrainedEdges;
 };
 
 /// Takes graph.intact as the first triangles, then triangulates every other face.
@@ -27,7 +28,7 @@ Completion complete(PlanarGraph& graph, Statistics& stats, RunContext& run);
 /// Min-max-angle triangulation of a simple polygon given counter-clockwise.
 /// Appends triangles (indices into ids) and returns false if none exists.
 bool triangulateMinMaxAngle(
-  const std::vector<Point>& polygon, const std::vector<int>& ids, std::vector<Triangle>& out);
+  const Array<Point>& polygon, const Array<int>& ids, Array<Triangle>& out);
 
 /// Largest angle of a triangle, in radians.
 double maxAngle(const Point& a, const Point& b, const Point& c);

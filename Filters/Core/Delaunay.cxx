@@ -8,7 +8,7 @@
 namespace osm
 {
 
-Triangulation delaunayTriangulation(const std::vector<Point>& points, std::vector<int>& vertexOf)
+Triangulation delaunayTriangulation(const Array<Point>& points, Array<int>& vertexOf)
 {
   Triangulation T;
   vertexOf.assign(points.size(), -1);
@@ -20,7 +20,7 @@ Triangulation delaunayTriangulation(const std::vector<Point>& points, std::vecto
   const int t0 = T.newTriangle(c0, c1, c2), t1 = T.newTriangle(c0, c2, c3);
   T.link(t0, t1);
   Triangulation::Cavity cavity;
-  std::vector<int> created;
+  Array<int> created;
   int last = t0;
   for (int i : hilbertOrder(points))
   {

@@ -14,7 +14,7 @@ namespace osm
 
 /// Delaunay triangulation of distinct finite points inside a padded box whose
 /// corners are vertices 0..3; point i becomes vertex vertexOf[i].
-Triangulation delaunayTriangulation(const std::vector<Point>& points, std::vector<int>& vertexOf);
+Triangulation delaunayTriangulation(const Array<Point>& points, Array<int>& vertexOf);
 
 } // namespace osm
 

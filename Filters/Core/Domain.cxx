@@ -18,16 +18,15 @@ namespace
 /// emitted (a stable counting sort). forEach(emit) calls emit(lo, hi, id) for
 /// every item, and must do so identically on both of its calls.
 template <typename ForEach>
-void bucketByLo(
-  int n, ForEach&& forEach, std::vector<int>& start, std::vector<std::array<int, 2>>& items)
+void bucketByLo(int n, ForEach&& forEach, Array<int>& start, Array<std::array<int, 2>>& items)
 {
-  assignHuge(start, static_cast<std::size_t>(n) + 1, 0);
+  start.assign(static_cast<std::size_t>(n) + 1, 0);
   forEach([&](int lo, int, int) { ++start[lo + 1]; });
   for (int v = 0; v < n; ++v)
     start[v + 1] += start[v];
-  reserveHuge(items, static_cast<std::size_t>(start[n]));
+  items.reserve(static_cast<std::size_t>(start[n]));
   items.resize(start[n]);
-  std::vector<int> fill(start.begin(), start.end() - 1);
+  Array<int> fill(start.begin(), start.end() - 1);
   forEach([&](int lo, int hi, int id) { items[fill[lo]++] = { hi, id }; });
 }
 
@@ -40,7 +39,7 @@ void bucketByLo(
 /// from it and not matched; its arrays become the result's, so that the
 /// overlay's adjacency is extended, not copied.
 KnownAdjacency adjacency(
-  const std::vector<Triangle>& tris, const std::vector<Segment>& constrained, KnownAdjacency known)
+  const Array<Triangle>& tris, const Array<Segment>& constrained, KnownAdjacency known)
 {
   int n = 0; // vertices 0..n-1
   for (const Triangle& t : tris)
@@ -49,8 +48,8 @@ KnownAdjacency adjacency(
   KnownAdjacency a = std::move(known);
   a.nbr.resize(tris.size(), { -1, -1, -1 });
   a.constrained.resize(tris.size(), 0);
-  std::vector<int> edgeStart, constrainedStart;
-  std::vector<std::array<int, 2>> edges, constrainedEdges;
+  Array<int> edgeStart, constrainedStart;
+  Array<std::array<int, 2>> edges, constrainedEdges;
   bucketByLo(
     n,
     [&](auto&& emit) {
@@ -78,10 +77,10 @@ KnownAdjacency adjacency(
     constrainedStart, constrainedEdges);
   // Per larger vertex hi, valid while its stamp is the current lo: (lo, hi) is
   // constrained; the last edge seen with ends (lo, hi).
-  std::vector<int> constrainedStamp, lastStamp, last;
-  assignHuge(constrainedStamp, static_cast<std::size_t>(n), -1);
-  assignHuge(lastStamp, static_cast<std::size_t>(n), -1);
-  assignHuge(last, static_cast<std::size_t>(n), -1);
+  Array<int> constrainedStamp, lastStamp, last;
+  constrainedStamp.assign(static_cast<std::size_t>(n), -1);
+  lastStamp.assign(static_cast<std::size_t>(n), -1);
+  last.assign(static_cast<std::size_t>(n), -1);
   for (int lo = 0; lo < n; ++lo)
   {
     for (int k = constrainedStart[lo]; k < constrainedStart[lo + 1]; ++k)
@@ -109,11 +108,11 @@ KnownAdjacency adjacency(
 /// unconstrained edges, named by its smallest triangle index. Union-find in
 /// index order touches memory in (spatial) order, where a flood jumps around.
 /// Both sides of an edge agree whether it is constrained: one side decides.
-std::vector<int> components(const KnownAdjacency& a)
+Array<int> components(const KnownAdjacency& a)
 {
   const int n = static_cast<int>(a.nbr.size());
-  std::vector<int> root;
-  assignHuge(root, static_cast<std::size_t>(n), 0);
+  Array<int> root;
+  root.assign(static_cast<std::size_t>(n), 0);
   std::iota(root.begin(), root.end(), 0);
   auto find = [&](int t) {
     while (root[t] != t)
@@ -146,12 +145,12 @@ std::vector<int> components(const KnownAdjacency& a)
 class TriangleGrid
 {
 public:
-  TriangleGrid(const std::vector<Point>& P, const std::vector<Triangle>& tris,
-    const std::vector<int>& component, const std::vector<char>& removed)
+  TriangleGrid(const Array<Point>& P, const Array<Triangle>& tris, const Array<int>& component,
+    const Array<char>& removed)
     : P(P)
     , tris(tris)
   {
-    std::vector<int> candidates;
+    Array<int> candidates;
     for (int t = 0; t < static_cast<int>(tris.size()); ++t)
       if (!removed[component[t]])
         candidates.push_back(t);
@@ -172,7 +171,7 @@ public:
     start.assign(static_cast<std::size_t>(n) * n + 1, 0);
     for (int pass = 0; pass < 2; ++pass)
     {
-      std::vector<int> fill(start.begin(), start.end() - 1);
+      Array<int> fill(start.begin(), start.end() - 1);
       for (int t : candidates)
         forCells(t, [&](std::size_t c) {
           if (pass == 0)
@@ -190,8 +189,7 @@ public:
   }
 
   /// A triangle not removed whose closure contains q, or -1.
-  int find(
-    const Point& q, const std::vector<int>& component, const std::vector<char>& removed) const
+  int find(const Point& q, const Array<int>& component, const Array<char>& removed) const
   {
     if (q.x < lo.x || q.x > hi.x || q.y < lo.y || q.y > hi.y)
       return -1;
@@ -228,24 +226,24 @@ private:
         f(static_cast<std::size_t>(y) * n + x);
   }
 
-  const std::vector<Point>& P;
-  const std::vector<Triangle>& tris;
+  const Array<Point>& P;
+  const Array<Triangle>& tris;
   Point lo, hi;
   int n = 1;
-  std::vector<int> start;
-  std::vector<int> items;
+  Array<int> start;
+  Array<int> items;
 };
 
 } // namespace
 
-Carving carveDomain(const std::vector<Point>& P, const std::vector<Triangle>& tris,
-  const std::vector<Segment>& constrained, bool removeExterior, const std::vector<Point>& holes,
+Carving carveDomain(const Array<Point>& P, const Array<Triangle>& tris,
+  const Array<Segment>& constrained, bool removeExterior, const Array<Point>& holes,
   KnownAdjacency known)
 {
   const KnownAdjacency a = adjacency(tris, constrained, std::move(known));
-  std::vector<int> component = components(a);
-  std::vector<char> removed; // per component
-  assignHuge(removed, tris.size(), char{ 0 });
+  Array<int> component = components(a);
+  Array<char> removed; // per component
+  removed.assign(tris.size(), char{ 0 });
   if (removeExterior)
     for (int t = 0; t < static_cast<int>(tris.size()); ++t)
       if (a.nbr[t][0] < 0 || a.nbr[t][1] < 0 || a.nbr[t][2] < 0)
@@ -285,7 +283,7 @@ namespace
 /// from rounded sums; any points of the set in counter-clockwise order would
 /// do: a point strictly left of every edge of such a closed polygon is
 /// strictly inside the hull.
-std::vector<int> hullCandidates(const std::vector<Point>& P)
+Array<int> hullCandidates(const Array<Point>& P)
 {
   if (P.empty())
     return {};
@@ -306,14 +304,14 @@ std::vector<int> hullCandidates(const std::vector<Point>& P)
       }
     }
   // A point extreme in consecutive directions would give an empty edge.
-  std::vector<int> polygon;
+  Array<int> polygon;
   for (int k = 0; k < 8; ++k)
     if (polygon.empty() || P[extreme[k]] != P[polygon.back()])
       polygon.push_back(extreme[k]);
   while (polygon.size() > 1 && P[polygon.back()] == P[polygon.front()])
     polygon.pop_back();
   const std::size_t m = polygon.size();
-  std::vector<int> out;
+  Array<int> out;
   for (int i = 0; i < static_cast<int>(P.size()); ++i)
   {
     bool inside = m >= 3;
@@ -327,13 +325,13 @@ std::vector<int> hullCandidates(const std::vector<Point>& P)
 
 } // namespace
 
-std::vector<int> convexHull(const std::vector<Point>& P)
+Array<int> convexHull(const Array<Point>& P)
 {
-  std::vector<int> order = hullCandidates(P);
+  Array<int> order = hullCandidates(P);
   std::sort(order.begin(), order.end(), [&](int a, int b) { return P[a] < P[b]; });
   if (order.size() < 3)
     return order;
-  std::vector<int> hull(2 * order.size());
+  Array<int> hull(2 * order.size());
   std::size_t k = 0;
   for (int i : order) // lower hull
   {
@@ -352,9 +350,9 @@ std::vector<int> convexHull(const std::vector<Point>& P)
   return hull;
 }
 
-std::vector<int> hullBoundary(const std::vector<Point>& P)
+Array<int> hullBoundary(const Array<Point>& P)
 {
-  const std::vector<int> hull = convexHull(P);
+  const Array<int> hull = convexHull(P);
   const int h = static_cast<int>(hull.size());
   if (h < 3)
     return hull;
@@ -363,17 +361,17 @@ std::vector<int> hullBoundary(const std::vector<Point>& P)
   // each other point lies, in that order, within one lower and one upper edge.
   const auto less = [&](int a, int b) { return P[a] < P[b]; };
   const int m = static_cast<int>(std::max_element(hull.begin(), hull.end(), less) - hull.begin());
-  const std::vector<int> lower(hull.begin(), hull.begin() + m + 1);
-  std::vector<int> upper{ hull[0] }; // the upper chain reversed: increasing too
+  const Array<int> lower(hull.begin(), hull.begin() + m + 1);
+  Array<int> upper{ hull[0] }; // the upper chain reversed: increasing too
   for (int k = h - 1; k >= m; --k)
     upper.push_back(hull[k]);
-  std::vector<char> onHull(P.size(), 0);
+  Array<char> onHull(P.size(), 0);
   for (int v : hull)
     onHull[v] = 1;
   // near[k]: points within rounding of hull edge k (from hull[k] to hull[k+1]).
-  std::vector<std::vector<int>> near(h);
+  Array<Array<int>> near(h);
   // The hull edge index near which point p lies within rounding, or -1.
-  const auto nearEdge = [&](const std::vector<int>& chain, int p, bool isLower) {
+  const auto nearEdge = [&](const Array<int>& chain, int p, bool isLower) {
     const auto it = std::upper_bound(chain.begin(), chain.end(), p, less);
     if (it == chain.begin() || it == chain.end())
       return -1;
@@ -394,11 +392,11 @@ std::vector<int> hullBoundary(const std::vector<Point>& P)
       near[up].push_back(p);
     // Near both chains: a hull without area, where the box domain serves.
   }
-  std::vector<int> boundary;
+  Array<int> boundary;
   for (int k = 0; k < h; ++k)
   {
     boundary.push_back(hull[k]);
-    std::vector<int>& extra = near[k];
+    Array<int>& extra = near[k];
     std::sort(extra.begin(), extra.end(), less); // along the edge
     if (k >= m)
       std::reverse(extra.begin(), extra.end());
@@ -407,9 +405,9 @@ std::vector<int> hullBoundary(const std::vector<Point>& P)
   return boundary;
 }
 
-bool segmentsEncloseRegion(std::size_t pointCount, const std::vector<Segment>& segments)
+bool segmentsEncloseRegion(std::size_t pointCount, const Array<Segment>& segments)
 {
-  std::vector<int> parent(pointCount);
+  Array<int> parent(pointCount);
   std::iota(parent.begin(), parent.end(), 0);
   auto root = [&](int v) {
     while (parent[v] != v)

@@ -5,6 +5,7 @@
 #define osm_Domain_h
 
 #include "Geometry.h"
+#include "HugePages.h"
 
 #include <array>
 #include <cstdint>
@@ -21,36 +22,36 @@ namespace osm
 struct KnownAdjacency
 {
   static constexpr int kUnknownNeighbour = -2;
-  std::vector<std::array<int, 3>> nbr;
-  std::vector<std::uint8_t> constrained;
+  Array<std::array<int, 3>> nbr;
+  Array<std::uint8_t> constrained;
 };
 
 struct Carving
 {
-  std::vector<int> regionId; ///< per input triangle: its region, or -1 if removed
+  Array<int> regionId; ///< per input triangle: its region, or -1 if removed
   std::size_t regions = 0;
-  std::vector<int> unusedHoles; ///< hole seeds outside the remaining triangles
+  Array<int> unusedHoles; ///< hole seeds outside the remaining triangles
 };
 
 /// removeExterior: drop triangles reachable from the box boundary without
 /// crossing a constrained edge. constrained holds (lo, hi) vertex pairs.
 /// known, the adjacency of the first triangles, must agree with them; it spares
 /// matching those edges, and its arrays are reused (move it in).
-Carving carveDomain(const std::vector<Point>& points, const std::vector<Triangle>& triangles,
-  const std::vector<Segment>& constrained, bool removeExterior, const std::vector<Point>& holes,
+Carving carveDomain(const Array<Point>& points, const Array<Triangle>& triangles,
+  const Array<Segment>& constrained, bool removeExterior, const Array<Point>& holes,
   KnownAdjacency known = {});
 
 /// Convex hull of the points, counter-clockwise, without collinear vertices.
-std::vector<int> convexHull(const std::vector<Point>& points);
+Array<int> convexHull(const Array<Point>& points);
 
 /// The convex hull as the boundary of the hull domain: with, in order, every
 /// point that lies on a hull edge within rounding. The hull segments must pass
 /// through such points: missing one by an ulp would leave the hull segment
 /// and the segments at that point closer than double precision separates.
-std::vector<int> hullBoundary(const std::vector<Point>& points);
+Array<int> hullBoundary(const Array<Point>& points);
 
 /// True if the segments contain a cycle (so they enclose some region).
-bool segmentsEncloseRegion(std::size_t pointCount, const std::vector<Segment>& segments);
+bool segmentsEncloseRegion(std::size_t pointCount, const Array<Segment>& segments);
 
 } // namespace osm
 

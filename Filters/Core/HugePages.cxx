@@ -2,7 +2,9 @@
 
 #include <cstdint>
 #include <cstdlib>
+#include <mutex>
 #include <string_view>
+#include <vector>
 
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -11,9 +13,45 @@
 namespace osm
 {
 
+namespace
+{
+constexpr std::uintptr_t kHuge = std::uintptr_t{ 2 } << 20;
+
+std::size_t roundUpToHuge(std::size_t bytes)
+{
+  return (bytes + kHuge - 1) & ~(kHuge - 1);
+}
+
+/// Freed mappings kept for reuse while a pages::Reuse lives, oldest first.
+struct Kept
+{
+  std::mutex mutex;
+  int scopes = 0;
+  std::size_t bytes = 0;
+  std::vector<std::pair<void*, std::size_t>> mappings;
+};
+
+Kept& kept()
+{
+  static Kept k;
+  return k;
+}
+
+void unmapNow(void* p, std::size_t size) noexcept
+{
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  munmap(p, size);
+#else
+  (void)p;
+  (void)size;
+#endif
+}
+} // namespace
+
 bool hugePagesWanted()
 {
-  // Read once: the environment is the host's to set, before meshing.
+  // Read once: the environment is the host's to set, before meshing. Every
+  // block is then freed the way it was allocated.
   static const bool wanted = [] {
     const char* off = std::getenv("OSM_NO_HUGE_PAGES");
     return !off || !*off || std::string_view(off) == "0";
@@ -24,17 +62,10 @@ bool hugePagesWanted()
 void adviseHugePages(const void* p, std::size_t bytes)
 {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
-  constexpr std::uintptr_t huge = std::uintptr_t{ 2 } << 20;
-  // Every whole huge page inside counts: an array of 2 to 8 MiB that gets one
-  // or two of them first-touches up to 1,000 small pages less, which on a
-  // virtual machine made inputs of 10^4 to 10^5 triangles 4-16% faster. The
-  // cost: a huge page is resident whole once touched, so up to 2 MiB of an
-  // array's reserved but unused room may be too (+8-13% peak memory at 10^4
-  // to 10^5 triangles, none from 10^6 up).
-  if (!p || bytes < huge || !hugePagesWanted())
+  if (!p || bytes < kHuge || !hugePagesWanted())
     return;
-  const std::uintptr_t begin = (reinterpret_cast<std::uintptr_t>(p) + huge - 1) & ~(huge - 1);
-  const std::uintptr_t end = (reinterpret_cast<std::uintptr_t>(p) + bytes) & ~(huge - 1);
+  const std::uintptr_t begin = (reinterpret_cast<std::uintptr_t>(p) + kHuge - 1) & ~(kHuge - 1);
+  const std::uintptr_t end = (reinterpret_cast<std::uintptr_t>(p) + bytes) & ~(kHuge - 1);
   if (end > begin)
     madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE); // advice: may fail
 #else
@@ -42,5 +73,105 @@ void adviseHugePages(const void* p, std::size_t bytes)
   (void)bytes;
 #endif
 }
+
+namespace pages
+{
+
+bool ownMapping(std::size_t bytes)
+{
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  return bytes >= kOwnMappingBytes && hugePagesWanted();
+#else
+  (void)bytes;
+  return false;
+#endif
+}
+
+void* map(std::size_t bytes)
+{
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  const std::size_t size = roundUpToHuge(bytes);
+  {
+    Kept& k = kept();
+    const std::lock_guard<std::mutex> lock(k.mutex);
+    for (std::size_t i = 0; i < k.mappings.size(); ++i)
+      if (k.mappings[i].second == size)
+      {
+        void* p = k.mappings[i].first;
+        k.mappings.erase(k.mappings.begin() + static_cast<std::ptrdiff_t>(i));
+        k.bytes -= size;
+        return p;
+      }
+  }
+  // mmap aligns to small pages only: map one huge page more, keep the
+  // aligned part and give back the rest.
+  const std::size_t span = size + kHuge;
+  void* m = mmap(nullptr, span, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+  if (m == MAP_FAILED)
+    throw std::bad_alloc();
+  const auto start = reinterpret_cast<std::uintptr_t>(m);
+  const std::uintptr_t aligned = (start + kHuge - 1) & ~(kHuge - 1);
+  if (aligned > start)
+    munmap(m, aligned - start);
+  if (const std::uintptr_t end = aligned + size; start + span > end)
+    munmap(reinterpret_cast<void*>(end), start + span - end);
+  madvise(reinterpret_cast<void*>(aligned), size, MADV_HUGEPAGE); // advice: may fail
+  return reinterpret_cast<void*>(aligned);
+#else
+  (void)bytes;
+  throw std::bad_alloc(); // ownMapping() is false here: never called
+#endif
+}
+
+void unmap(void* p, std::size_t bytes) noexcept
+{
+  const std::size_t size = roundUpToHuge(bytes);
+  Kept& k = kept();
+  std::unique_lock<std::mutex> lock(k.mutex);
+  if (k.scopes == 0 || size > kReuseBytes)
+  {
+    lock.unlock();
+    unmapNow(p, size);
+    return;
+  }
+  try
+  {
+    k.mappings.emplace_back(p, size);
+  }
+  catch (const std::bad_alloc&)
+  {
+    lock.unlock();
+    unmapNow(p, size);
+    return;
+  }
+  k.bytes += size;
+  while (k.bytes > kReuseBytes)
+  {
+    unmapNow(k.mappings.front().first, k.mappings.front().second);
+    k.bytes -= k.mappings.front().second;
+    k.mappings.erase(k.mappings.begin());
+  }
+}
+
+Reuse::Reuse()
+{
+  Kept& k = kept();
+  const std::lock_guard<std::mutex> lock(k.mutex);
+  ++k.scopes;
+}
+
+Reuse::~Reuse()
+{
+  Kept& k = kept();
+  const std::lock_guard<std::mutex> lock(k.mutex);
+  if (--k.scopes > 0)
+    return;
+  for (const auto& [p, size] : k.mappings)
+    unmapNow(p, size);
+  k.mappings.clear();
+  k.bytes = 0;
+}
+
+} // namespace pages
 
 } // namespace osm

@@ -2,18 +2,26 @@
 //
 // The refinement reads and writes its triangle slots in an order the mesh
 // decides, all over arrays of hundreds of megabytes: with 4 KiB pages nearly
-// every access misses the TLB, and every first touch of a fresh array is a page
-// fault (about 300,000 of them at 10^7 triangles, a fifth of the run on a
-// virtual machine). 2 MiB pages remove most of both. Debian's kernels give them
-// only to memory that asks (transparent_hugepage=madvise), so the mesher asks
-// for its own large arrays; the host application's heap stays as it was.
+// every access misses the TLB, and every first touch of a fresh page is a
+// page fault. On a virtual machine a small-page fault costs about 10 us, so
+// that a fresh 8 MiB array takes 22 ms to fill in 4 KiB pages and 0.3-0.7 ms
+// in 2 MiB pages. Debian's kernels give huge pages only to memory that asks
+// (transparent_hugepage=madvise), so the mesher asks for its own arrays; the
+// host application's heap stays as it was.
+//
+// osm::Array is the mesher's std::vector: a block of kOwnMappingBytes or more
+// gets a mapping of its own, aligned to and made of whole 2 MiB pages, with
+// the advice; smaller ones come from operator new. A mapping of its own, not
+// advice on the heap's memory, because the heap's blocks start anywhere, and
+// the small pages at both ends of a block were most of the faults left.
 // Where huge pages cost more than they save (a kernel that compacts memory
 // on every such fault), OSM_NO_HUGE_PAGES=1 in the environment turns the
-// advice off.
+// mappings and the advice off.
 #ifndef osm_HugePages_h
 #define osm_HugePages_h
 
 #include <cstddef>
+#include <new>
 #include <vector>
 
 namespace osm
@@ -23,55 +31,101 @@ namespace osm
 /// transparent huge pages, where it can (Linux; elsewhere, for ranges without
 /// a whole huge page, when the kernel declines, or with OSM_NO_HUGE_PAGES set to
 /// anything but 0, nothing changes). Best called before the memory is first
-/// touched.
+/// touched. For memory that is not an osm::Array's (the VTK filter's arrays).
 void adviseHugePages(const void* p, std::size_t bytes);
 
-/// Whether the advice is on: OSM_NO_HUGE_PAGES unset, empty or 0.
+/// Whether huge pages are wanted: OSM_NO_HUGE_PAGES unset, empty or 0.
 bool hugePagesWanted();
 
-/// v.reserve(n), then the advice for v's storage.
-template <class T>
-void reserveHuge(std::vector<T>& v, std::size_t n)
+namespace pages
 {
-  v.reserve(n);
-  adviseHugePages(v.data(), v.capacity() * sizeof(T));
-}
+/// Blocks from this size up get their own huge-page mapping. Below it, the
+/// up to 2 MiB that the last huge page of a block holds beyond it costs more
+/// memory than its faults cost time: clearing one 2 MiB page costs about as
+/// much as 128 small-page faults on bare metal, and much less on a virtual
+/// machine.
+constexpr std::size_t kOwnMappingBytes = std::size_t{ 512 } << 10;
 
-/// pushBackHuge when v is full: its storage doubles into advised memory.
-template <class T>
-[[gnu::noinline]] void pushBackGrowingHuge(std::vector<T>& v, const T& x)
-{
-  const T copy = x; // x may be an element of v, which growing frees
-  std::vector<T> bigger;
-  reserveHuge(bigger, 2 * v.capacity() + 16);
-  bigger.insert(bigger.end(), v.begin(), v.end());
-  bigger.push_back(copy);
-  v.swap(bigger);
-}
+/// Whether a block of this many bytes has (or would get) its own mapping.
+/// Depends on the size alone, so that freeing takes the allocation's path.
+bool ownMapping(std::size_t bytes);
 
-/// v.push_back(x); when v is full, its storage doubles into advised memory
-/// (for arrays that outgrow their reservation). The growth is apart so that
-/// the common case inlines: the refinement pushes a slot or an item per step.
-template <class T>
-inline void pushBackHuge(std::vector<T>& v, const T& x)
-{
-  if (v.size() == v.capacity())
-    pushBackGrowingHuge(v, x);
-  else
-    v.push_back(x);
-}
+/// A fresh mapping of the bytes rounded up to whole 2 MiB pages, aligned to
+/// 2 MiB and advised; throws std::bad_alloc if there is no room.
+void* map(std::size_t bytes);
 
-/// v.assign(n, value) on storage advised before it is filled.
-template <class T>
-void assignHuge(std::vector<T>& v, std::size_t n, const T& value)
+/// Gives back a mapping from map(bytes), or keeps it for reuse (see Reuse).
+void unmap(void* p, std::size_t bytes) noexcept;
+
+/// While one lives (osm::mesh keeps one for its whole call), a freed mapping
+/// of up to kReuseBytes waits to serve the next request of the same size,
+/// kReuseBytes in all: the phases free and allocate arrays of equal sizes, and
+/// growing arrays pass through the same sizes, so that a run of 10^6
+/// triangles would otherwise clear (first-touch) about 130 MB more. When the
+/// last one ends, the kept mappings are given back.
+class Reuse
 {
-  if (v.capacity() < n)
+public:
+  Reuse();
+  ~Reuse();
+  Reuse(const Reuse&) = delete;
+  Reuse& operator=(const Reuse&) = delete;
+};
+
+constexpr std::size_t kReuseBytes = std::size_t{ 16 } << 20;
+} // namespace pages
+
+/// The allocator of osm::Array (stateless: any instance frees any block).
+template <class T>
+struct HugeAllocator
+{
+  using value_type = T;
+
+  HugeAllocator() noexcept = default;
+  template <class U>
+  HugeAllocator(const HugeAllocator<U>&) noexcept
+  {}
+
+  T* allocate(std::size_t n)
   {
-    std::vector<T>().swap(v);
-    reserveHuge(v, n);
+    if (n > static_cast<std::size_t>(-1) / sizeof(T))
+      throw std::bad_array_new_length();
+    const std::size_t bytes = n * sizeof(T);
+    if (pages::ownMapping(bytes))
+      return static_cast<T*>(pages::map(bytes));
+    if constexpr (alignof(T) > __STDCPP_DEFAULT_NEW_ALIGNMENT__)
+      return static_cast<T*>(::operator new(bytes, std::align_val_t(alignof(T))));
+    else
+      return static_cast<T*>(::operator new(bytes));
   }
-  v.assign(n, value);
+
+  void deallocate(T* p, std::size_t n) noexcept
+  {
+    const std::size_t bytes = n * sizeof(T);
+    if (pages::ownMapping(bytes))
+      pages::unmap(p, bytes);
+    else if constexpr (alignof(T) > __STDCPP_DEFAULT_NEW_ALIGNMENT__)
+      ::operator delete(p, std::align_val_t(alignof(T)));
+    else
+      ::operator delete(p);
+  }
+};
+
+template <class T, class U>
+bool operator==(const HugeAllocator<T>&, const HugeAllocator<U>&) noexcept
+{
+  return true;
 }
+
+template <class T, class U>
+bool operator!=(const HugeAllocator<T>&, const HugeAllocator<U>&) noexcept
+{
+  return false;
+}
+
+/// The mesher's arrays: a std::vector whose large blocks are in huge pages.
+template <class T>
+using Array = std::vector<T, HugeAllocator<T>>;
 
 } // namespace osm
 

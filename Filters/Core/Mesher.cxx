@@ -56,16 +56,16 @@ double since(Clock::time_point t0)
 /// The working PSLG of one meshing round, in scaled coordinates.
 struct Work
 {
-  std::vector<Point> points;
-  std::vector<char> isCrossingPoint;
-  std::vector<Segment> segments;
-  std::vector<int> segmentOrigin; ///< the user's segment index, -1 for hull edges
-  std::vector<Point> holes;
+  Array<Point> points;
+  Array<char> isCrossingPoint;
+  Array<Segment> segments;
+  Array<int> segmentOrigin; ///< the user's segment index, -1 for hull edges
+  Array<Point> holes;
 };
 
 /// Power-of-two scale bringing the largest coordinate into [0.5, 1): exact, so
 /// input vertices come back bit for bit, and the predicates cannot overflow.
-std::string normalise(Work& w, const Pslg& input, const std::vector<int>& pointOf, int& exponent)
+std::string normalise(Work& w, const Pslg& input, const Array<int>& pointOf, int& exponent)
 {
   double maxAbs = 0;
   for (const Point& p : w.points)
@@ -110,9 +110,9 @@ std::string normalise(Work& w, const Pslg& input, const std::vector<int>& pointO
 }
 
 /// Split every segment at the points where others cross it.
-void splitCrossings(Work& w, const std::vector<SegmentCrossing>& crossings, Statistics& stats)
+void splitCrossings(Work& w, const Array<SegmentCrossing>& crossings, Statistics& stats)
 {
-  std::vector<std::vector<std::pair<double, int>>> cuts(w.segments.size());
+  Array<Array<std::pair<double, int>>> cuts(w.segments.size());
   for (const SegmentCrossing& c : crossings)
   {
     const int v = static_cast<int>(w.points.size());
@@ -163,10 +163,10 @@ void mergeEqualPoints(Work& w)
   Statistics ignored;
   std::vector<std::string> ignoredWarnings;
   cleanPslg(p, c, ignored, ignoredWarnings);
-  std::vector<char> crossing(c.points.size(), 0);
+  Array<char> crossing(c.points.size(), 0);
   for (std::size_t i = 0; i < w.points.size(); ++i)
     crossing[c.pointOf[i]] |= w.isCrossingPoint[i];
-  std::vector<int> origin;
+  Array<int> origin;
   for (int o : c.segmentOrigin)
     origin.push_back(w.segmentOrigin[o]);
   w.points = std::move(c.points);
@@ -187,8 +187,7 @@ std::string describeCrossing(const Work& w, const SegmentCrossing& c, int expone
   return name(c.a) + " and " + name(c.b) + " cross near " + formatPoint(p);
 }
 
-std::string crossingError(
-  const Work& w, const std::vector<SegmentCrossing>& crossings, int exponent)
+std::string crossingError(const Work& w, const Array<SegmentCrossing>& crossings, int exponent)
 {
   std::string msg = describeCrossing(w, crossings.front(), exponent);
   if (crossings.size() > 1)
@@ -208,9 +207,9 @@ public:
 
 private:
   void meshRounds(Work& w);
-  Domain chooseDomain(const Work& w, std::vector<int>& hull);
+  Domain chooseDomain(const Work& w, Array<int>& hull);
   void buildOutput(const Work& w, const PlanarGraph& g, Completion& c, Carving& carve,
-    const Overlay& overlay, std::vector<Edge>& edges);
+    const Overlay& overlay, Array<Edge>& edges);
 
   const Pslg& input;
   const Options& options;
@@ -275,7 +274,7 @@ Result Mesher::execute()
 /// Auto means the enclosed regions if the segments enclose any (decided on the
 /// segments as split at their crossings), else the hull; a hull without area
 /// falls back to the box. For the hull domain, hull receives its boundary.
-Domain Mesher::chooseDomain(const Work& w, std::vector<int>& hull)
+Domain Mesher::chooseDomain(const Work& w, Array<int>& hull)
 {
   hull.clear();
   Domain domain = options.domain;
@@ -301,8 +300,8 @@ void Mesher::meshRounds(Work& w)
   // repeat a few times, then give up with a clear error.
   for (int round = 0;; ++round)
   {
-    std::vector<Segment> segments = w.segments;
-    std::vector<int> hull;
+    Array<Segment> segments = w.segments;
+    Array<int> hull;
     const Domain domain = chooseDomain(w, hull);
     for (std::size_t i = 0; i < hull.size(); ++i)
       segments.push_back({ hull[i], hull[(i + 1) % hull.size()] });
@@ -363,7 +362,7 @@ void Mesher::meshRounds(Work& w)
       res.overlay.vertices = overlay.mesh.points;
       res.overlay.triangles = ov.tris;
     }
-    std::vector<Edge> edges;
+    Array<Edge> edges;
     PlanarGraph g = stitch(std::move(ov), std::move(overlay.mesh.points), overlay.isInput, walk,
       options.keepEdges ? &edges : nullptr, st);
     st.secondsStitch += since(t);
@@ -424,7 +423,7 @@ void angleExtremes(const TriMesh& mesh, double& minDeg, double& maxDeg)
 }
 
 void Mesher::buildOutput(const Work& w, const PlanarGraph& g, Completion& c, Carving& carve,
-  const Overlay& overlay, std::vector<Edge>& edges)
+  const Overlay& overlay, Array<Edge>& edges)
 {
   Statistics& st = res.stats;
   // Scaling back is exact unless a point falls among the subnormal numbers,
@@ -447,16 +446,16 @@ void Mesher::buildOutput(const Work& w, const PlanarGraph& g, Completion& c, Car
         true, p };
     return u;
   };
-  std::vector<int> newIndex;
-  assignHuge(newIndex, g.points.size(), -1);
+  Array<int> newIndex;
+  newIndex.assign(g.points.size(), -1);
   // Upper bounds: room never touched costs nothing, growing copies.
-  reserveHuge(res.mesh.vertices, g.points.size());
-  reserveHuge(res.vertexOrigin, g.points.size());
+  res.mesh.vertices.reserve(g.points.size());
+  res.vertexOrigin.reserve(g.points.size());
   // The kept triangles and their region ids move down in place.
   res.mesh.triangles = std::move(c.triangles);
   res.regionId = std::move(carve.regionId);
-  std::vector<Triangle>& tris = res.mesh.triangles;
-  std::vector<int>& region = res.regionId;
+  Array<Triangle>& tris = res.mesh.triangles;
+  Array<int>& region = res.regionId;
   std::size_t kept = 0;
   for (std::size_t t = 0; t < tris.size(); ++t)
   {
@@ -527,6 +526,7 @@ void Mesher::buildOutput(const Work& w, const PlanarGraph& g, Completion& c, Car
 
 Result mesh(const Pslg& input, const Options& options, Progress* progress)
 {
+  const pages::Reuse reuse; // declared first: the mesher's arrays are freed into it
   Mesher mesher(input, options, progress);
   try
   {

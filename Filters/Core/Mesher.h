@@ -2,6 +2,7 @@
 #ifndef osm_Mesher_h
 #define osm_Mesher_h
 
+#include "HugePages.h"
 #include "Pslg.h"
 #include "Statistics.h"
 
@@ -92,8 +93,8 @@ EdgeClass edgeClass(std::uint8_t flags);
 /// A triangle mesh: vertices and counter-clockwise triangles.
 struct TriMesh
 {
-  std::vector<Point> vertices;
-  std::vector<Triangle> triangles;
+  Array<Point> vertices;
+  Array<Triangle> triangles;
 };
 
 struct Result
@@ -102,17 +103,17 @@ struct Result
   std::string error;                 ///< why ok is false (names the offending items)
   std::vector<std::string> warnings; ///< repairs made and input that was ignored
 
-  TriMesh mesh;                           ///< the conforming triangulation
-  std::vector<VertexOrigin> vertexOrigin; ///< per mesh vertex
-  std::vector<int> regionId;              ///< per mesh triangle
+  TriMesh mesh;                     ///< the conforming triangulation
+  Array<VertexOrigin> vertexOrigin; ///< per mesh vertex
+  Array<int> regionId;              ///< per mesh triangle
   /// For each input point (by its index in the Pslg), its vertex in mesh, or -1 if
   /// it lies outside the returned domain (e.g. inside a hole).
-  std::vector<int> inputVertex;
+  Array<int> inputVertex;
 
   /// Overlay edges (uncrossed, kept, discarded) and input subsegments; indices
   /// refer to edgeVertices. Filled when Options::keepEdges.
-  std::vector<Point> edgeVertices;
-  std::vector<Edge> edges;
+  Array<Point> edgeVertices;
+  Array<Edge> edges;
 
   /// The phase-1 overlay triangulation. Filled when Options::keepOverlay.
   TriMesh overlay;

@@ -41,10 +41,10 @@ namespace
 /// 149.87 degrees; beyond 0.6 the count hardly falls.
 constexpr double kYield = 0.6;
 
-std::vector<Point> permuted(const std::vector<Point>& points, const std::vector<int>& order)
+Array<Point> permuted(const Array<Point>& points, const Array<int>& order)
 {
-  std::vector<Point> out;
-  reserveHuge(out, order.size());
+  Array<Point> out;
+  out.reserve(order.size());
   for (int i : order)
     out.push_back(points[i]);
   return out;
@@ -60,19 +60,19 @@ void renumberAlongHilbertCurve(Overlay& overlay)
   if (n <= 4)
     return;
   // The box corners stay 0..3; the others follow the curve.
-  const std::vector<int> order = hilbertOrder(mesh.points.data() + 4, n - 4);
-  std::vector<int> newIndex;
-  assignHuge(newIndex, n, 0);
+  const Array<int> order = hilbertOrder(mesh.points.data() + 4, n - 4);
+  Array<int> newIndex;
+  newIndex.assign(n, 0);
   for (int v = 0; v < 4; ++v)
     newIndex[v] = v;
   for (int k = 0; k < n - 4; ++k)
     newIndex[order[k] + 4] = k + 4;
-  std::vector<Point> points;
-  std::vector<int> vtri;
-  std::vector<char> isInput;
-  assignHuge(points, n, Point{});
-  assignHuge(vtri, n, 0);
-  assignHuge(isInput, n, char{ 0 });
+  Array<Point> points;
+  Array<int> vtri;
+  Array<char> isInput;
+  points.assign(n, Point{});
+  vtri.assign(n, 0);
+  isInput.assign(n, char{ 0 });
   for (int v = 0; v < n; ++v)
   {
     points[newIndex[v]] = mesh.points[v];
@@ -93,7 +93,7 @@ void renumberAlongHilbertCurve(Overlay& overlay)
 class Refiner
 {
 public:
-  Refiner(const std::vector<Point>& points, const OverlayOptions& options, RunContext& run)
+  Refiner(const Array<Point>& points, const OverlayOptions& options, RunContext& run)
     : original(hilbertOrder(points))
     , input(permuted(points, original))
     , run(run)
@@ -125,15 +125,15 @@ private:
   void splitHullEdge(int edge);
   /// cavityKnown: cavity and waiting already hold p's cavity and its points.
   bool insertVertex(const Point& p, int start, int inputIndex, bool cavityKnown = false);
-  void distribute(int v, const std::vector<int>& fan);
-  int findInFan(const Point& q, int v, const std::vector<int>& fan) const;
+  void distribute(int v, const Array<int>& fan);
+  int findInFan(const Point& q, int v, const Array<int>& fan) const;
   void countSteiner();
 
   // The input points in Hilbert order: the buckets of a triangle then hold
   // points that are near in memory too. original[i] is input point i's index
   // in the caller's order, which every choice and message uses.
-  const std::vector<int> original;
-  const std::vector<Point> input;
+  const Array<int> original;
+  const Array<Point> input;
   RunContext& run;
   const double gamma2;
   const double maxEdge2;
@@ -143,17 +143,17 @@ private:
   Triangulation& mesh = out.mesh;
   // A triangle's bucket (its first waiting input point, -1 if none) is its
   // slot's info.
-  std::vector<int> bucketNext; ///< per input point: next in its bucket
+  Array<int> bucketNext; ///< per input point: next in its bucket
   /// Per input point (in Hilbert order, near in memory as insertion proceeds):
   /// its mesh vertex; out.inputVertex gets it in the caller's order at the end.
-  std::vector<int> vertexOf;
+  Array<int> vertexOf;
   SizeQueue<Item> queue;
   std::size_t inserted = 0;
   std::size_t hardCap = 0;
   // Scratch.
   Triangulation::Cavity cavity;
-  std::vector<int> created;
-  std::vector<int> waiting;
+  Array<int> created;
+  Array<int> waiting;
 };
 
 void Refiner::makeBox()
@@ -172,7 +172,7 @@ void Refiner::makeBox()
   const int t0 = mesh.newTriangle(c0, c1, c2);
   const int t1 = mesh.newTriangle(c0, c2, c3);
   mesh.link(t0, t1);
-  assignHuge(bucketNext, input.size(), -1);
+  bucketNext.assign(input.size(), -1);
   // Walk in reverse so buckets list points in (Hilbert) index order.
   for (int i = static_cast<int>(input.size()) - 1; i >= 0; --i)
   {
@@ -211,12 +211,12 @@ Overlay Refiner::refine()
   try
   {
     mesh.reserve(expected, 2 * expected);
-    reserveHuge(out.isInput, expected);
+    out.isInput.reserve(expected);
   }
   catch (const std::bad_alloc&)
   {}
   makeBox();
-  assignHuge(vertexOf, input.size(), -1);
+  vertexOf.assign(input.size(), -1);
   // Overlay size is O(n log(L/s)); doubles bound log(L/s), so this cap only
   // catches a numerical runaway, turning a hang into a clear error.
   hardCap = 1000 * input.size() + 1000000;
@@ -383,7 +383,7 @@ bool Refiner::insertVertex(const Point& p, int start, int inputIndex, bool cavit
   return true;
 }
 
-int Refiner::findInFan(const Point& q, int v, const std::vector<int>& fan) const
+int Refiner::findInFan(const Point& q, int v, const Array<int>& fan) const
 {
   // q lies in the cavity, which the fan covers, star-shaped around v: q is in
   // the closed fan triangle (a, b, v) iff it lies in the closed wedge from the
@@ -409,7 +409,7 @@ int Refiner::findInFan(const Point& q, int v, const std::vector<int>& fan) const
   return mesh.locate(q, fan.front());
 }
 
-void Refiner::distribute(int v, const std::vector<int>& fan)
+void Refiner::distribute(int v, const Array<int>& fan)
 {
   // Reverse order keeps each bucket in increasing point order: deterministic.
   for (auto it = waiting.rbegin(); it != waiting.rend(); ++it)
@@ -426,8 +426,7 @@ void Refiner::distribute(int v, const std::vector<int>& fan)
 
 } // namespace
 
-Overlay buildOverlay(
-  const std::vector<Point>& points, const OverlayOptions& options, RunContext& run)
+Overlay buildOverlay(const Array<Point>& points, const OverlayOptions& options, RunContext& run)
 {
   if (points.empty())
     return {};

@@ -2,6 +2,7 @@
 #ifndef osm_Overlay_h
 #define osm_Overlay_h
 
+#include "HugePages.h"
 #include "RunContext.h"
 #include "Triangulation.h"
 
@@ -23,15 +24,14 @@ struct Overlay
   /// with every triangle of radius/edge ratio at most Γ. Vertices 0..3 are the
   /// box corners (counter-clockwise from the lower left).
   Triangulation mesh;
-  std::vector<int> inputVertex; ///< input point index -> mesh vertex
-  std::vector<char> isInput;    ///< per mesh vertex
+  Array<int> inputVertex; ///< input point index -> mesh vertex
+  Array<char> isInput;    ///< per mesh vertex
   std::size_t steinerPoints = 0;
   std::size_t refinementsSkipped = 0; ///< triangles that could not be refined (numerics)
 };
 
 /// Mesh the points (distinct, finite) alone; segments are ignored here.
-Overlay buildOverlay(
-  const std::vector<Point>& points, const OverlayOptions& options, RunContext& run);
+Overlay buildOverlay(const Array<Point>& points, const OverlayOptions& options, RunContext& run);
 
 /// Gap ratio Γ for an overlay minimum angle θ1 (degrees): sin θ1 = 1 / (2Γ).
 double gammaForMinAngle(double minAngleDeg);

@@ -284,7 +284,7 @@ std::string PlaneMap::choose(const std::vector<Vec3>& points, bool projectToXY)
   return {};
 }
 
-void PlaneMap::indexInputPoints(const std::vector<Point>& planar)
+void PlaneMap::indexInputPoints(const Array<Point>& planar)
 {
   if (!fitted)
     return;

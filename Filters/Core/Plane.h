@@ -4,6 +4,7 @@
 #define osm_Plane_h
 
 #include "Geometry.h"
+#include "HugePages.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -103,7 +104,7 @@ public:
 
   /// Remembers which 2D points are the input's (the first of equal ones), so
   /// that toSpace() returns their original coordinates.
-  void indexInputPoints(const std::vector<Point>& planar);
+  void indexInputPoints(const Array<Point>& planar);
   /// The 3D point of output vertex q; inputIndex is the input point it is, or
   /// -1 to look it up by its exact 2D coordinates.
   Vec3 toSpace(const Point& q, long long inputIndex = -1) const;

@@ -3,6 +3,7 @@
 #define osm_Pslg_h
 
 #include "Geometry.h"
+#include "HugePages.h"
 
 #include <vector>
 
@@ -13,10 +14,10 @@ namespace osm
 /// Segments must not cross, unless the mesher is allowed to split crossings.
 struct Pslg
 {
-  std::vector<Point> points;
-  std::vector<Segment> segments;
+  Array<Point> points;
+  Array<Segment> segments;
   /// Seeds: the region (bounded by segments) containing each one is removed.
-  std::vector<Point> holes;
+  Array<Point> holes;
 };
 
 } // namespace osm

@@ -29,7 +29,7 @@ public:
   void push(double key, const T& item)
   {
     const int b = bucketOf(key);
-    pushBackHuge(buckets[b], item); // a bucket can hold millions
+    buckets[b].push_back(item); // a bucket can hold millions
     top = std::max(top, b);
     ++size;
   }
@@ -60,7 +60,7 @@ private:
     return (std::ilogb(key) - kMinExponent) / 2;
   }
 
-  std::vector<std::vector<T>> buckets = std::vector<std::vector<T>>(kBuckets);
+  Array<Array<T>> buckets = Array<Array<T>>(kBuckets);
   int top = 0;
   std::size_t size = 0;
 };

@@ -72,10 +72,10 @@ std::uint32_t hilbertKey(const HilbertTable& table, std::uint32_t x, std::uint32
 
 } // namespace
 
-std::vector<int> hilbertOrder(const Point* points, std::size_t n)
+Array<int> hilbertOrder(const Point* points, std::size_t n)
 {
-  std::vector<int> order;
-  assignHuge(order, n, 0);
+  Array<int> order;
+  order.assign(n, 0);
   if (n == 0)
     return order;
   struct Range
@@ -88,8 +88,8 @@ std::vector<int> hilbertOrder(const Point* points, std::size_t n)
   const double size = std::max(b.width(), b.height());
   const double scale = size > 0 ? 65535.0 / size : 0.0;
   static constexpr HilbertTable table{};
-  std::vector<std::uint32_t> keys;
-  assignHuge(keys, n, std::uint32_t{ 0 });
+  Array<std::uint32_t> keys;
+  keys.assign(n, std::uint32_t{ 0 });
   for (std::size_t i = 0; i < n; ++i)
   {
     const auto x = static_cast<std::uint32_t>((points[i].x - b.lo.x) * scale);
@@ -101,11 +101,11 @@ std::vector<int> hilbertOrder(const Point* points, std::size_t n)
   // bits a pass, so the counters cost nothing next to them.
   const int bits = n < 65536 ? 8 : 16;
   const std::uint32_t mask = (1u << bits) - 1;
-  std::vector<int> from;
-  assignHuge(from, n, 0);
+  Array<int> from;
+  from.assign(n, 0);
   for (std::size_t i = 0; i < from.size(); ++i)
     from[i] = static_cast<int>(i);
-  std::vector<std::size_t> count(std::size_t(mask) + 2);
+  Array<std::size_t> count(std::size_t(mask) + 2);
   for (int shift = 0; shift < 32; shift += bits)
   {
     std::fill(count.begin(), count.end(), 0);

@@ -5,6 +5,7 @@
 #define osm_SpatialSort_h
 
 #include "Geometry.h"
+#include "HugePages.h"
 
 #include <vector>
 
@@ -12,9 +13,9 @@ namespace osm
 {
 
 /// Indices of points[0..n) in Hilbert-curve order (ties keep input order).
-std::vector<int> hilbertOrder(const Point* points, std::size_t n);
+Array<int> hilbertOrder(const Point* points, std::size_t n);
 
-inline std::vector<int> hilbertOrder(const std::vector<Point>& points)
+inline Array<int> hilbertOrder(const Array<Point>& points)
 {
   return hilbertOrder(points.data(), points.size());
 }

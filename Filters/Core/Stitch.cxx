@@ -20,23 +20,23 @@ OverlayEdges compactOverlay(const Triangulation& mesh)
   const auto lowest = [&](int t) {
     return std::min({ mesh.tri[t].v[0], mesh.tri[t].v[1], mesh.tri[t].v[2] });
   };
-  std::vector<int> start;
-  assignHuge(start, mesh.points.size() + 1, 0);
+  Array<int> start;
+  start.assign(mesh.points.size() + 1, 0);
   for (int t = 0; t < mesh.slots(); ++t)
     if (mesh.alive(t))
       ++start[lowest(t) + 1];
   for (std::size_t v = 0; v + 1 < start.size(); ++v)
     start[v + 1] += start[v];
-  std::vector<int> index;
-  assignHuge(index, static_cast<std::size_t>(mesh.slots()), -1);
+  Array<int> index;
+  index.assign(static_cast<std::size_t>(mesh.slots()), -1);
   // Stitching makes the intact triangles and their adjacency out of tris and
   // nbr in place, and completion appends to them: room now (untouched, it
   // costs only address space) spares copying them then.
   const std::size_t n = start.back(), room = n + n / 2 + 64;
   try
   {
-    reserveHuge(ov.tris, room);
-    reserveHuge(ov.nbr, room);
+    ov.tris.reserve(room);
+    ov.nbr.reserve(room);
   }
   catch (const std::bad_alloc&)
   {}
@@ -48,7 +48,7 @@ OverlayEdges compactOverlay(const Triangulation& mesh)
     index[t] = start[lowest(t)]++;
     ov.tris[index[t]] = mesh.tri[t].v;
   }
-  std::vector<int>().swap(start);
+  Array<int>().swap(start);
   ov.nbr.resize(ov.tris.size());
   for (int t = 0; t < mesh.slots(); ++t)
   {
@@ -62,7 +62,7 @@ OverlayEdges compactOverlay(const Triangulation& mesh)
     }
   }
   // In this order, near in space, vtri is written near in memory too.
-  assignHuge(ov.vtri, mesh.points.size(), -1);
+  ov.vtri.assign(mesh.points.size(), -1);
   for (int c = 0; c < static_cast<int>(ov.tris.size()); ++c)
     for (int v : ov.tris[c])
       ov.vtri[v] = c;
@@ -112,13 +112,13 @@ private:
   void markDuplicates();
 
   const OverlayEdges& ov;
-  const std::vector<Point>& P;
-  const std::vector<char>& isInput;
+  const Array<Point>& P;
+  const Array<char>& isInput;
   const double sinTheta1;
   Walk& out;
-  int segmentStart = -1;                        ///< first vertex of the segment being walked
-  std::vector<std::pair<int, int>> triPiece;    ///< (overlay triangle, piece) traversed
-  std::vector<std::pair<int, int>> steinerHits; ///< (Steiner vertex, segment) passing through it
+  int segmentStart = -1;                  ///< first vertex of the segment being walked
+  Array<std::pair<int, int>> triPiece;    ///< (overlay triangle, piece) traversed
+  Array<std::pair<int, int>> steinerHits; ///< (Steiner vertex, segment) passing through it
 };
 
 /// x lies strictly further along the segment than from, and not beyond B. The
@@ -306,7 +306,7 @@ void Walker::markDuplicates()
 {
   // Overlapping collinear segments were split at each other's endpoints, so
   // their shared parts are identical pieces: keep the first.
-  std::vector<std::array<int, 3>> keys;
+  Array<std::array<int, 3>> keys;
   keys.reserve(out.pieces.size());
   for (int i = 0; i < static_cast<int>(out.pieces.size()); ++i)
   {
@@ -355,7 +355,7 @@ void Walker::findSegmentCrossings()
     k = end;
   }
   // ...or one crosses an overlay edge along which the other runs.
-  std::vector<std::pair<int, int>> edgePiece; // (overlay edge, piece along it)
+  Array<std::pair<int, int>> edgePiece; // (overlay edge, piece along it)
   for (int i = 0; i < static_cast<int>(out.pieces.size()); ++i)
     if (out.pieces[i].overlayEdge >= 0 && !out.pieces[i].duplicate)
       edgePiece.push_back({ out.pieces[i].overlayEdge, i });
@@ -391,8 +391,8 @@ void Walker::findSegmentCrossings()
 
 } // namespace
 
-Walk walkSegments(const OverlayEdges& ov, const Overlay& overlay,
-  const std::vector<Segment>& segments, double sinTheta1, RunContext& run)
+Walk walkSegments(const OverlayEdges& ov, const Overlay& overlay, const Array<Segment>& segments,
+  double sinTheta1, RunContext& run)
 {
   Walk out;
   Walker walker(ov, overlay, sinTheta1, out);
@@ -411,12 +411,12 @@ namespace
 /// Crossings grouped by overlay edge in increasing edge order, each group
 /// sorted along its edge. A comparison sort of the crossings alone: a
 /// counting sort would need arrays over every overlay edge.
-std::vector<int> crossingsByEdge(const Walk& walk)
+Array<int> crossingsByEdge(const Walk& walk)
 {
-  std::vector<int> order(walk.crossings.size());
+  Array<int> order(walk.crossings.size());
   for (std::size_t i = 0; i < order.size(); ++i)
     order[i] = static_cast<int>(i);
-  const std::vector<Crossing>& c = walk.crossings;
+  const Array<Crossing>& c = walk.crossings;
   std::sort(order.begin(), order.end(), [&](int a, int b) {
     return c[a].edge != c[b].edge ? c[a].edge < c[b].edge
       : c[a].s != c[b].s          ? c[a].s < c[b].s
@@ -444,7 +444,7 @@ enum HalfEdgeFlag : std::uint8_t
 };
 
 /// Sets flag on edge id and on its other half, if any.
-void flagEdge(const OverlayEdges& ov, std::vector<std::uint8_t>& flags, int id, std::uint8_t flag)
+void flagEdge(const OverlayEdges& ov, Array<std::uint8_t>& flags, int id, std::uint8_t flag)
 {
   flags[id] |= flag;
   if (const int other = ov.twin(id / 3, id % 3); other >= 0)
@@ -453,10 +453,10 @@ void flagEdge(const OverlayEdges& ov, std::vector<std::uint8_t>& flags, int id, 
 
 /// Per overlay triangle: its index among the triangles that no segment
 /// crosses (faces of the stitched graph as they are), or -1.
-std::vector<int> numberIntact(const std::vector<std::uint8_t>& flags, int& count)
+Array<int> numberIntact(const Array<std::uint8_t>& flags, int& count)
 {
-  std::vector<int> intactIndex;
-  assignHuge(intactIndex, flags.size() / 3, -1);
+  Array<int> intactIndex;
+  intactIndex.assign(flags.size() / 3, -1);
   count = 0;
   for (std::size_t c = 0; c < intactIndex.size(); ++c)
     if (!((flags[3 * c] | flags[3 * c + 1] | flags[3 * c + 2]) & HalfCrossed))
@@ -467,13 +467,13 @@ std::vector<int> numberIntact(const std::vector<std::uint8_t>& flags, int& count
 /// Lists the intact triangles in g.intact, with their adjacency among
 /// themselves. Takes over ov.tris and ov.nbr: an intact triangle only ever
 /// moves down, over a place already read, so both are filtered in place.
-void listIntact(OverlayEdges& ov, const std::vector<std::uint8_t>& flags,
-  const std::vector<int>& intactIndex, int count, const Walk& walk, PlanarGraph& g)
+void listIntact(OverlayEdges& ov, const Array<std::uint8_t>& flags, const Array<int>& intactIndex,
+  int count, const Walk& walk, PlanarGraph& g)
 {
-  std::vector<Triangle> tris = std::move(ov.tris);
-  std::vector<std::array<int, 3>> nbrs = std::move(ov.nbr);
+  Array<Triangle> tris = std::move(ov.tris);
+  Array<std::array<int, 3>> nbrs = std::move(ov.nbr);
   KnownAdjacency& known = g.intactAdjacency;
-  reserveHuge(known.constrained, static_cast<std::size_t>(count));
+  known.constrained.reserve(static_cast<std::size_t>(count));
   for (std::size_t c = 0; c < tris.size(); ++c)
   {
     const int k = intactIndex[c];
@@ -509,8 +509,8 @@ void listIntact(OverlayEdges& ov, const std::vector<std::uint8_t>& flags,
 
 } // namespace
 
-PlanarGraph stitch(OverlayEdges ov, std::vector<Point> points, const std::vector<char>& isInput,
-  const Walk& walk, std::vector<Edge>* inspect, Statistics& stats)
+PlanarGraph stitch(OverlayEdges ov, Array<Point> points, const Array<char>& isInput,
+  const Walk& walk, Array<Edge>* inspect, Statistics& stats)
 {
   PlanarGraph g;
   // Each crossing may add a stitch vertex, and each overlay edge, crossing
@@ -520,12 +520,12 @@ PlanarGraph stitch(OverlayEdges ov, std::vector<Point> points, const std::vector
   const std::size_t overlayVertices = points.size();
   g.points = std::move(points);
   g.points.reserve(overlayVertices + nc);
-  reserveHuge(g.origin, overlayVertices + nc);
+  g.origin.reserve(overlayVertices + nc);
   g.origin.resize(overlayVertices);
   const std::size_t edgeBound = ne / 2 + 2 * nc + walk.pieces.size();
-  reserveHuge(g.edges, edgeBound);
-  reserveHuge(g.constrained, edgeBound);
-  reserveHuge(g.openSides, edgeBound);
+  g.edges.reserve(edgeBound);
+  g.constrained.reserve(edgeBound);
+  g.openSides.reserve(edgeBound);
   for (std::size_t v = 0; v < g.points.size(); ++v)
     g.origin[v] = isInput[v] ? VertexOrigin::Input : VertexOrigin::Overlay;
   auto addEdge = [&](int a, int b, bool constrained, std::uint8_t open) {
@@ -534,8 +534,8 @@ PlanarGraph stitch(OverlayEdges ov, std::vector<Point> points, const std::vector
     g.openSides.push_back(open);
   };
 
-  std::vector<std::uint8_t> flags;
-  assignHuge(flags, ne, std::uint8_t{ 0 });
+  Array<std::uint8_t> flags;
+  flags.assign(ne, std::uint8_t{ 0 });
   for (const Crossing& c : walk.crossings)
   {
     if (walk.pieces[c.piece].duplicate)
@@ -548,7 +548,7 @@ PlanarGraph stitch(OverlayEdges ov, std::vector<Point> points, const std::vector
     if (p.overlayEdge >= 0 && !p.duplicate)
       flagEdge(ov, flags, p.overlayEdge, HalfAlongInput);
   int intactCount = 0;
-  const std::vector<int> intactIndex = numberIntact(flags, intactCount);
+  const Array<int> intactIndex = numberIntact(flags, intactCount);
   // The faces still to trace lie on the sides of an edge whose triangle there
   // is not intact; an edge's id names the triangle on its left.
   auto openSides = [&](int id) {
@@ -558,9 +558,9 @@ PlanarGraph stitch(OverlayEdges ov, std::vector<Point> points, const std::vector
   };
 
   // Kept crossed edges: one stitch vertex per crossing, in order along the edge.
-  const std::vector<int> order = crossingsByEdge(walk);
+  const Array<int> order = crossingsByEdge(walk);
   std::size_t next = 0; // the first crossing, in order, of the edges still to come
-  std::vector<int> stitchVertex(walk.crossings.size(), -1);
+  Array<int> stitchVertex(walk.crossings.size(), -1);
   for (int e = 0; e < static_cast<int>(ne); ++e)
   {
     if (!ov.isEdge(e))

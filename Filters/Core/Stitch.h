@@ -11,6 +11,7 @@
 #define osm_Stitch_h
 
 #include "Domain.h"
+#include "HugePages.h"
 #include "Mesher.h"
 #include "Overlay.h"
 #include "RunContext.h"
@@ -28,9 +29,9 @@ namespace osm
 /// every edge once, with no array over the edges.
 struct OverlayEdges
 {
-  std::vector<Triangle> tris;
-  std::vector<std::array<int, 3>> nbr; ///< across the edge opposite vertex i, or -1
-  std::vector<int> vtri;               ///< one triangle per vertex
+  Array<Triangle> tris;
+  Array<std::array<int, 3>> nbr; ///< across the edge opposite vertex i, or -1
+  Array<int> vtri;               ///< one triangle per vertex
 
   /// Whether half-edge h is an edge id (its triangle is the smaller one).
   bool isEdge(int h) const
@@ -91,16 +92,16 @@ struct SegmentCrossing
 
 struct Walk
 {
-  std::vector<Piece> pieces;
-  std::vector<Crossing> crossings;
-  std::vector<SegmentCrossing> segmentCrossings;
+  Array<Piece> pieces;
+  Array<Crossing> crossings;
+  Array<SegmentCrossing> segmentCrossings;
   std::size_t splitsAtInputVertices = 0;
   std::size_t duplicatePieces = 0;
 };
 
 /// Walk every segment (endpoints given as overlay vertices) through the overlay.
-Walk walkSegments(const OverlayEdges& ov, const Overlay& overlay,
-  const std::vector<Segment>& segments, double sinTheta1, RunContext& run);
+Walk walkSegments(const OverlayEdges& ov, const Overlay& overlay, const Array<Segment>& segments,
+  double sinTheta1, RunContext& run);
 
 /// Sides of a planar-graph edge that lie in a face still to be completed.
 enum OpenSide : std::uint8_t
@@ -116,21 +117,21 @@ enum OpenSide : std::uint8_t
 /// trace) and every input subsegment.
 struct PlanarGraph
 {
-  std::vector<Point> points;
-  std::vector<VertexOrigin> origin;
-  std::vector<Triangle> intact;   ///< overlay triangles that no segment crosses
+  Array<Point> points;
+  Array<VertexOrigin> origin;
+  Array<Triangle> intact;         ///< overlay triangles that no segment crosses
   KnownAdjacency intactAdjacency; ///< their neighbours among them, for carveDomain
-  std::vector<Segment> edges;
-  std::vector<char> constrained;       ///< per edge: part of an input segment
-  std::vector<std::uint8_t> openSides; ///< per edge: OpenSide bits, 0 if only constrained
+  Array<Segment> edges;
+  Array<char> constrained;       ///< per edge: part of an input segment
+  Array<std::uint8_t> openSides; ///< per edge: OpenSide bits, 0 if only constrained
 };
 
 /// Keep or discard overlay edges and insert the kept crossings. When inspect is
 /// given, it receives every overlay edge and input subsegment with its flags.
 /// The graph is built in the arrays of ov and of the overlay's points (isInput
 /// per point): move them in, or copy what must outlive the call.
-PlanarGraph stitch(OverlayEdges ov, std::vector<Point> points, const std::vector<char>& isInput,
-  const Walk& walk, std::vector<Edge>* inspect, Statistics& stats);
+PlanarGraph stitch(OverlayEdges ov, Array<Point> points, const Array<char>& isInput,
+  const Walk& walk, Array<Edge>* inspect, Statistics& stats);
 
 } // namespace osm
 

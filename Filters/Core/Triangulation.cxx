@@ -11,8 +11,8 @@ namespace osm
 
 int Triangulation::addPoint(const Point& p)
 {
-  pushBackHuge(points, p);
-  pushBackHuge(vtri, -1);
+  points.push_back(p);
+  vtri.push_back(-1);
   return static_cast<int>(points.size()) - 1;
 }
 
@@ -27,7 +27,7 @@ int Triangulation::newTriangle(int a, int b, int c)
   else
   {
     t = slots();
-    pushBackHuge(tri, Slot{ { -1, -1, -1 }, { -1, -1, -1 }, 0, -1 });
+    tri.push_back(Slot{ { -1, -1, -1 }, { -1, -1, -1 }, 0, -1 });
   }
   tri[t].v = { a, b, c };
   tri[t].n = { -1, -1, -1 };
@@ -38,24 +38,24 @@ int Triangulation::newTriangle(int a, int b, int c)
 
 void Triangulation::reserve(std::size_t pointCount, std::size_t triangleCount)
 {
-  reserveHuge(points, pointCount);
-  reserveHuge(vtri, pointCount);
-  reserveHuge(tri, triangleCount);
+  points.reserve(pointCount);
+  vtri.reserve(pointCount);
+  tri.reserve(triangleCount);
 }
 
 void Triangulation::releaseTriangles()
 {
-  std::vector<Slot>().swap(tri);
-  std::vector<int>().swap(vtri);
-  std::vector<int>().swap(freeSlots);
+  Array<Slot>().swap(tri);
+  Array<int>().swap(vtri);
+  Array<int>().swap(freeSlots);
   releaseInsertionScratch();
 }
 
 void Triangulation::releaseInsertionScratch()
 {
-  std::vector<int>().swap(fanByVertex);
-  std::vector<FanTriangle>().swap(fan);
-  std::vector<int>().swap(ordered);
+  Array<int>().swap(fanByVertex);
+  Array<FanTriangle>().swap(fan);
+  Array<int>().swap(ordered);
 }
 
 void Triangulation::freeTriangle(int t)
@@ -173,7 +173,7 @@ bool Triangulation::cavityOf(const Point& p, int start, Cavity& cavity) const
   return true;
 }
 
-bool Triangulation::insertIntoCavity(int v, const Cavity& cavity, std::vector<int>& created)
+bool Triangulation::insertIntoCavity(int v, const Cavity& cavity, Array<int>& created)
 {
   created.clear();
   const Point& p = points[v];
@@ -230,7 +230,7 @@ bool Triangulation::insertIntoCavity(int v, const Cavity& cavity, std::vector<in
   {
     // Not at every new point; every entry is -1 between insertions.
     if (fanByVertex.size() < points.size())
-      assignHuge(fanByVertex, 2 * points.size(), -1);
+      fanByVertex.assign(2 * points.size(), -1);
     for (std::size_t j = 0; j < fan.size(); ++j)
       fanByVertex[fan[j].a] = static_cast<int>(j);
     for (std::size_t i = 0; i < fan.size(); ++i)

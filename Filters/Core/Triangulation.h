@@ -8,6 +8,7 @@
 #define osm_Triangulation_h
 
 #include "Geometry.h"
+#include "HugePages.h"
 
 #include <array>
 #include <cstdint>
@@ -30,9 +31,9 @@ public:
     int info; ///< the user's, -1 in a new triangle (the refinement keeps a list head here)
   };
 
-  std::vector<Point> points;
-  std::vector<Slot> tri;
-  std::vector<int> vtri; ///< one live triangle incident to each vertex
+  Array<Point> points;
+  Array<Slot> tri;
+  Array<int> vtri; ///< one live triangle incident to each vertex
 
   int addPoint(const Point& p);
   int newTriangle(int a, int b, int c);
@@ -70,8 +71,8 @@ public:
   /// boundary, found during the same search.
   struct Cavity
   {
-    std::vector<int> triangles;
-    std::vector<int> boundary;
+    Array<int> triangles;
+    Array<int> boundary;
   };
 
   /// The cavity of p, searched from a triangle containing p. Returns false if
@@ -82,10 +83,10 @@ public:
   /// Returns false, changing nothing, if the cavity is not star-shaped from v.
   /// created receives the new triangles in counter-clockwise order around v,
   /// each with v as its vertex 2.
-  bool insertIntoCavity(int v, const Cavity& cavity, std::vector<int>& created);
+  bool insertIntoCavity(int v, const Cavity& cavity, Array<int>& created);
 
 private:
-  std::vector<int> freeSlots;
+  Array<int> freeSlots;
   // Scratch state kept between calls so insertion allocates nothing.
   mutable std::uint32_t markStamp = 0;
   struct FanTriangle
@@ -93,10 +94,10 @@ private:
     int a, b, outside; ///< edge (a, b) of the cavity boundary, triangle outside beyond it
     int outsideLink;   ///< the half-edge of outside that refers back across (a, b)
   };
-  std::vector<FanTriangle> fan;
+  Array<FanTriangle> fan;
   static constexpr std::size_t kSmallFan = 16;
-  std::vector<int> ordered;
-  std::vector<int> fanByVertex;
+  Array<int> ordered;
+  Array<int> fanByVertex;
 };
 
 /// Circumcenter of triangle (a, b, c) minus a: accurate even for a tiny

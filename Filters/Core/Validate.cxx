@@ -282,13 +282,13 @@ private:
 /// t; c is also the id of the half-edge from that vertex to the next one of t.
 struct Mesh
 {
-  Mesh(const std::vector<Point>& p, const std::vector<Triangle>& t)
+  Mesh(const Array<Point>& p, const Array<Triangle>& t)
     : points(p)
     , triangles(t)
   {}
 
-  const std::vector<Point>& points;
-  const std::vector<Triangle>& triangles;
+  const Array<Point>& points;
+  const Array<Triangle>& triangles;
   std::vector<char> usable;     ///< per triangle: indices valid, coordinates finite
   std::vector<char> positive;   ///< per triangle: exact orient2d > 0
   std::vector<char> referenced; ///< per vertex: a corner of a usable triangle
@@ -947,10 +947,10 @@ namespace
 
 /// Power-of-two exponent that brings coordinates near 1 when they are so large
 /// or small that the predicates' products would overflow or underflow; 0 otherwise.
-int rescaleExponent(const Pslg& input, const std::vector<Point>& vertices)
+int rescaleExponent(const Pslg& input, const Array<Point>& vertices)
 {
   double m = 0;
-  for (const std::vector<Point>* pts : { &input.points, &vertices })
+  for (const Array<Point>* pts : { &input.points, &vertices })
     for (const Point& p : *pts)
       if (std::isfinite(p.x) && std::isfinite(p.y))
         m = std::max({ m, std::fabs(p.x), std::fabs(p.y) });
@@ -960,9 +960,9 @@ int rescaleExponent(const Pslg& input, const std::vector<Point>& vertices)
   return e;
 }
 
-std::vector<Point> scaled(const std::vector<Point>& pts, int e)
+Array<Point> scaled(const Array<Point>& pts, int e)
 {
-  std::vector<Point> out(pts);
+  Array<Point> out(pts);
   for (Point& p : out)
     p = { std::ldexp(p.x, -e), std::ldexp(p.y, -e) };
   return out;
@@ -970,8 +970,8 @@ std::vector<Point> scaled(const std::vector<Point>& pts, int e)
 
 } // namespace
 
-ValidationReport validate(const Pslg& input, const std::vector<Point>& vertices,
-  const std::vector<Triangle>& triangles, const ValidationOptions& options)
+ValidationReport validate(const Pslg& input, const Array<Point>& vertices,
+  const Array<Triangle>& triangles, const ValidationOptions& options)
 {
   // Scaling by a power of two is exact and changes no predicate or angle.
   if (const int e = rescaleExponent(input, vertices); e != 0)

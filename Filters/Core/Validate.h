@@ -42,8 +42,8 @@ struct ValidationReport
 /// boundary edges, vertices inside triangles, pairwise overlap for small meshes), no coincident
 /// mesh vertices, input points present, input segments conforming, and the angle bound.
 /// O(n log n) beyond the brute-force limit; ok is false iff errorCount > 0.
-ValidationReport validate(const Pslg& input, const std::vector<Point>& vertices,
-  const std::vector<Triangle>& triangles, const ValidationOptions& options = {});
+ValidationReport validate(const Pslg& input, const Array<Point>& vertices,
+  const Array<Triangle>& triangles, const ValidationOptions& options = {});
 
 } // namespace osm
 

@@ -145,8 +145,8 @@ struct MemoryProbe
 /// Output of one meshing call in a common form: vertices and triangles (any orientation).
 struct MeshOut
 {
-  std::vector<osm::Point> vertices;
-  std::vector<osm::Triangle> triangles;
+  osm::Array<osm::Point> vertices;
+  osm::Array<osm::Triangle> triangles;
 };
 
 struct Quality

@@ -36,8 +36,7 @@ class Random
 public:
   explicit Random(std::uint64_t seed)
     : state(seed * 0x9E3779B97F4A7C15ull + 0x632BE59BD9B4E019ull)
-  {
-  }
+  {}
   std::uint64_t next()
   {
     std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);

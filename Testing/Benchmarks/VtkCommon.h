@@ -28,8 +28,8 @@ inline vtkSmartPointer<vtkPolyData> toPolyData(const osm::Pslg& p, bool withLine
   if (withLines)
   {
     vtkNew<vtkCellArray> lines;
-    lines->AllocateExact(static_cast<vtkIdType>(p.segments.size()),
-      2 * static_cast<vtkIdType>(p.segments.size()));
+    lines->AllocateExact(
+      static_cast<vtkIdType>(p.segments.size()), 2 * static_cast<vtkIdType>(p.segments.size()));
     for (const osm::Segment& s : p.segments)
     {
       const vtkIdType ids[2] = { s[0], s[1] };
@@ -69,8 +69,8 @@ inline MeshOut fromPolyData(vtkPolyData* out)
   const vtkIdType* pts = nullptr;
   for (polys->InitTraversal(); polys->GetNextCell(npts, pts);)
     if (npts == 3)
-      m.triangles.push_back({ static_cast<int>(pts[0]), static_cast<int>(pts[1]),
-        static_cast<int>(pts[2]) });
+      m.triangles.push_back(
+        { static_cast<int>(pts[0]), static_cast<int>(pts[1]), static_cast<int>(pts[2]) });
   return m;
 }
 

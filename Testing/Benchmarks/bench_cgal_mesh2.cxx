@@ -58,7 +58,7 @@ std::size_t flood(const Cdt& cdt, Cdt::Face_handle start, bool value)
 }
 
 /// Marks the domain as described above; returns true for "enclosed".
-bool markDomain(Cdt& cdt, const std::vector<osm::Point>& holes)
+bool markDomain(Cdt& cdt, const osm::Array<osm::Point>& holes)
 {
   for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f)
     f->set_in_domain(true);

@@ -10,7 +10,7 @@ int main(int argc, char** argv)
 {
   return osmbench::driverMain(argc, argv, "osm-delaunay",
     [](const osm::Pslg& input, osmbench::RunOutput& out, bool wantMesh) {
-      std::vector<int> vertexOf;
+      osm::Array<int> vertexOf;
       out.memory.before();
       osmbench::Stopwatch clock;
       osm::Triangulation t = osm::delaunayTriangulation(input.points, vertexOf);
@@ -19,7 +19,7 @@ int main(int argc, char** argv)
       out.memory.after();
       // Triangles touching the four box corners (vertices 0..3) are not part of
       // the triangulation of the points.
-      std::vector<osm::Triangle> tris;
+      osm::Array<osm::Triangle> tris;
       for (int s = 0; s < t.slots(); ++s)
       {
         if (!t.alive(s))

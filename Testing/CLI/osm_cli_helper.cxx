@@ -138,8 +138,8 @@ osm::Pslg ReadInput(const std::string& path)
 
 struct Mesh
 {
-  std::vector<osm::Point> vertices;
-  std::vector<osm::Triangle> triangles;
+  osm::Array<osm::Point> vertices;
+  osm::Array<osm::Triangle> triangles;
 };
 
 /// Triangle's .node + .ele, 1-based, as osm-mesh writes them.

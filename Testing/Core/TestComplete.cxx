@@ -16,7 +16,7 @@ using namespace osm;
 namespace
 {
 
-double largestAngle(const std::vector<Point>& P, const std::vector<Triangle>& tris)
+double largestAngle(const Array<Point>& P, const Array<Triangle>& tris)
 {
   double m = 0;
   for (const Triangle& t : tris)
@@ -25,7 +25,7 @@ double largestAngle(const std::vector<Point>& P, const std::vector<Triangle>& tr
 }
 
 /// Smallest largest angle over all triangulations of a convex polygon (Catalan many).
-double bruteForceConvex(const std::vector<Point>& P)
+double bruteForceConvex(const Array<Point>& P)
 {
   const int k = static_cast<int>(P.size());
   std::function<double(int, int)> best = [&](int i, int j) -> double {
@@ -39,14 +39,14 @@ double bruteForceConvex(const std::vector<Point>& P)
   return best(0, k - 1);
 }
 
-std::vector<int> iota(std::size_t n)
+Array<int> iota(std::size_t n)
 {
-  std::vector<int> ids(n);
+  Array<int> ids(n);
   std::iota(ids.begin(), ids.end(), 0);
   return ids;
 }
 
-void expectValidTriangulation(const std::vector<Point>& P, const std::vector<Triangle>& tris)
+void expectValidTriangulation(const Array<Point>& P, const Array<Triangle>& tris)
 {
   ASSERT_EQ(tris.size(), P.size() - 2);
   double area = 0, polygonArea = 0;
@@ -76,10 +76,10 @@ TEST(Complete, ConvexPolygonsMatchExhaustiveSearch)
     for (double& a : angles)
       a = U(rng);
     std::sort(angles.begin(), angles.end());
-    std::vector<Point> P;
+    Array<Point> P;
     for (double a : angles)
       P.push_back({ std::cos(a) * (1 + 0.0 * a), std::sin(a) });
-    std::vector<Triangle> tris;
+    Array<Triangle> tris;
     ASSERT_TRUE(triangulateMinMaxAngle(P, iota(P.size()), tris));
     expectValidTriangulation(P, tris);
     EXPECT_NEAR(largestAngle(P, tris), bruteForceConvex(P), 1e-12) << "trial " << trial;
@@ -89,8 +89,8 @@ TEST(Complete, ConvexPolygonsMatchExhaustiveSearch)
 TEST(Complete, NonConvexPolygonUsesOnlyInteriorDiagonals)
 {
   // An arrow-head: vertex 2 is reflex, so diagonal 1-3 lies outside.
-  const std::vector<Point> P{ { 0, 0 }, { 4, 0 }, { 2, 1 }, { 4, 4 }, { 0, 4 } };
-  std::vector<Triangle> tris;
+  const Array<Point> P{ { 0, 0 }, { 4, 0 }, { 2, 1 }, { 4, 4 }, { 0, 4 } };
+  Array<Triangle> tris;
   ASSERT_TRUE(triangulateMinMaxAngle(P, iota(P.size()), tris));
   expectValidTriangulation(P, tris);
   for (const Triangle& t : tris)
@@ -101,9 +101,9 @@ TEST(Complete, NonConvexPolygonUsesOnlyInteriorDiagonals)
 TEST(Complete, StraightAnglesNeverGiveZeroAreaTriangles)
 {
   // Stitch vertices make 180° polygon corners: a square with points on its sides.
-  const std::vector<Point> P{ { 0, 0 }, { 1, 0 }, { 2, 0 }, { 2, 1 }, { 2, 2 }, { 1, 2 }, { 0, 2 },
+  const Array<Point> P{ { 0, 0 }, { 1, 0 }, { 2, 0 }, { 2, 1 }, { 2, 2 }, { 1, 2 }, { 0, 2 },
     { 0, 1 } };
-  std::vector<Triangle> tris;
+  Array<Triangle> tris;
   ASSERT_TRUE(triangulateMinMaxAngle(P, iota(P.size()), tris));
   expectValidTriangulation(P, tris);
   EXPECT_LE(largestAngle(P, tris) * 180 / std::acos(-1.0), 90.0 + 1e-9);
@@ -112,7 +112,7 @@ TEST(Complete, StraightAnglesNeverGiveZeroAreaTriangles)
 TEST(Complete, ReportsImpossiblePolygons)
 {
   // All vertices collinear: no triangle of positive area exists.
-  const std::vector<Point> P{ { 0, 0 }, { 1, 0 }, { 2, 0 }, { 3, 0 } };
-  std::vector<Triangle> tris;
+  const Array<Point> P{ { 0, 0 }, { 1, 0 }, { 2, 0 }, { 3, 0 } };
+  Array<Triangle> tris;
   EXPECT_FALSE(triangulateMinMaxAngle(P, iota(P.size()), tris));
 }

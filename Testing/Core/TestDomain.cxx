@@ -19,8 +19,8 @@ namespace
 struct Grid
 {
   int n = 0;
-  std::vector<Point> points;
-  std::vector<Triangle> tris;
+  Array<Point> points;
+  Array<Triangle> tris;
 
   explicit Grid(int n)
     : n(n)
@@ -40,7 +40,7 @@ struct Grid
 };
 
 /// The boundary of the square [x0, x1] x [y0, y1] as constrained (lo, hi) pairs.
-void addLoop(const Grid& g, int x0, int y0, int x1, int y1, std::vector<Segment>& out)
+void addLoop(const Grid& g, int x0, int y0, int x1, int y1, Array<Segment>& out)
 {
   auto add = [&](int a, int b) { out.push_back({ std::min(a, b), std::max(a, b) }); };
   for (int x = x0; x < x1; ++x)
@@ -56,8 +56,8 @@ void addLoop(const Grid& g, int x0, int y0, int x1, int y1, std::vector<Segment>
 }
 
 /// The true adjacency of the first count triangles, some edges left unknown.
-KnownAdjacency knownFor(const std::vector<Triangle>& tris, const std::vector<Segment>& constrained,
-  int count, std::mt19937& rng)
+KnownAdjacency knownFor(
+  const Array<Triangle>& tris, const Array<Segment>& constrained, int count, std::mt19937& rng)
 {
   const unsigned salt = rng() % 4;
   std::map<std::pair<int, int>, std::vector<int>> byEdge;
@@ -94,10 +94,10 @@ KnownAdjacency knownFor(const std::vector<Triangle>& tris, const std::vector<Seg
 TEST(Domain, KnownAdjacencyCarvesAsMatchingDoes)
 {
   const Grid g(12);
-  std::vector<Segment> constrained;
+  Array<Segment> constrained;
   addLoop(g, 2, 2, 9, 9, constrained);
   addLoop(g, 4, 4, 6, 6, constrained);
-  const std::vector<Point> holes{ { 5.25, 5.5 }, { 30, 30 } };
+  const Array<Point> holes{ { 5.25, 5.5 }, { 30, 30 } };
   std::mt19937 rng(7);
   for (const bool removeExterior : { false, true })
     for (const int count : { 0, 1, 60, 144, 288 })
@@ -110,7 +110,7 @@ TEST(Domain, KnownAdjacencyCarvesAsMatchingDoes)
       EXPECT_EQ(hinted.regions, plain.regions);
       EXPECT_EQ(hinted.unusedHoles, plain.unusedHoles);
       EXPECT_EQ(plain.regions, removeExterior ? 1u : 2u); // the ring; the hole removes the core
-      EXPECT_EQ(plain.unusedHoles, std::vector<int>{ 1 });
+      EXPECT_EQ(plain.unusedHoles, Array<int>{ 1 });
     }
 }
 
@@ -133,11 +133,11 @@ namespace
 
 /// Gift wrapping, independent of convexHull: the strictly convex hull vertices
 /// counter-clockwise from the smallest point (x, then y).
-std::vector<int> giftWrap(const std::vector<Point>& P)
+Array<int> giftWrap(const Array<Point>& P)
 {
   const int n = static_cast<int>(P.size());
   const int first = static_cast<int>(std::min_element(P.begin(), P.end()) - P.begin());
-  std::vector<int> hull;
+  Array<int> hull;
   int p = first;
   do
   {
@@ -167,7 +167,7 @@ TEST(Domain, ConvexHullMatchesGiftWrapping)
     // Points on a small grid (many collinear and duplicate ones) or in a disc.
     const int n = 3 + static_cast<int>(rng() % 200);
     const bool grid = trial % 2 == 0;
-    std::vector<Point> P;
+    Array<Point> P;
     std::uniform_real_distribution<double> U(-1, 1);
     while (static_cast<int>(P.size()) < n)
     {
@@ -176,8 +176,8 @@ TEST(Domain, ConvexHullMatchesGiftWrapping)
       if (grid || q.x * q.x + q.y * q.y <= 1)
         P.push_back(q);
     }
-    const std::vector<int> hull = convexHull(P);
-    const std::vector<int> reference = giftWrap(P);
+    const Array<int> hull = convexHull(P);
+    const Array<int> reference = giftWrap(P);
     ASSERT_EQ(hull.size(), reference.size()) << "trial " << trial;
     for (std::size_t k = 0; k < hull.size(); ++k)
       EXPECT_EQ(P[hull[k]], P[reference[k]]) << "trial " << trial << ", vertex " << k;
@@ -188,8 +188,8 @@ TEST(Domain, ConvexHullOfFewPoints)
 {
   // Fewer than 3 points are returned as they are (sorted); none gives none.
   EXPECT_TRUE(convexHull({}).empty());
-  EXPECT_EQ(convexHull({ { 2, 3 } }), (std::vector<int>{ 0 }));
-  EXPECT_EQ(convexHull({ { 1, 0 }, { 0, 0 } }), (std::vector<int>{ 1, 0 }));
+  EXPECT_EQ(convexHull({ { 2, 3 } }), (Array<int>{ 0 }));
+  EXPECT_EQ(convexHull({ { 1, 0 }, { 0, 0 } }), (Array<int>{ 1, 0 }));
   // A point extreme in every direction but the others' (a right triangle's corner).
   EXPECT_EQ(convexHull({ { 0, 0 }, { 1, 0 }, { 0, 1 }, { 0.2, 0.2 } }).size(), 3u);
 }

@@ -1,5 +1,6 @@
-// The huge-page helpers must behave exactly like the std::vector calls they
-// wrap; the advice itself only changes speed (measured by the benchmarks).
+// osm::Array must behave exactly like std::vector, whichever way its blocks
+// are allocated; the huge pages themselves only change speed (measured by the
+// benchmarks).
 
 #include "HugePages.h"
 
@@ -17,44 +18,55 @@ namespace osm
 namespace
 {
 
-TEST(HugePages, PushBackKeepsEveryElementAcrossGrowth)
+TEST(HugePages, ArrayKeepsEveryElementAcrossGrowth)
 {
-  // 40 MB of ints: several growths beyond the advice threshold.
-  std::vector<int> v;
+  // 40 MB of ints: growths from operator new's blocks into mappings of their own.
+  Array<int> v;
   const int n = 10000000;
   for (int i = 0; i < n; ++i)
-    pushBackHuge(v, i * 7);
+    v.push_back(i * 7);
   ASSERT_EQ(v.size(), static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i)
     ASSERT_EQ(v[i], i * 7) << i;
 }
 
-TEST(HugePages, PushBackOfAnElementOfTheVectorItself)
+TEST(HugePages, PushBackOfAnElementOfTheArrayItself)
 {
-  std::vector<double> v{ 0.5 };
+  Array<double> v{ 0.5 };
   for (int i = 0; i < 3000000; ++i)
-    pushBackHuge(v, v[v.size() / 2]); // often at a growth, which frees v's storage
+    v.push_back(v[v.size() / 2]); // often at a growth, which frees v's storage
   for (double x : v)
     ASSERT_EQ(x, 0.5);
 }
 
-TEST(HugePages, AssignAndReserveGiveTheRequestedContents)
+TEST(HugePages, AssignCopyAndMoveAcrossTheThreshold)
 {
-  std::vector<std::int64_t> v{ 1, 2, 3 };
-  assignHuge(v, 3000000, std::int64_t{ -5 });
+  Array<std::int64_t> v{ 1, 2, 3 };
+  v.assign(3000000, std::int64_t{ -5 });
   ASSERT_EQ(v.size(), 3000000u);
   for (std::int64_t x : v)
     ASSERT_EQ(x, -5);
-  // Shrinking reuses the storage, as assign does.
-  const std::int64_t* before = v.data();
-  assignHuge(v, 10, std::int64_t{ 4 });
-  EXPECT_EQ(v.data(), before);
-  EXPECT_EQ(v, std::vector<std::int64_t>(10, 4));
+  Array<std::int64_t> copy = v; // a mapping of its own, freed by its own size
+  EXPECT_EQ(copy, v);
+  Array<std::int64_t> moved = std::move(copy);
+  EXPECT_EQ(moved.size(), 3000000u);
+  v.assign(10, std::int64_t{ 4 }); // shrinking keeps the storage
+  v.shrink_to_fit();               // and this frees the mapping for a small block
+  EXPECT_EQ(v, (Array<std::int64_t>(10, 4)));
+}
 
-  std::vector<double> w{ 1.5, 2.5 };
-  reserveHuge(w, 5000000);
-  EXPECT_GE(w.capacity(), 5000000u);
-  EXPECT_EQ(w, (std::vector<double>{ 1.5, 2.5 }));
+struct alignas(32) Wide
+{
+  double x[4];
+};
+
+TEST(HugePages, OverAlignedElementsAreAlignedInSmallAndLargeBlocks)
+{
+  for (std::size_t n : { std::size_t{ 3 }, std::size_t{ 1000 }, std::size_t{ 100000 } })
+  {
+    Array<Wide> v(n);
+    EXPECT_EQ(reinterpret_cast<std::uintptr_t>(v.data()) % 32, 0u) << n;
+  }
 }
 
 TEST(HugePages, AdviceOnAnyRangeIsHarmless)
@@ -88,36 +100,116 @@ std::string mappingFlags(const void* a)
   return "";
 }
 
+bool expectHugePages()
+{
+  const char* off = std::getenv("OSM_NO_HUGE_PAGES");
+  return !off || !*off || std::string(off) == "0";
+}
+
 // madvise marks the mapping (VmFlags "hg") whatever memory the kernel has
 // free, so this checks that the advice is given, and not given when
 // OSM_NO_HUGE_PAGES is set (the second CTest run of this test sets it).
-TEST(HugePages, AdviceMarksTheMappingUnlessTurnedOff)
+TEST(HugePages, LargeBlocksGetAlignedAdvisedMappingsUnlessTurnedOff)
 {
   if (!std::ifstream("/sys/kernel/mm/transparent_hugepage/enabled"))
     GTEST_SKIP() << "no transparent huge pages in this kernel";
-  const char* off = std::getenv("OSM_NO_HUGE_PAGES");
-  const bool expected = !off || !*off || std::string(off) == "0";
+  const bool expected = expectHugePages();
   EXPECT_EQ(hugePagesWanted(), expected);
-  std::vector<char> v;
-  reserveHuge(v, 64u << 20);
-  const std::string flags = mappingFlags(v.data() + (32u << 20));
-  ASSERT_FALSE(flags.empty()) << "no mapping found in /proc/self/smaps";
-  EXPECT_EQ(flags.find(" hg") != std::string::npos, expected) << flags;
+  EXPECT_EQ(pages::ownMapping(pages::kOwnMappingBytes), expected);
+  EXPECT_FALSE(pages::ownMapping(pages::kOwnMappingBytes - 1));
+  constexpr std::uintptr_t huge = std::uintptr_t{ 2 } << 20;
+  // From a block just over the threshold (one huge page) to several.
+  for (std::size_t bytes : { pages::kOwnMappingBytes, std::size_t{ 5 } << 20 })
+  {
+    Array<char> v;
+    v.reserve(bytes);
+    const auto at = reinterpret_cast<std::uintptr_t>(v.data());
+    EXPECT_EQ(at % huge == 0, expected) << bytes;
+    const std::string flags = mappingFlags(v.data() + bytes - 1);
+    ASSERT_FALSE(flags.empty()) << "no mapping found in /proc/self/smaps";
+    EXPECT_EQ(flags.find(" hg") != std::string::npos, expected) << bytes << ": " << flags;
+  }
 }
 
-// Arrays of a few MiB are advised too: the whole huge page that a 5 MiB array
-// always contains is marked.
-TEST(HugePages, AdviceReachesArraysOfAFewMegabytes)
+// A block's mapping is given back whole when the array frees it: nothing
+// stays mapped at its address (a wrong size would leave a tail or unmap a
+// neighbour).
+TEST(HugePages, FreedBlocksAreUnmapped)
 {
-  if (!std::ifstream("/sys/kernel/mm/transparent_hugepage/enabled"))
-    GTEST_SKIP() << "no transparent huge pages in this kernel";
-  std::vector<char> v;
-  reserveHuge(v, 5u << 20);
-  constexpr std::uintptr_t huge = std::uintptr_t{ 2 } << 20;
-  const std::uintptr_t page = (reinterpret_cast<std::uintptr_t>(v.data()) + huge - 1) & ~(huge - 1);
-  const std::string flags = mappingFlags(reinterpret_cast<const char*>(page + huge / 2));
-  ASSERT_FALSE(flags.empty()) << "no mapping found in /proc/self/smaps";
-  EXPECT_EQ(flags.find(" hg") != std::string::npos, hugePagesWanted()) << flags;
+  if (!expectHugePages() || !std::ifstream("/proc/self/smaps"))
+    GTEST_SKIP() << "huge pages off, or no /proc/self/smaps";
+  const std::size_t bytes = (std::size_t{ 3 } << 20) + 12345;
+  const char* first = nullptr;
+  const char* last = nullptr;
+  {
+    Array<char> v(bytes, 'y');
+    first = v.data();
+    last = v.data() + bytes - 1;
+    ASSERT_FALSE(mappingFlags(last).empty());
+  }
+  EXPECT_TRUE(mappingFlags(first).empty());
+  EXPECT_TRUE(mappingFlags(last).empty());
+}
+
+// Inside a Reuse scope a freed mapping serves the next block of its size;
+// beyond kReuseBytes the oldest are given back, and the rest when the scope
+// ends.
+TEST(HugePages, ReuseKeepsFreedMappingsUntilItsScopeEnds)
+{
+  if (!expectHugePages() || !std::ifstream("/proc/self/smaps"))
+    GTEST_SKIP() << "huge pages off, or no /proc/self/smaps";
+  const std::size_t bytes = 3u << 20; // two huge pages
+  const char* kept = nullptr;
+  std::vector<const char*> evicted;
+  {
+    const pages::Reuse reuse;
+    {
+      Array<char> a(bytes, 'a');
+      kept = a.data();
+    }
+    EXPECT_FALSE(mappingFlags(kept).empty()) << "a freed mapping is kept in the scope";
+    {
+      Array<char> b(bytes - 1000, 'b'); // the same number of huge pages
+      EXPECT_EQ(b.data(), kept);
+      EXPECT_EQ(b.front(), 'b');
+      EXPECT_EQ(b.back(), 'b');
+    }
+    {
+      Array<char> big((pages::kReuseBytes + (1u << 20)), 'c');
+      evicted.push_back(big.data());
+    }
+    EXPECT_TRUE(mappingFlags(evicted.back()).empty()) << "larger than kReuseBytes: not kept";
+    // 5 mappings of 4 MiB freed: 20 MiB with the first one, above the 16 MiB kept.
+    std::vector<Array<char>> arrays;
+    for (int i = 0; i < 5; ++i)
+      arrays.emplace_back(4u << 20, 'd');
+    const char* first = arrays.front().data();
+    const char* last = arrays.back().data();
+    arrays.clear(); // frees front to back: the first freed goes first
+    EXPECT_TRUE(mappingFlags(first).empty() && mappingFlags(kept).empty())
+      << "the oldest kept mappings are given back beyond kReuseBytes";
+    EXPECT_FALSE(mappingFlags(last).empty());
+    evicted.push_back(last);
+  }
+  EXPECT_TRUE(mappingFlags(evicted.back()).empty()) << "given back when the scope ends";
+}
+
+// Nested scopes (two meshes at once, say) keep the mappings until the last ends.
+TEST(HugePages, ReuseScopesNest)
+{
+  if (!expectHugePages() || !std::ifstream("/proc/self/smaps"))
+    GTEST_SKIP() << "huge pages off, or no /proc/self/smaps";
+  const char* p = nullptr;
+  {
+    const pages::Reuse outer;
+    {
+      const pages::Reuse inner;
+      Array<char> a(1u << 20, 'x');
+      p = a.data();
+    }
+    EXPECT_FALSE(mappingFlags(p).empty());
+  }
+  EXPECT_TRUE(mappingFlags(p).empty());
 }
 
 } // namespace

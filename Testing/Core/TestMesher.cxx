@@ -668,10 +668,10 @@ TEST(Domain, HullBoundaryPassesThroughPointsWithinRounding)
   const Point far{ -0.96770365525760738, 0.25209053056603647 };
   const Point hub{ 0, 0 };
   const Point end{ 0.28443851420075916, -0.074097328834824644 };
-  const std::vector<Point> P{ hub, end, far, { 0, 1 }, { -0.05, 0.2 } };
+  const Array<Point> P{ hub, end, far, { 0, 1 }, { -0.05, 0.2 } };
   ASSERT_GT(orient2d(far, end, hub), 0.0) << "the hub should be inside, by rounding";
   EXPECT_EQ(convexHull(P).size(), 3u);
-  const std::vector<int> boundary = hullBoundary(P);
+  const Array<int> boundary = hullBoundary(P);
   ASSERT_EQ(boundary.size(), 4u);
   // Counter-clockwise: the hub between the far end and the first spoke's end.
   const auto at = [&](int v) {
@@ -681,7 +681,7 @@ TEST(Domain, HullBoundaryPassesThroughPointsWithinRounding)
   EXPECT_EQ((at(0) + 1) % 4, at(1));
   EXPECT_EQ(at(4), 4) << "a point well inside stays off the boundary";
   // Points exactly on hull edges are on the boundary too, in order.
-  const std::vector<Point> square{ { 0, 0 }, { 2, 0 }, { 2, 2 }, { 0, 2 }, { 1, 0 }, { 1, 1 },
+  const Array<Point> square{ { 0, 0 }, { 2, 0 }, { 2, 2 }, { 0, 2 }, { 1, 0 }, { 1, 1 },
     { 0.5, 0 } };
-  EXPECT_EQ(hullBoundary(square), (std::vector<int>{ 0, 6, 4, 1, 2, 3 }));
+  EXPECT_EQ(hullBoundary(square), (Array<int>{ 0, 6, 4, 1, 2, 3 }));
 }

@@ -240,7 +240,7 @@ TEST(PlaneMap, TiltedInputComesBackBitForBit)
   osm::PlaneMap map;
   ASSERT_EQ(map.choose(points, false), "");
   ASSERT_TRUE(map.isFitted());
-  std::vector<osm::Point> planar;
+  osm::Array<osm::Point> planar;
   for (const Vec3& p : points)
     planar.push_back(map.toPlane(p));
   map.indexInputPoints(planar);

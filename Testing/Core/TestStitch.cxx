@@ -31,10 +31,10 @@ struct Stitched
   Overlay overlay;
   OverlayEdges ov;
   Walk walk;
-  std::vector<Segment> segments; ///< as overlay vertices
+  Array<Segment> segments; ///< as overlay vertices
 };
 
-Stitched stitchInput(const std::vector<Point>& pts, const std::vector<Segment>& segs, double theta)
+Stitched stitchInput(const Array<Point>& pts, const Array<Segment>& segs, double theta)
 {
   Stitched s;
   RunContext run(nullptr);
@@ -54,7 +54,7 @@ TEST(Stitch, EdgeIdsNameEveryOverlayEdgeOnce)
 {
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> U(0, 1);
-  std::vector<Point> pts;
+  Array<Point> pts;
   for (int i = 0; i < 300; ++i)
     pts.push_back({ U(rng), U(rng) });
   const Stitched s = stitchInput(pts, {}, 30);
@@ -97,8 +97,8 @@ TEST(Stitch, CrossingsAreClassifiedAtTheta1)
   for (int trial = 0; trial < 20; ++trial)
   {
     // A fan of near-parallel segments from one corner plus scattered points.
-    std::vector<Point> pts{ { 0, 0 } };
-    std::vector<Segment> segs;
+    Array<Point> pts{ { 0, 0 } };
+    Array<Segment> segs;
     for (int i = 1; i <= 4; ++i)
     {
       const double a = (0.2 + 0.01 * i + 0.3 * U(rng)) * kPi / 2;
@@ -130,8 +130,8 @@ TEST(Stitch, CrossingsAreClassifiedAtTheta1)
 
 TEST(Stitch, EdgesAreKeptOrDiscardedByTheirCrossings)
 {
-  std::vector<Point> pts{ { 0, 0 }, { 1, 0.02 }, { 0, 0.05 }, { 1, 0.08 }, { 0.3, 0.9 } };
-  std::vector<Segment> segs{ { 0, 1 }, { 2, 3 }, { 0, 4 } };
+  Array<Point> pts{ { 0, 0 }, { 1, 0.02 }, { 0, 0.05 }, { 1, 0.08 }, { 0.3, 0.9 } };
+  Array<Segment> segs{ { 0, 1 }, { 2, 3 }, { 0, 4 } };
   Stitched s = stitchInput(pts, segs, 30);
   std::vector<int> crossings(s.ov.idBound(), 0), goods(s.ov.idBound(), 0);
   for (const Crossing& c : s.walk.crossings)
@@ -139,7 +139,7 @@ TEST(Stitch, EdgesAreKeptOrDiscardedByTheirCrossings)
     ++crossings[c.edge];
     goods[c.edge] += c.good;
   }
-  std::vector<Edge> edges;
+  Array<Edge> edges;
   Statistics stats;
   const PlanarGraph g =
     stitch(s.ov, s.overlay.mesh.points, s.overlay.isInput, s.walk, &edges, stats);
@@ -169,9 +169,9 @@ TEST(Stitch, EdgesAreKeptOrDiscardedByTheirCrossings)
 
 TEST(Stitch, IntactTrianglesAreTheUncrossedOnesAndOpenSidesFaceTheRest)
 {
-  std::vector<Point> pts{ { 0, 0 }, { 1, 0.02 }, { 0, 0.05 }, { 1, 0.08 }, { 0.3, 0.9 },
-    { 0.7, 0.6 }, { 0.2, 0.4 } };
-  std::vector<Segment> segs{ { 0, 1 }, { 2, 3 }, { 0, 4 }, { 4, 5 } };
+  Array<Point> pts{ { 0, 0 }, { 1, 0.02 }, { 0, 0.05 }, { 1, 0.08 }, { 0.3, 0.9 }, { 0.7, 0.6 },
+    { 0.2, 0.4 } };
+  Array<Segment> segs{ { 0, 1 }, { 2, 3 }, { 0, 4 }, { 4, 5 } };
   Stitched s = stitchInput(pts, segs, 30);
   std::vector<char> crossed(s.ov.idBound(), 0);
   for (const Crossing& c : s.walk.crossings)
@@ -228,7 +228,7 @@ TEST(Stitch, IntactTrianglesAreTheUncrossedOnesAndOpenSidesFaceTheRest)
 
 TEST(Stitch, WalksFollowTheSegmentInOrder)
 {
-  std::vector<Point> pts{ { 0, 0 }, { 1, 1 }, { 0.5, 0.1 }, { 0.2, 0.7 } };
+  Array<Point> pts{ { 0, 0 }, { 1, 1 }, { 0.5, 0.1 }, { 0.2, 0.7 } };
   const Stitched s = stitchInput(pts, { { 0, 1 } }, 30);
   const Point &a = pts[0], &b = pts[1];
   double last = -1;

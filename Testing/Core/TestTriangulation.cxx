@@ -42,11 +42,11 @@ void expectDelaunay(const Triangulation& T)
   }
 }
 
-std::vector<Point> randomPoints(int n, unsigned seed)
+Array<Point> randomPoints(int n, unsigned seed)
 {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> U(0, 1);
-  std::vector<Point> pts(n);
+  Array<Point> pts(n);
   for (Point& p : pts)
     p = { U(rng), U(rng) };
   return pts;
@@ -66,14 +66,14 @@ Triangulation squareOfSide8()
 
 TEST(Triangulation, BulkDelaunayOfRandomAndGridPoints)
 {
-  std::vector<int> vertexOf;
+  Array<int> vertexOf;
   Triangulation T = delaunayTriangulation(randomPoints(3000, 1), vertexOf);
   expectDelaunay(T);
   EXPECT_EQ(T.liveTriangles(), 2 * 3000 + 2); // 2n + 2 for n points inside a 4-corner box
   for (int v : vertexOf)
     EXPECT_GE(v, 0);
   // A grid is full of cocircular quadruples: the exact incircle must cope.
-  std::vector<Point> grid;
+  Array<Point> grid;
   for (int i = 0; i < 40; ++i)
     for (int j = 0; j < 40; ++j)
       grid.push_back({ i * 0.1, j * 0.1 });
@@ -84,8 +84,8 @@ TEST(Triangulation, BulkDelaunayOfRandomAndGridPoints)
 
 TEST(Triangulation, HilbertOrderIsAPermutation)
 {
-  const std::vector<Point> pts = randomPoints(1000, 2);
-  std::vector<int> order = hilbertOrder(pts);
+  const Array<Point> pts = randomPoints(1000, 2);
+  Array<int> order = hilbertOrder(pts);
   EXPECT_EQ(std::set<int>(order.begin(), order.end()).size(), pts.size());
   // Consecutive points are close on average: far less than random pairs (~0.52).
   double total = 0;
@@ -98,12 +98,12 @@ TEST(Triangulation, HilbertOrderIsACurveAndKeepsTiesInInputOrder)
 {
   // A 256 x 256 grid on every 256th cell of the 2^16 grid (the corner point
   // makes the bounds exactly 65535): a Hilbert curve steps to a neighbour.
-  std::vector<Point> pts;
+  Array<Point> pts;
   for (int i = 0; i < 256; ++i)
     for (int j = 0; j < 256; ++j)
       pts.push_back({ 256.0 * i, 256.0 * j });
   pts.push_back({ 65535, 65535 });
-  const std::vector<int> order = hilbertOrder(pts);
+  const Array<int> order = hilbertOrder(pts);
   ASSERT_EQ(order.size(), pts.size());
   std::vector<int> grid; // the order without the corner point
   for (int i : order)
@@ -123,10 +123,10 @@ TEST(Triangulation, HilbertOrderIsACurveAndKeepsTiesInInputOrder)
   // (the radix sort changes its digit size at 65,536).
   for (std::size_t n : { std::size_t(10), std::size_t(70000) })
   {
-    std::vector<Point> same(n, Point{ 0.5, 0.5 });
+    Array<Point> same(n, Point{ 0.5, 0.5 });
     same.push_back({ 0, 0 });
     same.push_back({ 1, 1 });
-    const std::vector<int> o = hilbertOrder(same);
+    const Array<int> o = hilbertOrder(same);
     EXPECT_EQ(o.front(), static_cast<int>(n));
     for (std::size_t k = 1; k < n; ++k)
       ASSERT_LT(o[k], o[k + 1]) << n;
@@ -140,7 +140,7 @@ TEST(Overlay, IsADelaunayQualityMeshOfThePoints)
     RunContext run(nullptr);
     OverlayOptions o;
     o.gamma = gammaForMinAngle(angle);
-    const std::vector<Point> pts = randomPoints(500, 3);
+    const Array<Point> pts = randomPoints(500, 3);
     const Overlay ov = buildOverlay(pts, o, run);
     expectDelaunay(ov.mesh);
     for (std::size_t i = 0; i < pts.size(); ++i)
@@ -163,8 +163,7 @@ TEST(Overlay, IsADelaunayQualityMeshOfThePoints)
 TEST(Overlay, GradesToTinyFeatures)
 {
   // Two points 1e-8 apart in a unit square: size grows only logarithmically.
-  std::vector<Point> pts{ { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 }, { 0.5, 0.5 },
-    { 0.5 + 1e-8, 0.5 } };
+  Array<Point> pts{ { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 }, { 0.5, 0.5 }, { 0.5 + 1e-8, 0.5 } };
   RunContext run(nullptr);
   const Overlay ov = buildOverlay(pts, {}, run);
   expectDelaunay(ov.mesh);
@@ -207,7 +206,7 @@ TEST(Triangulation, InsertionPutsTheNewVertexAtIndex2)
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> U(-3, 3);
   Triangulation::Cavity cavity;
-  std::vector<int> created;
+  Array<int> created;
   for (int k = 0; k < 500; ++k)
   {
     if (k == 250)
@@ -234,7 +233,7 @@ TEST(Triangulation, LargeFanIsLinkedAroundTheNewVertexInOrder)
   // larger than refinement makes.
   Triangulation T = squareOfSide8();
   Triangulation::Cavity cavity;
-  std::vector<int> created;
+  Array<int> created;
   auto insert = [&](const Point& p) {
     const int start = T.locate(p, T.vtri[0]);
     EXPECT_GE(start, 0);

@@ -13,6 +13,7 @@
 namespace
 {
 
+using osm::Array;
 using osm::Point;
 using osm::Pslg;
 using osm::Segment;
@@ -21,8 +22,8 @@ using osm::ValidationOptions;
 using osm::ValidationReport;
 
 /// Validates with every mesh vertex as an input point, plus the given segments.
-ValidationReport check(const std::vector<Point>& points, const std::vector<Triangle>& triangles,
-  const std::vector<Segment>& segments = {}, const ValidationOptions& options = {})
+ValidationReport check(const Array<Point>& points, const Array<Triangle>& triangles,
+  const Array<Segment>& segments = {}, const ValidationOptions& options = {})
 {
   Pslg input;
   input.points = points;
@@ -47,16 +48,16 @@ std::string dump(const ValidationReport& report)
   return all;
 }
 
-const std::vector<Point> kSquare = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } };
-const std::vector<Triangle> kSquareTriangles = { { 0, 1, 2 }, { 0, 2, 3 } };
+const Array<Point> kSquare = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } };
+const Array<Triangle> kSquareTriangles = { { 0, 1, 2 }, { 0, 2, 3 } };
 
 /// n x n unit squares, each split in two, interior vertices jittered by up to `jitter` in
 /// each coordinate (under a third of the smallest altitude, so orientation stays positive).
 /// The input is the outer square: four corners, four sides.
 struct Grid
 {
-  std::vector<Point> points;
-  std::vector<Triangle> triangles;
+  Array<Point> points;
+  Array<Triangle> triangles;
   Pslg input;
 };
 
@@ -101,8 +102,8 @@ TEST(Validate, SquareWithDiagonalPasses)
 
 TEST(Validate, RegularHexagonFanPasses)
 {
-  std::vector<Point> points = { { 0, 0 } };
-  std::vector<Triangle> triangles;
+  Array<Point> points = { { 0, 0 } };
+  Array<Triangle> triangles;
   for (int i = 0; i < 6; ++i)
   {
     points.push_back({ std::cos(i * M_PI / 3), std::sin(i * M_PI / 3) });
@@ -151,7 +152,7 @@ TEST(Validate, ClockwiseTriangleFails)
 
 TEST(Validate, EdgeInThreeTrianglesFails)
 {
-  const std::vector<Point> points = { { 0, 0 }, { 1, 0 }, { 0.5, 1 }, { 0.5, 2 }, { 0.5, -1 } };
+  const Array<Point> points = { { 0, 0 }, { 1, 0 }, { 0.5, 1 }, { 0.5, 2 }, { 0.5, -1 } };
   const auto r = check(points, { { 0, 1, 2 }, { 0, 1, 3 }, { 1, 0, 4 } });
   EXPECT_FALSE(r.ok);
   EXPECT_TRUE(mentions(r, "edge (0, 1) is shared by 3 triangles: 0, 1, 2")) << dump(r);
@@ -159,7 +160,7 @@ TEST(Validate, EdgeInThreeTrianglesFails)
 
 TEST(Validate, SharedEdgeInSameDirectionFails)
 {
-  const std::vector<Point> points = { { 0, 0 }, { 1, 0 }, { 0.5, 1 }, { 0.5, 2 } };
+  const Array<Point> points = { { 0, 0 }, { 1, 0 }, { 0.5, 1 }, { 0.5, 2 } };
   const auto r = check(points, { { 0, 1, 2 }, { 0, 1, 3 } });
   EXPECT_FALSE(r.ok);
   EXPECT_TRUE(mentions(r, "edge (0, 1) has the same direction in triangles 0, 1")) << dump(r);
@@ -169,8 +170,8 @@ TEST(Validate, FanWrappingTwiceFails)
 {
   // 12 positive triangles of 60 degrees each around the origin: 720 degrees. Alternate
   // radii keep the ring vertices distinct.
-  std::vector<Point> points = { { 0, 0 } };
-  std::vector<Triangle> triangles;
+  Array<Point> points = { { 0, 0 } };
+  Array<Triangle> triangles;
   for (int i = 0; i < 12; ++i)
   {
     const double r = i < 6 ? 1.0 : 2.0;
@@ -193,8 +194,8 @@ TEST(Validate, FanWrappingTwiceFails)
 TEST(Validate, OpenFanWrappingPastItselfFails)
 {
   // 7 triangles of 60 degrees: an open fan turning 420 degrees around the origin.
-  std::vector<Point> points = { { 0, 0 } };
-  std::vector<Triangle> triangles;
+  Array<Point> points = { { 0, 0 } };
+  Array<Triangle> triangles;
   for (int i = 0; i < 8; ++i)
   {
     const double r = 1.0 + 0.1 * i;
@@ -212,8 +213,8 @@ TEST(Validate, OpenFanWrappingPastItselfFails)
 
 TEST(Validate, OverlappingTrianglesWithoutSharedEdgeFail)
 {
-  const std::vector<Point> points = { { 0, 0 }, { 4, 0 }, { 0, 4 }, { 1, 1 }, { 5, 1 }, { 1, 5 } };
-  const std::vector<Triangle> triangles = { { 0, 1, 2 }, { 3, 4, 5 } };
+  const Array<Point> points = { { 0, 0 }, { 4, 0 }, { 0, 4 }, { 1, 1 }, { 5, 1 }, { 1, 5 } };
+  const Array<Triangle> triangles = { { 0, 1, 2 }, { 3, 4, 5 } };
   const auto r = check(points, triangles);
   EXPECT_FALSE(r.ok);
   EXPECT_TRUE(mentions(r, "triangle 0 (0, 1, 2) and triangle 1 (3, 4, 5) overlap")) << dump(r);
@@ -231,7 +232,7 @@ TEST(Validate, NestedIslandFailsWithoutBruteForce)
 {
   // A small triangle strictly inside a big one: no crossing, no shared element. Without the
   // pairwise check and with the vertex check on boundary vertices only, it is still caught.
-  const std::vector<Point> points = { { 0, 0 }, { 9, 0 }, { 0, 9 }, { 1, 1 }, { 2, 1 }, { 1, 2 } };
+  const Array<Point> points = { { 0, 0 }, { 9, 0 }, { 0, 9 }, { 1, 1 }, { 2, 1 }, { 1, 2 } };
   ValidationOptions noBruteForce;
   noBruteForce.bruteForceOverlapLimit = 0;
   const auto r = check(points, { { 0, 1, 2 }, { 3, 4, 5 } }, {}, noBruteForce);
@@ -242,7 +243,7 @@ TEST(Validate, NestedIslandFailsWithoutBruteForce)
 TEST(Validate, VertexOnBoundaryEdgeFails)
 {
   // A T-junction: vertex 4 splits the top of one triangle but not the triangle above it.
-  const std::vector<Point> points = { { 0, 0 }, { 2, 0 }, { 0, 2 }, { 2, 2 }, { 1, 1 } };
+  const Array<Point> points = { { 0, 0 }, { 2, 0 }, { 0, 2 }, { 2, 2 }, { 1, 1 } };
   ValidationOptions noBruteForce;
   noBruteForce.bruteForceOverlapLimit = 0;
   const auto r = check(points, { { 0, 1, 2 }, { 1, 3, 4 }, { 4, 3, 2 } }, {}, noBruteForce);
@@ -252,7 +253,7 @@ TEST(Validate, VertexOnBoundaryEdgeFails)
 
 TEST(Validate, CoincidentVerticesFail)
 {
-  const std::vector<Point> points = { { 0, 0 }, { 1, 0 }, { 0, 1 }, { 1, 0 }, { 1, 1 } };
+  const Array<Point> points = { { 0, 0 }, { 1, 0 }, { 0, 1 }, { 1, 0 }, { 1, 1 } };
   const auto r = check(points, { { 0, 1, 2 }, { 3, 4, 2 } });
   EXPECT_FALSE(r.ok);
   EXPECT_TRUE(mentions(r, "vertices 1 and 3 coincide at (1, 0)")) << dump(r);
@@ -285,12 +286,11 @@ TEST(Validate, SegmentThatIsNoChainOfEdgesFails)
 }
 
 /// Segment (0, 1) from (0, 0) to (2, 0) meshed as a chain through vertex 2 at (1, y).
-std::vector<Point> chainThrough(double y)
+Array<Point> chainThrough(double y)
 {
   return { { 0, 0 }, { 2, 0 }, { 1, y }, { 1, -1 }, { 1, 1 } };
 }
-const std::vector<Triangle> kChainTriangles = { { 0, 3, 2 }, { 3, 1, 2 }, { 0, 2, 4 },
-  { 2, 1, 4 } };
+const Array<Triangle> kChainTriangles = { { 0, 3, 2 }, { 3, 1, 2 }, { 0, 2, 4 }, { 2, 1, 4 } };
 
 TEST(Validate, SegmentChainThroughOffLinePointFails)
 {
@@ -311,7 +311,7 @@ TEST(Validate, SegmentChainThroughRoundedOrInputPointPasses)
 
 TEST(Validate, LargeAngleFails)
 {
-  const std::vector<Point> points = { { 0, 0 }, { 2, 0 }, { 1, std::tan(2.5 * M_PI / 180) } };
+  const Array<Point> points = { { 0, 0 }, { 2, 0 }, { 1, std::tan(2.5 * M_PI / 180) } };
   ValidationOptions options;
   options.maxAngleDeg = 170;
   const auto r = check(points, { { 0, 1, 2 } }, {}, options);
@@ -326,7 +326,7 @@ TEST(Validate, LargeAngleFails)
 TEST(Validate, BowtieVertexPasses)
 {
   // Two triangles touching only at vertex 0, as where a domain's boundary touches itself.
-  const std::vector<Point> points = { { 0, 0 }, { 1, -1 }, { 1, 1 }, { -1, 1 }, { -1, -1 } };
+  const Array<Point> points = { { 0, 0 }, { 1, -1 }, { 1, 1 }, { -1, 1 }, { -1, -1 } };
   const auto r = check(points, { { 0, 1, 2 }, { 0, 3, 4 } });
   EXPECT_TRUE(r.ok) << dump(r);
 }
@@ -334,7 +334,7 @@ TEST(Validate, BowtieVertexPasses)
 TEST(Validate, BowtieWithOverlappingFansFails)
 {
   // Two fans at vertex 0 whose sectors (-45..45 and 0..45 degrees) overlap.
-  const std::vector<Point> points = { { 0, 0 }, { 1, -1 }, { 1, 1 }, { 3, 0 }, { 3, 3 } };
+  const Array<Point> points = { { 0, 0 }, { 1, -1 }, { 1, 1 }, { 3, 0 }, { 3, 3 } };
   ValidationOptions noBruteForce;
   noBruteForce.bruteForceOverlapLimit = 0;
   const auto r = check(points, { { 0, 1, 2 }, { 0, 3, 4 } }, {}, noBruteForce);
@@ -349,7 +349,7 @@ void removeSquares(Grid& g, int n, const std::vector<std::pair<int, int>>& squar
   std::vector<char> removed(g.triangles.size(), 0);
   for (const auto& [i, j] : squares)
     removed[2 * (j * n + i)] = removed[2 * (j * n + i) + 1] = 1;
-  std::vector<Triangle> kept;
+  Array<Triangle> kept;
   for (std::size_t t = 0; t < g.triangles.size(); ++t)
     if (!removed[t])
       kept.push_back(g.triangles[t]);
