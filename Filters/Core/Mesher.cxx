@@ -84,9 +84,15 @@ std::string normalise(Work& w, const Pslg& input, const Array<int>& pointOf, int
       " is too large: the mesher needs coordinates below 1.1e307 to pad the domain";
   }
   std::frexp(maxAbs, &exponent);
+  // Multiplying by a normal power of two rounds exactly as ldexp does, without
+  // a library call per coordinate; other exponents keep ldexp.
+  const bool normalPower = std::abs(exponent) <= 1021;
+  const double factor = std::ldexp(1.0, normalPower ? -exponent : 0);
   auto scale = [&](Point& p) {
-    p.x = std::ldexp(p.x, -exponent);
-    p.y = std::ldexp(p.y, -exponent);
+    if (normalPower)
+      p = { p.x * factor, p.y * factor };
+    else
+      p = { std::ldexp(p.x, -exponent), std::ldexp(p.y, -exponent) };
   };
   for (std::size_t i = 0; i < w.points.size(); ++i)
   {
@@ -240,11 +246,11 @@ Result Mesher::execute()
   run.phase("clean", 0.0, 0.02);
   if (std::string e = cleanPslg(input, clean, st, res.warnings, options.mergeTolerance); !e.empty())
     throw Stop{ e };
-  Work w;
-  w.points = clean.points;
+  Work w; // from here on only clean.pointOf is read
+  w.points = std::move(clean.points);
   w.isCrossingPoint.assign(w.points.size(), 0);
-  w.segments = clean.segments;
-  w.segmentOrigin = clean.segmentOrigin;
+  w.segments = std::move(clean.segments);
+  w.segmentOrigin = std::move(clean.segmentOrigin);
   w.holes = input.holes;
   if (std::string e = normalise(w, input, clean.pointOf, exponent); !e.empty())
     throw Stop{ e };
