@@ -150,7 +150,7 @@ Point PlaneFrame::liftXY(double x, double y) const
   return toPlane({ x, y, z });
 }
 
-PlaneFit fitPlane(const std::vector<Vec3>& points)
+PlaneFit fitPlane(const Array<Vec3>& points)
 {
   PlaneFit fit;
   if (points.empty())
@@ -246,7 +246,7 @@ std::string formatPoint3(const Vec3& p)
   return buf;
 }
 
-std::string PlaneMap::choose(const std::vector<Vec3>& points, bool projectToXY)
+std::string PlaneMap::choose(const Array<Vec3>& points, bool projectToXY)
 {
   input = &points;
   fitted = projected = false;

@@ -72,7 +72,7 @@ struct PlaneFit
 /// aligned with the normal (the first of equal ones); v = normal x u. Points
 /// in a plane z = c thus get u = x, v = y. Works at any finite magnitude
 /// (coordinates are rescaled by a power of two before squaring).
-PlaneFit fitPlane(const std::vector<Vec3>& points);
+PlaneFit fitPlane(const Array<Vec3>& points);
 
 /// "(x, y, z)" with round-trip precision, for messages.
 std::string formatPoint3(const Vec3& p);
@@ -91,7 +91,7 @@ public:
   /// Chooses the mapping for points (kept by reference until the map is done
   /// with). Returns an error message naming the farthest point when they are
   /// not coplanar and projectToXY is off, or "".
-  std::string choose(const std::vector<Vec3>& points, bool projectToXY);
+  std::string choose(const Array<Vec3>& points, bool projectToXY);
 
   bool isFitted() const { return fitted; }
   bool isProjected() const { return projected; }
@@ -117,7 +117,7 @@ private:
   };
   static Key keyOf(const Point& p);
 
-  const std::vector<Vec3>* input = nullptr;
+  const Array<Vec3>* input = nullptr;
   bool fitted = false;
   bool projected = false;
   double planeZ = 0.0;

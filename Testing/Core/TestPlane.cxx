@@ -37,11 +37,11 @@ void expectOrthonormal(const osm::PlaneFrame& f)
 }
 
 /// n random points of the plane through c spanned by a and b (not unit, not orthogonal).
-std::vector<Vec3> planePoints(const Vec3& c, const Vec3& a, const Vec3& b, int n, unsigned seed)
+osm::Array<osm::Vec3> planePoints(const Vec3& c, const Vec3& a, const Vec3& b, int n, unsigned seed)
 {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-  std::vector<Vec3> points;
+  osm::Array<osm::Vec3> points;
   for (int i = 0; i < n; ++i)
   {
     const double s = uniform(rng), t = uniform(rng);
@@ -52,7 +52,7 @@ std::vector<Vec3> planePoints(const Vec3& c, const Vec3& a, const Vec3& b, int n
 
 TEST(Plane, XYPlaneGivesTheWorldFrame)
 {
-  const std::vector<Vec3> points = { { 0, 0, 3 }, { 2, 0, 3 }, { 2, 1, 3 }, { 0, 1, 3 } };
+  const osm::Array<osm::Vec3> points = { { 0, 0, 3 }, { 2, 0, 3 }, { 2, 1, 3 }, { 0, 1, 3 } };
   const PlaneFit fit = fitPlane(points);
   ASSERT_TRUE(fit.ok);
   EXPECT_FALSE(fit.degenerate);
@@ -74,7 +74,7 @@ TEST(Plane, XYPlaneGivesTheWorldFrame)
 TEST(Plane, TiltedPlaneIsFoundAndRoundTrips)
 {
   const Vec3 c{ 10, -4, 7 }, a{ 3, 1, 2 }, b{ -1, 2, 5 };
-  const std::vector<Vec3> points = planePoints(c, a, b, 200, 1);
+  const osm::Array<osm::Vec3> points = planePoints(c, a, b, 200, 1);
   const PlaneFit fit = fitPlane(points);
   ASSERT_TRUE(fit.ok);
   EXPECT_FALSE(fit.degenerate);
@@ -97,7 +97,7 @@ TEST(Plane, TiltedPlaneIsFoundAndRoundTrips)
 
 TEST(Plane, OrientationIsDeterministic)
 {
-  const std::vector<Vec3> points = planePoints({ 1, 2, 3 }, { 1, 0, -1 }, { 0, 1, 0.5 }, 50, 2);
+  const osm::Array<osm::Vec3> points = planePoints({ 1, 2, 3 }, { 1, 0, -1 }, { 0, 1, 0.5 }, 50, 2);
   const PlaneFit fit = fitPlane(points);
   // The normal's largest component is positive, whatever the point order.
   const Vec3& n = fit.frame.normal;
@@ -105,7 +105,7 @@ TEST(Plane, OrientationIsDeterministic)
     ? n.x
     : (std::fabs(n.y) >= std::fabs(n.z) ? n.y : n.z);
   EXPECT_GT(largest, 0.0);
-  std::vector<Vec3> reversed(points.rbegin(), points.rend());
+  osm::Array<osm::Vec3> reversed(points.rbegin(), points.rend());
   const PlaneFit again = fitPlane(reversed);
   EXPECT_NEAR(again.frame.normal.x, n.x, 1e-14);
   EXPECT_NEAR(again.frame.normal.y, n.y, 1e-14);
@@ -122,7 +122,7 @@ TEST(Plane, OrientationIsDeterministic)
 
 TEST(Plane, PointOffThePlaneIsNamed)
 {
-  std::vector<Vec3> points = planePoints({ 0, 0, 0 }, { 1, 0, 0.2 }, { 0, 1, 0.1 }, 100, 3);
+  osm::Array<osm::Vec3> points = planePoints({ 0, 0, 0 }, { 1, 0, 0.2 }, { 0, 1, 0.1 }, 100, 3);
   // Push point 37 off the plane by 0.01 along the plane's normal direction.
   const Vec3 n{ -0.2, -0.1, 1.0 };
   const double len = std::sqrt(dot(n, n));
@@ -139,7 +139,7 @@ TEST(Plane, PointOffThePlaneIsNamed)
 
 TEST(Plane, TinyNoiseIsCoplanarLargeNoiseIsNot)
 {
-  std::vector<Vec3> points = planePoints({ 5, 5, 5 }, { 2, 0, 1 }, { 0, 3, -1 }, 100, 4);
+  osm::Array<osm::Vec3> points = planePoints({ 5, 5, 5 }, { 2, 0, 1 }, { 0, 3, -1 }, 100, 4);
   const PlaneFit clean = fitPlane(points);
   points[10].z += 1e-12 * clean.diagonal;
   EXPECT_TRUE(fitPlane(points).coplanar(1e-9));
@@ -151,7 +151,7 @@ TEST(Plane, HugeAndTinyMagnitudes)
 {
   for (double scale : { 1e300, 1e-300, 1e150, 1e-150 })
   {
-    std::vector<Vec3> points = planePoints({ 0, 0, 0 }, { 1, 0, 1 }, { 0, 1, 1 }, 30, 5);
+    osm::Array<osm::Vec3> points = planePoints({ 0, 0, 0 }, { 1, 0, 1 }, { 0, 1, 1 }, 30, 5);
     for (Vec3& p : points)
       p = { p.x * scale, p.y * scale, p.z * scale };
     const PlaneFit fit = fitPlane(points);
@@ -197,7 +197,7 @@ TEST(Plane, DegenerateInputs)
 TEST(Plane, LiftXYFollowsZ)
 {
   // The plane z = x + 2y + 1.
-  const std::vector<Vec3> points = { { 0, 0, 1 }, { 1, 0, 2 }, { 0, 1, 3 }, { 1, 1, 4 } };
+  const osm::Array<osm::Vec3> points = { { 0, 0, 1 }, { 1, 0, 2 }, { 0, 1, 3 }, { 1, 1, 4 } };
   const PlaneFit fit = fitPlane(points);
   ASSERT_TRUE(fit.ok);
   const osm::Point q = fit.frame.liftXY(3, -1);
@@ -218,7 +218,7 @@ TEST(Plane, LiftXYFollowsZ)
 
 TEST(PlaneMap, ConstantZPassesPointsThrough)
 {
-  const std::vector<Vec3> points{ { 1, 2, 7 }, { 3, -4, 7 }, { 0.5, 9, 7 } };
+  const osm::Array<osm::Vec3> points{ { 1, 2, 7 }, { 3, -4, 7 }, { 0.5, 9, 7 } };
   osm::PlaneMap map;
   ASSERT_EQ(map.choose(points, false), "");
   EXPECT_FALSE(map.isFitted());
@@ -235,7 +235,7 @@ TEST(PlaneMap, ConstantZPassesPointsThrough)
 
 TEST(PlaneMap, TiltedInputComesBackBitForBit)
 {
-  const std::vector<Vec3> points =
+  const osm::Array<osm::Vec3> points =
     planePoints({ 0.1, -2, 3 }, { 1, 0.3, 0.7 }, { -0.2, 1, 0.4 }, 40, 11);
   osm::PlaneMap map;
   ASSERT_EQ(map.choose(points, false), "");
@@ -267,7 +267,7 @@ TEST(PlaneMap, TiltedInputComesBackBitForBit)
 
 TEST(PlaneMap, NonCoplanarIsAnErrorUnlessProjected)
 {
-  const std::vector<Vec3> points{ { 0, 0, 0 }, { 10, 0, 0 }, { 10, 10, 0 }, { 0, 10, 0 },
+  const osm::Array<osm::Vec3> points{ { 0, 0, 0 }, { 10, 0, 0 }, { 10, 10, 0 }, { 0, 10, 0 },
     { 5, 5, 3 } };
   osm::PlaneMap map;
   const std::string error = map.choose(points, false);
