@@ -80,7 +80,7 @@ namespace pages
 bool ownMapping(std::size_t bytes)
 {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
-  return bytes >= kOwnMappingBytes && hugePagesWanted();
+  return kOwnMappings && bytes >= kOwnMappingBytes && hugePagesWanted();
 #else
   (void)bytes;
   return false;

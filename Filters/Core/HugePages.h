@@ -46,6 +46,21 @@ namespace pages
 /// machine.
 constexpr std::size_t kOwnMappingBytes = std::size_t{ 512 } << 10;
 
+/// Whether blocks get mappings of their own at all: not under
+/// AddressSanitizer, which checks the bounds of operator new's blocks only
+/// (the sanitized tests and the fuzzers must see every array's overflows).
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kOwnMappings = false;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kOwnMappings = false;
+#else
+constexpr bool kOwnMappings = true;
+#endif
+#else
+constexpr bool kOwnMappings = true;
+#endif
+
 /// Whether a block of this many bytes has (or would get) its own mapping.
 /// Depends on the size alone, so that freeing takes the allocation's path.
 bool ownMapping(std::size_t bytes);
