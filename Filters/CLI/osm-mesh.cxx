@@ -163,6 +163,25 @@ std::string CleanMessage(const char* raw)
   return line;
 }
 
+/// Whether a message names a point, segment, cell or hole by its number
+/// ("point 4", "segment 12"), as opposed to counting them ("3 point(s)").
+bool NamesNumberedItems(const std::string& message)
+{
+  for (const char* word : { "point ", "segment ", "cell ", "hole " })
+  {
+    for (std::size_t at = message.find(word); at != std::string::npos;
+         at = message.find(word, at + 1))
+    {
+      const std::size_t next = at + std::strlen(word);
+      if (next < message.size() && std::isdigit(static_cast<unsigned char>(message[next])))
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
 /// Replaces VTK's output window: warnings go to stderr with our prefix, the
 /// first error is kept for the one-line failure message, the rest is dropped.
 class OsmOutputWindow : public vtkOutputWindow
@@ -185,13 +204,13 @@ public:
   void DisplayGenericWarningText(const char* text) override { this->Warn(text); }
 
   /// Fails with the first error, if any was reported since the last call,
-  /// between prefix (e.g. "cannot read 'a.vtp': ") and suffix.
-  void Check(const std::string& prefix, const std::string& context, const std::string& suffix = "")
+  /// after prefix (e.g. "cannot read 'a.vtp': ").
+  void Check(const std::string& prefix, const std::string& context)
   {
     if (this->Errors > 0)
     {
       const std::string message =
-        prefix + (this->FirstError.empty() ? context : this->FirstError) + suffix;
+        this->Numbered(prefix + (this->FirstError.empty() ? context : this->FirstError));
       this->Errors = 0;
       this->FirstError.clear();
       Fail(message);
@@ -199,15 +218,23 @@ public:
   }
 
   std::vector<std::string> Warnings;
+  /// Appended to the messages that name numbered items: how the input file
+  /// numbers them, when that differs from the mesher's count from 0.
+  std::string Numbering;
 
 protected:
   OsmOutputWindow() = default;
   ~OsmOutputWindow() override = default;
 
 private:
+  std::string Numbered(const std::string& message) const
+  {
+    return NamesNumberedItems(message) ? message + this->Numbering : message;
+  }
+
   void Warn(const char* text)
   {
-    const std::string message = CleanMessage(text);
+    const std::string message = this->Numbered(CleanMessage(text));
     this->Warnings.push_back(message);
     std::cerr << "osm-mesh: warning: " << message << "\n";
   }
@@ -779,6 +806,19 @@ int Run(int argc, char* argv[], OsmOutputWindow* window)
   window->Check(ext == ".poly" || ext == ".node" ? "" : "cannot read '" + args.input + "': ",
     "the reader failed");
 
+  // The mesher numbers points, segments and cells from 0 in input order; its
+  // errors and warnings say so when the .poly/.node file counts from 1, as
+  // Triangle's files often do.
+  if (vtkDataObject* read = reader->GetOutputDataObject(0))
+  {
+    vtkDataArray* first = read->GetFieldData()->GetArray("FileFirstIndex");
+    if (first && first->GetNumberOfTuples() == 1 && first->GetComponent(0, 0) == 1.0)
+    {
+      window->Numbering = " (point, segment and cell numbers in this message count from 0; " +
+        args.input + " counts from 1)";
+    }
+  }
+
   vtkNew<vtkOverlayStitchMesher> mesher;
   mesher->SetInputConnection(reader->GetOutputPort());
   mesher->SetMinimumAngle(args.minAngle);
@@ -790,18 +830,7 @@ int Run(int argc, char* argv[], OsmOutputWindow* window)
   mesher->SetGenerateEdges(true);
   mesher->SetGenerateOverlay(false);
   mesher->Update();
-  // The mesher numbers points, segments and cells from 0 in input order; say
-  // so when the .poly/.node file counts from 1, as Triangle's files often do.
-  std::string numbering;
-  if (vtkDataObject* read = reader->GetOutputDataObject(0))
-  {
-    vtkDataArray* first = read->GetFieldData()->GetArray("FileFirstIndex");
-    if (first && first->GetNumberOfTuples() == 1 && first->GetComponent(0, 0) == 1.0)
-    {
-      numbering = " (numbers in this message count from 0; " + args.input + " counts from 1)";
-    }
-  }
-  window->Check("", "meshing failed", numbering);
+  window->Check("", "meshing failed");
 
   vtkPolyData* mesh = mesher->GetOutput(0);
   vtkPolyData* edges = mesher->GetEdgesOutput();

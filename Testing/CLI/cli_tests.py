@@ -412,6 +412,22 @@ def group_errors():
     expect_error([one_based, "--no-resolve"], 1,
                  ["input segment 4", "input segment 5", "count from 0",
                   one_based + " counts from 1"], "crossing segments in a 1-based file")
+    # Warnings that name points or segments say it too, and only those.
+    for base in (0, 1):
+        dup = write("duplicate%d.poly" % base,
+                    "5 2 0 0\n{0} 0 0\n{1} 4 0\n{2} 4 4\n{3} 0 4\n{4} 0 0\n"
+                    "4 0\n{0} {0} {1}\n{1} {1} {2}\n{2} {2} {3}\n{3} {3} {0}\n0\n"
+                    .format(*range(base, base + 5)))
+        p = mesh_ok(dup, what="a duplicate point in a %d-based file" % base)
+        named = [l for l in p.stderr.splitlines() if "duplicate point" in l]
+        check(len(named) == 1 and ("count from 0" in named[0]) == (base == 1) and
+              ((dup + " counts from 1") in named[0]) == (base == 1),
+              "the duplicate-point warning says how the file counts only if it counts from 1 "
+              "(%d-based)" % base, repr(p.stderr))
+    collinear = write("collinear1.poly", "3 2 0 0\n1 0 0\n2 1 0\n3 2 0\n0 0\n0\n")
+    p = mesh_ok(collinear, what="collinear points in a 1-based file")
+    check("collinear" in p.stderr and "count from 0" not in p.stderr,
+          "a warning that names no numbered item gets no numbering note", repr(p.stderr))
     # A NaN coordinate in a .vtk input.
     # Binary legacy file: VTK's ASCII parser would refuse the word "nan" itself.
     nan_vtk = out("nan.vtk")
