@@ -393,30 +393,11 @@ void FillMesh(const osm::Result& result, const osm::PlaneMap& map, vtkPolyData* 
   for (vtkIdType t = 0; t < numberOfTriangles; ++t)
   {
     const osm::Triangle& tri = result.mesh.triangles[static_cast<std::size_t>(t)];
-    auto angle = [&](int k) {
-      return degrees * osm::angleAt(v[tri[(k + 2) % 3]], v[tri[k]], v[tri[(k + 1) % 3]]);
-    };
-    // The smallest angle is opposite the shortest edge and the largest opposite
-    // the longest: two atan2 instead of three (they were a twentieth of a
-    // run). Squared lengths that over- or underflow leave all three to compare.
-    const double opposite[3] = { osm::dist2(v[tri[1]], v[tri[2]]), osm::dist2(v[tri[2]], v[tri[0]]),
-      osm::dist2(v[tri[0]], v[tri[1]]) };
-    int shortest = 0;
-    int longest = 0;
-    bool usable = true;
-    for (int k = 0; k < 3; ++k)
-    {
-      usable = usable && std::isfinite(opposite[k]) && opposite[k] > 0;
-      shortest = opposite[k] < opposite[shortest] ? k : shortest;
-      longest = opposite[k] > opposite[longest] ? k : longest;
-    }
-    double lo = usable ? angle(shortest) : 180.0;
-    double hi = usable ? angle(longest) : 0.0;
-    for (int k = 0; k < 3 && !usable; ++k)
-    {
-      lo = std::min(lo, angle(k));
-      hi = std::max(hi, angle(k));
-    }
+    double lo = 0.0;
+    double hi = 0.0;
+    osm::angleRange(v[tri[0]], v[tri[1]], v[tri[2]], lo, hi);
+    lo *= degrees;
+    hi *= degrees;
     minAngle->SetValue(t, lo);
     maxAngle->SetValue(t, hi);
     regionId->SetValue(t,

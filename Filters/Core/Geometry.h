@@ -51,6 +51,39 @@ inline double angleAt(const Point& a, const Point& b, const Point& c)
   return std::atan2(std::fabs(ux * vy - uy * vx), ux * vx + uy * vy);
 }
 
+/// Smallest and largest angle of triangle (p0, p1, p2), in radians, as
+/// angleAt gives them. They sit opposite the shortest and the longest edge,
+/// so two angleAt calls do instead of three; where two edges tie within
+/// rounding either of their angles may be taken (they differ by an ulp), and
+/// where squared lengths over- or underflow all three are compared.
+inline void angleRange(const Point& p0, const Point& p1, const Point& p2, double& lo, double& hi)
+{
+  const Point* p[3] = { &p0, &p1, &p2 };
+  auto at = [&](int k) { return angleAt(*p[(k + 2) % 3], *p[k], *p[(k + 1) % 3]); };
+  const double opposite[3] = { dist2(p1, p2), dist2(p2, p0), dist2(p0, p1) };
+  int shortest = 0;
+  int longest = 0;
+  bool usable = true;
+  for (int k = 0; k < 3; ++k)
+  {
+    usable = usable && std::isfinite(opposite[k]) && opposite[k] > 0;
+    shortest = opposite[k] < opposite[shortest] ? k : shortest;
+    longest = opposite[k] > opposite[longest] ? k : longest;
+  }
+  if (usable)
+  {
+    lo = at(shortest);
+    hi = at(longest);
+    return;
+  }
+  lo = hi = at(0);
+  for (int k = 1; k < 3; ++k)
+  {
+    lo = std::fmin(lo, at(k));
+    hi = std::fmax(hi, at(k));
+  }
+}
+
 /// Axis-aligned bounds of a set of points.
 struct Bounds
 {

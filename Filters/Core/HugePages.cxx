@@ -59,21 +59,6 @@ bool hugePagesWanted()
   return wanted;
 }
 
-void adviseHugePages(const void* p, std::size_t bytes)
-{
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-  if (!p || bytes < kHuge || !hugePagesWanted())
-    return;
-  const std::uintptr_t begin = (reinterpret_cast<std::uintptr_t>(p) + kHuge - 1) & ~(kHuge - 1);
-  const std::uintptr_t end = (reinterpret_cast<std::uintptr_t>(p) + bytes) & ~(kHuge - 1);
-  if (end > begin)
-    madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE); // advice: may fail
-#else
-  (void)p;
-  (void)bytes;
-#endif
-}
-
 namespace pages
 {
 

@@ -16,7 +16,7 @@
 // the small pages at both ends of a block were most of the faults left.
 // Where huge pages cost more than they save (a kernel that compacts memory
 // on every such fault), OSM_NO_HUGE_PAGES=1 in the environment turns the
-// mappings and the advice off.
+// mappings off.
 #ifndef osm_HugePages_h
 #define osm_HugePages_h
 
@@ -26,13 +26,6 @@
 
 namespace osm
 {
-
-/// Asks the kernel to back the whole 2 MiB pages inside [p, p + bytes) with
-/// transparent huge pages, where it can (Linux; elsewhere, for ranges without
-/// a whole huge page, when the kernel declines, or with OSM_NO_HUGE_PAGES set to
-/// anything but 0, nothing changes). Best called before the memory is first
-/// touched. For memory that is not an osm::Array's (the VTK filter's arrays).
-void adviseHugePages(const void* p, std::size_t bytes);
 
 /// Whether huge pages are wanted: OSM_NO_HUGE_PAGES unset, empty or 0.
 bool hugePagesWanted();

@@ -69,17 +69,6 @@ TEST(HugePages, OverAlignedElementsAreAlignedInSmallAndLargeBlocks)
   }
 }
 
-TEST(HugePages, AdviceOnAnyRangeIsHarmless)
-{
-  adviseHugePages(nullptr, 1u << 30);
-  char small[100] = {};
-  adviseHugePages(small + 1, sizeof small - 1);
-  std::vector<char> big(20u << 20, 'x');
-  adviseHugePages(big.data() + 3, big.size() - 3); // unaligned both ends
-  for (char c : big)
-    ASSERT_EQ(c, 'x');
-}
-
 /// The VmFlags of the mapping that holds address a (/proc/self/smaps), or ""
 /// where there is no such file.
 std::string mappingFlags(const void* a)

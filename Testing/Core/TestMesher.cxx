@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <random>
 
 using namespace osm;
 
@@ -656,6 +657,44 @@ TEST(Mesher, AngleStatisticsAreExactlyThoseOfEveryAngle)
       }
     EXPECT_EQ(r.stats.minAngleDeg, lo) << name;
     EXPECT_EQ(r.stats.maxAngleDeg, hi) << name;
+  }
+}
+
+// The VTK filter's MinAngle/MaxAngle: the angles opposite the shortest and the
+// longest edge, checked against all three angleAt values.
+TEST(Geometry, AngleRangeIsThatOfAllThreeAngles)
+{
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int n = 0; n < 200000; ++n)
+  {
+    // Scales from the subnormal range to near overflow, where the squared
+    // lengths under- or overflow and all three angles are compared.
+    const double scale = std::ldexp(1.0, static_cast<int>(n % 41) * 50 - 1000);
+    Point q[3];
+    for (Point& p : q)
+      p = { u(rng) * scale, u(rng) * scale };
+    // Every fifth is isosceles up to rounding: q2 mirrors q1 about q0's vertical.
+    const bool isosceles = n % 5 == 0;
+    if (isosceles)
+      q[2] = { q[0].x - (q[1].x - q[0].x), q[1].y };
+    double lo = 0, hi = 0;
+    angleRange(q[0], q[1], q[2], lo, hi);
+    double all[3];
+    for (int k = 0; k < 3; ++k)
+      all[k] = angleAt(q[(k + 2) % 3], q[k], q[(k + 1) % 3]);
+    const double refLo = *std::min_element(all, all + 3);
+    const double refHi = *std::max_element(all, all + 3);
+    if (!isosceles)
+    {
+      // Random edges never tie within rounding: exactly the same values.
+      ASSERT_EQ(lo, refLo) << n;
+      ASSERT_EQ(hi, refHi) << n;
+      continue;
+    }
+    // A tie: either of the two angles, an ulp or so apart.
+    ASSERT_NEAR(lo, refLo, 1e-14) << n;
+    ASSERT_NEAR(hi, refHi, 1e-14) << n;
   }
 }
 
