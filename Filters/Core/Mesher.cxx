@@ -277,6 +277,28 @@ Result Mesher::execute()
   return std::move(res);
 }
 
+/// Only the domain's triangles are output, and the domain lies within the
+/// bounds of the segments (Enclosed) or of the points (Hull): the overlay
+/// need not refine the box around them, which on small inputs is most of its
+/// triangles.
+void limitRefinement(
+  OverlayOptions& oo, Domain domain, const Work& w, const Array<Segment>& segments)
+{
+  if (domain == Domain::Box || (domain == Domain::Enclosed && segments.empty()))
+    return;
+  oo.limitRefinement = true;
+  if (domain == Domain::Hull)
+  {
+    oo.refineWithin = boundsOf(w.points);
+    return;
+  }
+  Array<Point> ends;
+  ends.reserve(2 * segments.size());
+  for (const Segment& s : segments)
+    ends.insert(ends.end(), { w.points[s[0]], w.points[s[1]] });
+  oo.refineWithin = boundsOf(ends);
+}
+
 /// Auto means the enclosed regions if the segments enclose any (decided on the
 /// segments as split at their crossings), else the hull; a hull without area
 /// falls back to the box. For the hull domain, hull receives its boundary.
@@ -317,6 +339,7 @@ void Mesher::meshRounds(Work& w)
     oo.gamma = st.gamma;
     oo.maxEdgeLength = std::ldexp(options.maxEdgeLength, -exponent);
     oo.maxSteinerPoints = options.maxSteinerPoints;
+    limitRefinement(oo, domain, w, segments);
     Overlay overlay = buildOverlay(w.points, oo, run);
     st.secondsOverlay += since(t);
 

@@ -115,7 +115,8 @@ struct Result
   Array<Point> edgeVertices;
   Array<Edge> edges;
 
-  /// The phase-1 overlay triangulation. Filled when Options::keepOverlay.
+  /// The phase-1 overlay triangulation. Filled when Options::keepOverlay. Of
+  /// quality θ1 within the bounds of the input (all over for Domain::Box).
   TriMesh overlay;
 
   Statistics stats;

@@ -90,6 +90,14 @@ void renumberAlongHilbertCurve(Overlay& overlay)
     v = newIndex[v];
 }
 
+/// Whether the triangle abc lies beyond one side of the bounds (a cheap test
+/// that misses some triangles outside them, which are then refined).
+bool outside(const Point& a, const Point& b, const Point& c, const Bounds& r)
+{
+  return std::max({ a.x, b.x, c.x }) < r.lo.x || std::min({ a.x, b.x, c.x }) > r.hi.x ||
+    std::max({ a.y, b.y, c.y }) < r.lo.y || std::min({ a.y, b.y, c.y }) > r.hi.y;
+}
+
 class Refiner
 {
 public:
@@ -100,6 +108,8 @@ public:
     , gamma2(options.gamma * options.gamma * (1.0 + 1e-12))
     , maxEdge2(options.maxEdgeLength * options.maxEdgeLength)
     , steinerCap(options.maxSteinerPoints)
+    , limited(options.limitRefinement)
+    , within(options.refineWithin)
   {}
 
   Overlay refine();
@@ -138,6 +148,8 @@ private:
   const double gamma2;
   const double maxEdge2;
   const std::size_t steinerCap;
+  const bool limited;
+  const Bounds within;
 
   Overlay out;
   Triangulation& mesh = out.mesh;
@@ -193,6 +205,8 @@ void Refiner::enqueueIfNeeded(int t)
   const Point o = circumcenterOffset(a, b, c);
   if (mesh.tri[t].info < 0)
   {
+    if (limited && outside(a, b, c, within))
+      return;
     const double la = dist2(b, c), lb = dist2(a, c), lc = dist2(a, b);
     const bool tooLong = maxEdge2 > 0 && std::max({ la, lb, lc }) > maxEdge2;
     if (!tooLong && o.x * o.x + o.y * o.y <= gamma2 * std::min({ la, lb, lc }))

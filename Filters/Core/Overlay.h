@@ -2,6 +2,7 @@
 #ifndef osm_Overlay_h
 #define osm_Overlay_h
 
+#include "Geometry.h"
 #include "HugePages.h"
 #include "RunContext.h"
 #include "Triangulation.h"
@@ -16,13 +17,19 @@ struct OverlayOptions
   double gamma = 1.0;         ///< radius / shortest-edge bound Γ
   double maxEdgeLength = 0.0; ///< 0: no size bound
   std::size_t maxSteinerPoints = 0;
+  /// Where the mesh is wanted: a triangle entirely outside these bounds that
+  /// holds no waiting input point is left as it is (no output triangle comes
+  /// from it). Off: every triangle of the box is refined.
+  bool limitRefinement = false;
+  Bounds refineWithin;
 };
 
 struct Overlay
 {
   /// Delaunay triangulation of a padded box, the input points and Steiner points,
-  /// with every triangle of radius/edge ratio at most Γ. Vertices 0..3 are the
-  /// box corners (counter-clockwise from the lower left).
+  /// with every triangle of radius/edge ratio at most Γ (with limitRefinement,
+  /// every triangle that meets refineWithin). Vertices 0..3 are the box corners
+  /// (counter-clockwise from the lower left).
   Triangulation mesh;
   Array<int> inputVertex; ///< input point index -> mesh vertex
   Array<char> isInput;    ///< per mesh vertex

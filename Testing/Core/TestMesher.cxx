@@ -75,7 +75,10 @@ TEST(Mesher, MeshesAWedgeWithinTheBound)
 
 TEST(Mesher, OverlayIsAQualityMesh)
 {
-  const Result r = meshAndValidate(wedgeInSquare(), "wedge");
+  // The box domain outputs the whole box, so the overlay is refined all over.
+  Options o;
+  o.domain = Domain::Box;
+  const Result r = meshAndValidate(wedgeInSquare(), "wedge", o);
   ASSERT_FALSE(r.overlay.triangles.empty());
   ValidationOptions vo;
   vo.checkConformity = false;
@@ -85,6 +88,38 @@ TEST(Mesher, OverlayIsAQualityMesh)
   const ValidationReport rep = validate(points, r.overlay.vertices, r.overlay.triangles, vo);
   EXPECT_TRUE(rep.ok) << (rep.errors.empty() ? "" : rep.errors.front());
   EXPECT_GE(rep.minAngleDeg, 30.0 - 1e-6);
+}
+
+TEST(Mesher, OverlayIsAQualityMeshWhereTheDomainMayBe)
+{
+  // Enclosed and hull domains lie within the input's bounds: there every
+  // overlay triangle has the quality; beyond them the box is left coarser.
+  Options box;
+  box.domain = Domain::Box;
+  const std::size_t whole = mesh(wedgeInSquare(), box).overlay.triangles.size();
+  for (Domain d : { Domain::Auto, Domain::Enclosed, Domain::Hull })
+  {
+    Options o;
+    o.domain = d;
+    const Result r = meshAndValidate(wedgeInSquare(), "wedge", o);
+    ASSERT_FALSE(r.overlay.triangles.empty());
+    EXPECT_LT(r.overlay.triangles.size(), whole);
+    std::size_t near = 0;
+    for (const Triangle& t : r.overlay.triangles)
+    {
+      const Point &a = r.overlay.vertices[t[0]], &b = r.overlay.vertices[t[1]],
+                  &c = r.overlay.vertices[t[2]];
+      const bool beyond = std::max({ a.x, b.x, c.x }) < 0 || std::min({ a.x, b.x, c.x }) > 10 ||
+        std::max({ a.y, b.y, c.y }) < 0 || std::min({ a.y, b.y, c.y }) > 10;
+      if (beyond)
+        continue;
+      ++near;
+      double lo = 0, hi = 0;
+      angleRange(a, b, c, lo, hi);
+      EXPECT_GE(lo * 180 / std::acos(-1.0), 30.0 - 1e-6);
+    }
+    EXPECT_GT(near, 50u);
+  }
 }
 
 TEST(Mesher, EdgeClassesAreConsistent)
