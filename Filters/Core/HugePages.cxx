@@ -9,6 +9,9 @@
 #if defined(__linux__)
 #include <sys/mman.h>
 #endif
+#if defined(OSM_ADDRESS_SANITIZER)
+#include <sanitizer/asan_interface.h>
+#endif
 
 namespace osm
 {
@@ -17,9 +20,39 @@ namespace
 {
 constexpr std::uintptr_t kHuge = std::uintptr_t{ 2 } << 20;
 
-std::size_t roundUpToHuge(std::size_t bytes)
+/// The size of the mapping holding a block of these bytes.
+std::size_t mappedSize(std::size_t bytes)
 {
-  return (bytes + kHuge - 1) & ~(kHuge - 1);
+  return (bytes + pages::kRedZoneBytes + kHuge - 1) & ~(kHuge - 1);
+}
+
+// Declare bytes of a mapping unusable or usable to AddressSanitizer.
+void poison(void* p, std::size_t bytes)
+{
+#if defined(OSM_ADDRESS_SANITIZER)
+  __asan_poison_memory_region(p, bytes);
+#else
+  (void)p;
+  (void)bytes;
+#endif
+}
+
+void unpoison(void* p, std::size_t bytes)
+{
+#if defined(OSM_ADDRESS_SANITIZER)
+  __asan_unpoison_memory_region(p, bytes);
+#else
+  (void)p;
+  (void)bytes;
+#endif
+}
+
+/// A block of bytes at the start of a mapping of size: usable up to its end.
+void* handOut(void* p, std::size_t bytes, std::size_t size)
+{
+  unpoison(p, bytes);
+  poison(static_cast<char*>(p) + bytes, size - bytes);
+  return p;
 }
 
 /// Freed mappings kept for reuse while a pages::Reuse lives, oldest first.
@@ -40,6 +73,7 @@ Kept& kept()
 void unmapNow(void* p, std::size_t size) noexcept
 {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
+  unpoison(p, size); // the address range may serve another mapping later
   munmap(p, size);
 #else
   (void)p;
@@ -65,7 +99,7 @@ namespace pages
 bool ownMapping(std::size_t bytes)
 {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
-  return kOwnMappings && bytes >= kOwnMappingBytes && hugePagesWanted();
+  return bytes >= kOwnMappingBytes && hugePagesWanted();
 #else
   (void)bytes;
   return false;
@@ -75,7 +109,7 @@ bool ownMapping(std::size_t bytes)
 void* map(std::size_t bytes)
 {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
-  const std::size_t size = roundUpToHuge(bytes);
+  const std::size_t size = mappedSize(bytes);
   {
     Kept& k = kept();
     const std::lock_guard<std::mutex> lock(k.mutex);
@@ -85,7 +119,7 @@ void* map(std::size_t bytes)
         void* p = k.mappings[i].first;
         k.mappings.erase(k.mappings.begin() + static_cast<std::ptrdiff_t>(i));
         k.bytes -= size;
-        return p;
+        return handOut(p, bytes, size);
       }
   }
   // mmap aligns to small pages only: map one huge page more, keep the
@@ -101,7 +135,7 @@ void* map(std::size_t bytes)
   if (const std::uintptr_t end = aligned + size; start + span > end)
     munmap(reinterpret_cast<void*>(end), start + span - end);
   madvise(reinterpret_cast<void*>(aligned), size, MADV_HUGEPAGE); // advice: may fail
-  return reinterpret_cast<void*>(aligned);
+  return handOut(reinterpret_cast<void*>(aligned), bytes, size);
 #else
   (void)bytes;
   throw std::bad_alloc(); // ownMapping() is false here: never called
@@ -110,7 +144,7 @@ void* map(std::size_t bytes)
 
 void unmap(void* p, std::size_t bytes) noexcept
 {
-  const std::size_t size = roundUpToHuge(bytes);
+  const std::size_t size = mappedSize(bytes);
   Kept& k = kept();
   std::unique_lock<std::mutex> lock(k.mutex);
   if (k.scopes == 0 || size > kReuseBytes)
@@ -129,6 +163,7 @@ void unmap(void* p, std::size_t bytes) noexcept
     unmapNow(p, size);
     return;
   }
+  poison(p, size); // freed: any use until it is handed out again is an error
   k.bytes += size;
   while (k.bytes > kReuseBytes)
   {

@@ -39,19 +39,22 @@ namespace pages
 /// machine.
 constexpr std::size_t kOwnMappingBytes = std::size_t{ 512 } << 10;
 
-/// Whether blocks get mappings of their own at all: not under
-/// AddressSanitizer, which checks the bounds of operator new's blocks only
-/// (the sanitized tests and the fuzzers must see every array's overflows).
+/// Under AddressSanitizer, which knows nothing of these mappings, every
+/// mapping keeps at least this many bytes past its block, and the mapped bytes
+/// outside a live block are poisoned: reading or writing past an array's end,
+/// or a freed block kept for reuse, is reported as it is for operator new's
+/// blocks. The sanitized tests and the fuzzers thus run the mapping paths too.
 #if defined(__SANITIZE_ADDRESS__)
-constexpr bool kOwnMappings = false;
+#define OSM_ADDRESS_SANITIZER 1
 #elif defined(__has_feature)
 #if __has_feature(address_sanitizer)
-constexpr bool kOwnMappings = false;
-#else
-constexpr bool kOwnMappings = true;
+#define OSM_ADDRESS_SANITIZER 1
 #endif
+#endif
+#if defined(OSM_ADDRESS_SANITIZER)
+constexpr std::size_t kRedZoneBytes = 64;
 #else
-constexpr bool kOwnMappings = true;
+constexpr std::size_t kRedZoneBytes = 0;
 #endif
 
 /// Whether a block of this many bytes has (or would get) its own mapping.

@@ -6,6 +6,10 @@
 
 #include <gtest/gtest.h>
 
+#if defined(OSM_ADDRESS_SANITIZER)
+#include <sanitizer/asan_interface.h>
+#endif
+
 #include <cstdint>
 #include <cstdlib>
 #include <fstream>
@@ -95,11 +99,10 @@ bool expectHugePages()
   return !off || !*off || std::string(off) == "0";
 }
 
-/// Whether large blocks should get their own mappings in this build and
-/// environment (not under AddressSanitizer).
+/// Whether large blocks should get their own mappings in this environment.
 bool expectOwnMappings()
 {
-  return expectHugePages() && pages::kOwnMappings;
+  return expectHugePages();
 }
 
 // madvise marks the mapping (VmFlags "hg") whatever memory the kernel has
@@ -133,8 +136,7 @@ TEST(HugePages, LargeBlocksGetAlignedAdvisedMappingsUnlessTurnedOff)
 TEST(HugePages, FreedBlocksAreUnmapped)
 {
   if (!expectOwnMappings() || !std::ifstream("/proc/self/smaps"))
-    GTEST_SKIP() << "no mappings of their own (huge pages off, AddressSanitizer), or no "
-                    "/proc/self/smaps";
+    GTEST_SKIP() << "no mappings of their own (huge pages off), or no /proc/self/smaps";
   const std::size_t bytes = (std::size_t{ 3 } << 20) + 12345;
   const char* first = nullptr;
   const char* last = nullptr;
@@ -154,8 +156,7 @@ TEST(HugePages, FreedBlocksAreUnmapped)
 TEST(HugePages, ReuseKeepsFreedMappingsUntilItsScopeEnds)
 {
   if (!expectOwnMappings() || !std::ifstream("/proc/self/smaps"))
-    GTEST_SKIP() << "no mappings of their own (huge pages off, AddressSanitizer), or no "
-                    "/proc/self/smaps";
+    GTEST_SKIP() << "no mappings of their own (huge pages off), or no /proc/self/smaps";
   const std::size_t bytes = 3u << 20; // two huge pages
   const char* kept = nullptr;
   std::vector<const char*> evicted;
@@ -196,8 +197,7 @@ TEST(HugePages, ReuseKeepsFreedMappingsUntilItsScopeEnds)
 TEST(HugePages, ReuseScopesNest)
 {
   if (!expectOwnMappings() || !std::ifstream("/proc/self/smaps"))
-    GTEST_SKIP() << "no mappings of their own (huge pages off, AddressSanitizer), or no "
-                    "/proc/self/smaps";
+    GTEST_SKIP() << "no mappings of their own (huge pages off), or no /proc/self/smaps";
   const char* p = nullptr;
   {
     const pages::Reuse outer;
@@ -210,6 +210,47 @@ TEST(HugePages, ReuseScopesNest)
   }
   EXPECT_TRUE(mappingFlags(p).empty());
 }
+
+#if defined(OSM_ADDRESS_SANITIZER)
+// AddressSanitizer knows only operator new's blocks: in a mapping of our own,
+// the bytes past a live block and the whole of a freed one kept for reuse are
+// poisoned, so that the sanitized tests and the fuzzers see overflows there.
+TEST(HugePages, UnderAddressSanitizerOnlyLiveBlocksAreAddressable)
+{
+  if (!expectOwnMappings())
+    GTEST_SKIP() << "no mappings of their own (huge pages off)";
+  const std::size_t bytes = (std::size_t{ 2 } << 20) - 3; // the red zone needs a second page
+  const pages::Reuse reuse;
+  char* p = nullptr;
+  {
+    Array<char> v(bytes, 'z');
+    p = v.data();
+    EXPECT_EQ(__asan_region_is_poisoned(p, bytes), nullptr);
+    EXPECT_TRUE(__asan_address_is_poisoned(p + bytes));
+    EXPECT_TRUE(__asan_address_is_poisoned(p + bytes + pages::kRedZoneBytes - 1));
+  }
+  EXPECT_TRUE(__asan_address_is_poisoned(p)) << "a freed mapping kept for reuse";
+  EXPECT_TRUE(__asan_address_is_poisoned(p + bytes / 2));
+  Array<char> w(bytes - 5, 'w'); // the same mapping, handed out again
+  ASSERT_EQ(w.data(), p);
+  EXPECT_EQ(__asan_region_is_poisoned(p, bytes - 5), nullptr);
+  EXPECT_TRUE(__asan_address_is_poisoned(p + bytes - 5));
+}
+
+TEST(HugePages, UnderAddressSanitizerAnOverflowIsReported)
+{
+  if (!expectOwnMappings())
+    GTEST_SKIP() << "no mappings of their own (huge pages off)";
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  EXPECT_DEATH(
+    {
+      Array<int> v(1u << 20, 1);
+      volatile int* q = v.data();
+      q[v.size()] = 2;
+    },
+    "use-after-poison");
+}
+#endif
 
 } // namespace
 } // namespace osm
