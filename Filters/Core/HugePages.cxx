@@ -1,5 +1,6 @@
 #include "HugePages.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdlib>
 #include <mutex>
@@ -55,13 +56,19 @@ void* handOut(void* p, std::size_t bytes, std::size_t size)
   return p;
 }
 
-/// Freed mappings kept for reuse while a pages::Reuse lives, oldest first.
+/// A range of whole huge pages, freed and kept mapped for reuse.
+struct Range
+{
+  char* p;
+  std::size_t size;
+};
+
+/// The freed ranges kept while a pages::Reuse lives; adjacent ones are merged.
 struct Kept
 {
   std::mutex mutex;
   int scopes = 0;
-  std::size_t bytes = 0;
-  std::vector<std::pair<void*, std::size_t>> mappings;
+  std::vector<Range> ranges;
 };
 
 Kept& kept()
@@ -79,6 +86,50 @@ void unmapNow(void* p, std::size_t size) noexcept
   (void)p;
   (void)size;
 #endif
+}
+/// The front of the smallest kept range of at least size bytes (the rest stays
+/// kept), or null.
+void* takeKept(Kept& k, std::size_t size)
+{
+  Range* best = nullptr;
+  for (Range& r : k.ranges)
+    if (r.size >= size && (!best || r.size < best->size))
+      best = &r;
+  if (!best)
+    return nullptr;
+  char* p = best->p;
+  best->p += size;
+  best->size -= size;
+  if (best->size == 0)
+    k.ranges.erase(k.ranges.begin() + (best - k.ranges.data()));
+  return p;
+}
+
+/// Adds a freed range, merged with the kept ranges it touches; false if there
+/// is no memory to note it in.
+bool keep(Kept& k, Range freed) noexcept
+{
+  try
+  {
+    k.ranges.reserve(k.ranges.size() + 1); // then nothing below throws
+  }
+  catch (const std::bad_alloc&)
+  {
+    return false;
+  }
+  for (std::size_t i = 0; i < k.ranges.size();)
+  {
+    const Range r = k.ranges[i];
+    if (r.p + r.size == freed.p || freed.p + freed.size == r.p)
+    {
+      freed = { std::min(r.p, freed.p), r.size + freed.size };
+      k.ranges.erase(k.ranges.begin() + static_cast<std::ptrdiff_t>(i));
+    }
+    else
+      ++i;
+  }
+  k.ranges.push_back(freed);
+  return true;
 }
 } // namespace
 
@@ -113,14 +164,13 @@ void* map(std::size_t bytes)
   {
     Kept& k = kept();
     const std::lock_guard<std::mutex> lock(k.mutex);
-    for (std::size_t i = 0; i < k.mappings.size(); ++i)
-      if (k.mappings[i].second == size)
-      {
-        void* p = k.mappings[i].first;
-        k.mappings.erase(k.mappings.begin() + static_cast<std::ptrdiff_t>(i));
-        k.bytes -= size;
-        return handOut(p, bytes, size);
-      }
+    if (void* p = takeKept(k, size))
+      return handOut(p, bytes, size);
+    // Nothing kept fits: give it all back before mapping more, so that the
+    // process never holds more than its arrays would without reuse.
+    for (const Range& r : k.ranges)
+      unmapNow(r.p, r.size);
+    k.ranges.clear();
   }
   // mmap aligns to small pages only: map one huge page more, keep the
   // aligned part and give back the rest.
@@ -147,30 +197,23 @@ void unmap(void* p, std::size_t bytes) noexcept
   const std::size_t size = mappedSize(bytes);
   Kept& k = kept();
   std::unique_lock<std::mutex> lock(k.mutex);
-  if (k.scopes == 0 || size > kReuseBytes)
-  {
-    lock.unlock();
-    unmapNow(p, size);
-    return;
-  }
-  try
-  {
-    k.mappings.emplace_back(p, size);
-  }
-  catch (const std::bad_alloc&)
+  if (k.scopes == 0 || !keep(k, { static_cast<char*>(p), size }))
   {
     lock.unlock();
     unmapNow(p, size);
     return;
   }
   poison(p, size); // freed: any use until it is handed out again is an error
-  k.bytes += size;
-  while (k.bytes > kReuseBytes)
-  {
-    unmapNow(k.mappings.front().first, k.mappings.front().second);
-    k.bytes -= k.mappings.front().second;
-    k.mappings.erase(k.mappings.begin());
-  }
+}
+
+std::size_t keptBytes()
+{
+  Kept& k = kept();
+  const std::lock_guard<std::mutex> lock(k.mutex);
+  std::size_t bytes = 0;
+  for (const Range& r : k.ranges)
+    bytes += r.size;
+  return bytes;
 }
 
 Reuse::Reuse()
@@ -186,10 +229,9 @@ Reuse::~Reuse()
   const std::lock_guard<std::mutex> lock(k.mutex);
   if (--k.scopes > 0)
     return;
-  for (const auto& [p, size] : k.mappings)
-    unmapNow(p, size);
-  k.mappings.clear();
-  k.bytes = 0;
+  for (const Range& r : k.ranges)
+    unmapNow(r.p, r.size);
+  k.ranges.clear();
 }
 
 } // namespace pages

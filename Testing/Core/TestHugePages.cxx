@@ -150,47 +150,53 @@ TEST(HugePages, FreedBlocksAreUnmapped)
   EXPECT_TRUE(mappingFlags(last).empty());
 }
 
-// Inside a Reuse scope a freed mapping serves the next block of its size;
-// beyond kReuseBytes the oldest are given back, and the rest when the scope
-// ends.
+// Inside a Reuse scope freed mappings stay mapped: a request takes the front
+// of the smallest kept range that holds it, ranges that touch merge, a request
+// that nothing holds gives them all back first, and so does the scope's end.
 TEST(HugePages, ReuseKeepsFreedMappingsUntilItsScopeEnds)
 {
   if (!expectOwnMappings() || !std::ifstream("/proc/self/smaps"))
     GTEST_SKIP() << "no mappings of their own (huge pages off), or no /proc/self/smaps";
-  const std::size_t bytes = 3u << 20; // two huge pages
-  const char* kept = nullptr;
-  std::vector<const char*> evicted;
+  constexpr std::size_t huge = std::size_t{ 2 } << 20;
+  char* six = nullptr;
   {
     const pages::Reuse reuse;
     {
-      Array<char> a(bytes, 'a');
-      kept = a.data();
+      Array<char> a(3 * huge - 1000, 'a'); // three huge pages
+      six = a.data();
     }
-    EXPECT_FALSE(mappingFlags(kept).empty()) << "a freed mapping is kept in the scope";
+    EXPECT_FALSE(mappingFlags(six).empty()) << "a freed mapping is kept in the scope";
     {
-      Array<char> b(bytes - 1000, 'b'); // the same number of huge pages
-      EXPECT_EQ(b.data(), kept);
+      // Split: the first page, then the other two, from the same range.
+      Array<char> b(huge - 1000, 'b');
+      EXPECT_EQ(b.data(), six);
       EXPECT_EQ(b.front(), 'b');
       EXPECT_EQ(b.back(), 'b');
+      Array<char> c(2 * huge - 1000, 'c');
+      EXPECT_EQ(c.data(), six + huge);
+      EXPECT_EQ(c.back(), 'c');
     }
     {
-      Array<char> big((pages::kReuseBytes + (1u << 20)), 'c');
-      evicted.push_back(big.data());
+      // c and b, freed in turn, merge back into one range of three pages.
+      Array<char> d(3 * huge - 1000, 'd');
+      EXPECT_EQ(d.data(), six);
+      EXPECT_EQ(d.back(), 'd');
+      // Nothing kept holds a fourth page's worth: the three-page range cannot
+      // serve, as d holds it; a kept one-page range is given back first.
+      Array<char> e(huge - 1000, 'e');
+      char* one = e.data();
+      e = Array<char>();
+      EXPECT_FALSE(mappingFlags(one).empty());
+      EXPECT_EQ(pages::keptBytes(), huge);
+      Array<char> f(4 * huge - 1000, 'f');
+      EXPECT_EQ(pages::keptBytes(), 0u) << "a request nothing holds gives the kept back";
+      EXPECT_EQ(f.back(), 'f');
     }
-    EXPECT_TRUE(mappingFlags(evicted.back()).empty()) << "larger than kReuseBytes: not kept";
-    // 5 mappings of 4 MiB freed: 20 MiB with the first one, above the 16 MiB kept.
-    std::vector<Array<char>> arrays;
-    for (int i = 0; i < 5; ++i)
-      arrays.emplace_back(4u << 20, 'd');
-    const char* first = arrays.front().data();
-    const char* last = arrays.back().data();
-    arrays.clear(); // frees front to back: the first freed goes first
-    EXPECT_TRUE(mappingFlags(first).empty() && mappingFlags(kept).empty())
-      << "the oldest kept mappings are given back beyond kReuseBytes";
-    EXPECT_FALSE(mappingFlags(last).empty());
-    evicted.push_back(last);
+    EXPECT_FALSE(mappingFlags(six).empty());
+    EXPECT_EQ(pages::keptBytes(), 7 * huge); // d and f, freed
   }
-  EXPECT_TRUE(mappingFlags(evicted.back()).empty()) << "given back when the scope ends";
+  EXPECT_EQ(pages::keptBytes(), 0u);
+  EXPECT_TRUE(mappingFlags(six).empty()) << "given back when the scope ends";
 }
 
 // Nested scopes (two meshes at once, say) keep the mappings until the last ends.
