@@ -47,8 +47,9 @@
  *   the categorical `EdgeClass` (0 uncrossed, 1 kept, 2 discarded, 3 input;
  *   the names are in the field data string array `EdgeClassNames`).
  * - port 2 (Overlay): the phase-1 overlay triangulation, for inspection. It
- *   is refined to θ1 within the input's bounding box (everywhere with the box
- *   domain); outside it, no output triangle comes from it, and it stays coarse.
+ *   is refined to θ1 within the bounding box of the segments (enclosed
+ *   domain) or of the points (hull domain), and everywhere with the box
+ *   domain; outside it no output triangle comes from it, and it stays coarse.
  *
  * Bad input (NaN coordinates, crossing segments when ResolveIntersections is
  * off, points not in one plane, ...) is reported through vtkErrorMacro with

@@ -167,7 +167,7 @@ void* map(std::size_t bytes)
     if (void* p = takeKept(k, size))
       return handOut(p, bytes, size);
     // Nothing kept fits: give it all back before mapping more, so that the
-    // process never holds more than its arrays would without reuse.
+    // mappings never exceed the largest total the live arrays have had.
     for (const Range& r : k.ranges)
       unmapNow(r.p, r.size);
     k.ranges.clear();

@@ -10,8 +10,9 @@
 // host application's heap stays as it was.
 //
 // osm::Array is the mesher's std::vector: a block of kOwnMappingBytes or more
-// gets a mapping of its own, aligned to and made of whole 2 MiB pages, with
-// the advice; smaller ones come from operator new. A mapping of its own, not
+// gets whole 2 MiB pages of a mapping of the mesher's own, aligned and
+// advised (a fresh one, or freed ones kept for reuse, see Reuse); smaller
+// ones come from operator new. A mapping of its own, not
 // advice on the heap's memory, because the heap's blocks start anywhere, and
 // the small pages at both ends of a block were most of the faults left.
 // Where huge pages cost more than they save (a kernel that compacts memory
@@ -61,24 +62,27 @@ constexpr std::size_t kRedZoneBytes = 0;
 /// Depends on the size alone, so that freeing takes the allocation's path.
 bool ownMapping(std::size_t bytes);
 
-/// A fresh mapping of the bytes rounded up to whole 2 MiB pages, aligned to
-/// 2 MiB and advised; throws std::bad_alloc if there is no room.
+/// Whole 2 MiB pages holding the bytes (and, under AddressSanitizer, at least
+/// kRedZoneBytes more), aligned to 2 MiB and advised: the front of a kept
+/// range if one holds them, else a fresh mapping. Throws std::bad_alloc if
+/// there is no room.
 void* map(std::size_t bytes);
 
 /// Gives back a mapping from map(bytes), or keeps it for reuse (see Reuse).
 void unmap(void* p, std::size_t bytes) noexcept;
+
+/// The bytes of freed mappings kept for reuse now.
+std::size_t keptBytes();
 
 /// While one lives (osm::mesh keeps one for its whole call), freed mappings
 /// stay mapped, merged where they touch, and a request takes the front of the
 /// smallest kept range that holds it: the kernel clears every fresh page, and
 /// each phase frees arrays the next one could fill (a run of 10^6 triangles
 /// would otherwise map about 200 MB more, 440 instead of 240). A request that
-/// no kept range holds first gives them all back, so the process never holds
-/// more memory than without reuse. When the last one ends, the kept ranges
-/// are given back.
-/// The bytes of freed mappings kept for reuse now.
-std::size_t keptBytes();
-
+/// no kept range holds first gives them all back, so these mappings never
+/// exceed the largest total that the live arrays have had (operator new's
+/// memory cannot use them). When the last one ends, the kept ranges are given
+/// back.
 class Reuse
 {
 public:

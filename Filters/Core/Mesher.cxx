@@ -346,8 +346,8 @@ void Mesher::meshRounds(Work& w)
     t = Clock::now();
     run.phase("stitch", 0.6, 0.75);
     OverlayEdges ov = compactOverlay(overlay.mesh);
-    // From here on the compact copy serves: free the refinement's triangles
-    // (they count at the peak memory of large runs).
+    // From here on the compact copy serves: free the refinement's triangles,
+    // whose pages (kept by the Reuse scope) then hold the later phases' arrays.
     overlay.mesh.releaseTriangles();
     for (Segment& s : segments)
       s = { overlay.inputVertex[s[0]], overlay.inputVertex[s[1]] };

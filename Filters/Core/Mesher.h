@@ -116,7 +116,8 @@ struct Result
   Array<Edge> edges;
 
   /// The phase-1 overlay triangulation. Filled when Options::keepOverlay. Of
-  /// quality θ1 within the bounds of the input (all over for Domain::Box).
+  /// quality θ1 within the bounds of the segments (enclosed domain) or of the
+  /// points (hull domain), and all over for Domain::Box.
   TriMesh overlay;
 
   Statistics stats;

@@ -153,47 +153,45 @@ TEST(HugePages, FreedBlocksAreUnmapped)
 // Inside a Reuse scope freed mappings stay mapped: a request takes the front
 // of the smallest kept range that holds it, ranges that touch merge, a request
 // that nothing holds gives them all back first, and so does the scope's end.
+// Sizes are whole huge pages less 1000 bytes, so that the red zone of the
+// AddressSanitizer build does not add a page.
 TEST(HugePages, ReuseKeepsFreedMappingsUntilItsScopeEnds)
 {
   if (!expectOwnMappings() || !std::ifstream("/proc/self/smaps"))
     GTEST_SKIP() << "no mappings of their own (huge pages off), or no /proc/self/smaps";
   constexpr std::size_t huge = std::size_t{ 2 } << 20;
+  auto block = [&](std::size_t k, char c) { return Array<char>(k * huge - 1000, c); };
   char* six = nullptr;
   {
     const pages::Reuse reuse;
-    {
-      Array<char> a(3 * huge - 1000, 'a'); // three huge pages
-      six = a.data();
-    }
+    six = block(6, 'a').data(); // freed at once: one kept range of six pages
     EXPECT_FALSE(mappingFlags(six).empty()) << "a freed mapping is kept in the scope";
-    {
-      // Split: the first page, then the other two, from the same range.
-      Array<char> b(huge - 1000, 'b');
-      EXPECT_EQ(b.data(), six);
-      EXPECT_EQ(b.front(), 'b');
-      EXPECT_EQ(b.back(), 'b');
-      Array<char> c(2 * huge - 1000, 'c');
-      EXPECT_EQ(c.data(), six + huge);
-      EXPECT_EQ(c.back(), 'c');
-    }
-    {
-      // c and b, freed in turn, merge back into one range of three pages.
-      Array<char> d(3 * huge - 1000, 'd');
-      EXPECT_EQ(d.data(), six);
-      EXPECT_EQ(d.back(), 'd');
-      // Nothing kept holds a fourth page's worth: the three-page range cannot
-      // serve, as d holds it; a kept one-page range is given back first.
-      Array<char> e(huge - 1000, 'e');
-      char* one = e.data();
-      e = Array<char>();
-      EXPECT_FALSE(mappingFlags(one).empty());
-      EXPECT_EQ(pages::keptBytes(), huge);
-      Array<char> f(4 * huge - 1000, 'f');
-      EXPECT_EQ(pages::keptBytes(), 0u) << "a request nothing holds gives the kept back";
-      EXPECT_EQ(f.back(), 'f');
-    }
-    EXPECT_FALSE(mappingFlags(six).empty());
-    EXPECT_EQ(pages::keptBytes(), 7 * huge); // d and f, freed
+    EXPECT_EQ(pages::keptBytes(), 6 * huge);
+    // Split: one, two and three pages from the front of the same range.
+    Array<char> one = block(1, 'b'), two = block(2, 'c'), three = block(3, 'd');
+    EXPECT_EQ(one.data(), six);
+    EXPECT_EQ(two.data(), six + huge);
+    EXPECT_EQ(three.data(), six + 3 * huge);
+    EXPECT_EQ(pages::keptBytes(), 0u);
+    EXPECT_EQ(three.back(), 'd');
+    // Two ranges apart, of one and three pages: one page comes from the
+    // smaller.
+    one = Array<char>();
+    three = Array<char>();
+    EXPECT_EQ(pages::keptBytes(), 4 * huge);
+    Array<char> again = block(1, 'e');
+    EXPECT_EQ(again.data(), six) << "the smallest range that holds the request";
+    // Freeing the middle merges all three into six pages: five fit, one stays.
+    again = Array<char>();
+    two = Array<char>();
+    EXPECT_EQ(pages::keptBytes(), 6 * huge);
+    Array<char> five = block(5, 'f');
+    EXPECT_EQ(five.data(), six);
+    EXPECT_EQ(pages::keptBytes(), huge) << "adjacent ranges merge";
+    // Nothing kept holds eight pages: the kept page is given back first.
+    Array<char> eight = block(8, 'g');
+    EXPECT_EQ(pages::keptBytes(), 0u) << "a request nothing holds gives the kept back";
+    EXPECT_EQ(eight.back(), 'g');
   }
   EXPECT_EQ(pages::keptBytes(), 0u);
   EXPECT_TRUE(mappingFlags(six).empty()) << "given back when the scope ends";

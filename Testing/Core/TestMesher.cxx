@@ -94,16 +94,23 @@ TEST(Mesher, OverlayIsAQualityMeshWhereTheDomainMayBe)
 {
   // Enclosed and hull domains lie within the input's bounds: there every
   // overlay triangle has the quality; beyond them the box is left coarser.
+  // Loose points beyond the segments' bounds, close together near a corner of
+  // the overlay's box, must still be inserted.
+  Pslg input = wedgeInSquare();
+  const Point loose{ 23, 23 };
+  input.points.insert(input.points.end(), { loose, { 23.25, 23 }, { 23, 23.25 } });
   Options box;
   box.domain = Domain::Box;
-  const std::size_t whole = mesh(wedgeInSquare(), box).overlay.triangles.size();
+  const std::size_t whole = mesh(input, box).overlay.triangles.size();
   for (Domain d : { Domain::Auto, Domain::Enclosed, Domain::Hull })
   {
     Options o;
     o.domain = d;
-    const Result r = meshAndValidate(wedgeInSquare(), "wedge", o);
+    const Result r = meshAndValidate(input, "wedge and loose points", o);
     ASSERT_FALSE(r.overlay.triangles.empty());
     EXPECT_LT(r.overlay.triangles.size(), whole);
+    EXPECT_NE(std::find(r.overlay.vertices.begin(), r.overlay.vertices.end(), loose),
+      r.overlay.vertices.end());
     std::size_t near = 0;
     for (const Triangle& t : r.overlay.triangles)
     {
