@@ -87,6 +87,15 @@ void unmapNow(void* p, std::size_t size) noexcept
   (void)size;
 #endif
 }
+
+/// Gives every kept range back to the kernel.
+void giveBackAll(Kept& k) noexcept
+{
+  for (const Range& r : k.ranges)
+    unmapNow(r.p, r.size);
+  k.ranges.clear();
+}
+
 /// The front of the smallest kept range of at least size bytes (the rest stays
 /// kept), or null.
 void* takeKept(Kept& k, std::size_t size)
@@ -168,9 +177,7 @@ void* map(std::size_t bytes)
       return handOut(p, bytes, size);
     // Nothing kept fits: give it all back before mapping more, so that the
     // mappings never exceed the largest total the live arrays have had.
-    for (const Range& r : k.ranges)
-      unmapNow(r.p, r.size);
-    k.ranges.clear();
+    giveBackAll(k);
   }
   // mmap aligns to small pages only: map one huge page more, keep the
   // aligned part and give back the rest.
@@ -229,9 +236,7 @@ Reuse::~Reuse()
   const std::lock_guard<std::mutex> lock(k.mutex);
   if (--k.scopes > 0)
     return;
-  for (const Range& r : k.ranges)
-    unmapNow(r.p, r.size);
-  k.ranges.clear();
+  giveBackAll(k);
 }
 
 } // namespace pages

@@ -205,11 +205,13 @@ void Refiner::enqueueIfNeeded(int t)
   const Point o = circumcenterOffset(a, b, c);
   if (mesh.tri[t].info < 0)
   {
-    if (limited && outside(a, b, c, within))
-      return;
     const double la = dist2(b, c), lb = dist2(a, c), lc = dist2(a, b);
     const bool tooLong = maxEdge2 > 0 && std::max({ la, lb, lc }) > maxEdge2;
     if (!tooLong && o.x * o.x + o.y * o.y <= gamma2 * std::min({ la, lb, lc }))
+      return;
+    // Poor, but beyond the bounds where output can be: leave it (tested only
+    // here, after the quality test that most new triangles pass).
+    if (limited && outside(a, b, c, within))
       return;
   }
   // The key as refineTriangle computes the radius (only its size class counts).
