@@ -7,7 +7,7 @@
 // bucket is not empty). Refining inserts the circumcenter, unless an
 // uninserted input point lies within kYield·r of it: then that point is
 // inserted instead. Larger triangles are refined first (by size class, within
-// a factor of 2 in circumradius: SizeQueue.h), so the mesh stays a well-graded
+// a factor of 8 in circumradius: SizeQueue.h), so the mesh stays a well-graded
 // quality Delaunay mesh throughout, which bounds the work.
 #include "Overlay.h"
 

@@ -1,11 +1,18 @@
 // The refinement queue of Sparse Voronoi Refinement: larger triangles first.
 //
 // SVR needs triangles refined in order of size only up to a constant factor,
-// so items are kept in buckets by size class, a factor of 2 in circumradius
-// (two binary exponents of r^2). Within a bucket the newest item comes
+// so items are kept in buckets by size class, a factor of 8 in circumradius
+// (six binary exponents of r^2). Within a bucket the newest item comes
 // first: the triangles just created are refined next, where the mesh is
 // already in cache. Push and pop are O(1) amortised, where an exact heap costs
 // O(log n) cache misses per operation on millions of triangles.
+//
+// Why 8 and not 2: a triangle an insertion creates is smaller than the one it
+// refines, and it is refined next (in cache) only if it falls into the same
+// class. With a factor of 2 most fell into the next class, which waits until
+// the current one is done all over the mesh; a factor of 8 keeps the
+// refinement local. random-segments 2e5: overlay phase 15-20% faster and
+// 0.7% fewer triangles; a factor of 16 or 64 gained nothing more.
 #ifndef osm_SizeQueue_h
 #define osm_SizeQueue_h
 
@@ -23,6 +30,9 @@ template <typename T>
 class SizeQueue
 {
 public:
+  /// A size class spans this many binary exponents of r^2: 2^6, a factor of 8 in r.
+  static constexpr int kExponentsPerClass = 6;
+
   bool empty() const { return size == 0; }
 
   /// key: the squared circumradius (positive, finite or not).
@@ -49,7 +59,7 @@ private:
   // Exponents of doubles run from -1074 (subnormals) to 1023; 0 and NaN go to
   // the smallest bucket, infinity to the largest.
   static constexpr int kMinExponent = -1080;
-  static constexpr int kBuckets = (1024 - kMinExponent) / 2 + 2;
+  static constexpr int kBuckets = (1024 - kMinExponent) / kExponentsPerClass + 2;
 
   static int bucketOf(double key)
   {
@@ -57,7 +67,7 @@ private:
       return 0;
     if (std::isinf(key))
       return kBuckets - 1;
-    return (std::ilogb(key) - kMinExponent) / 2;
+    return (std::ilogb(key) - kMinExponent) / kExponentsPerClass;
   }
 
   Array<Array<T>> buckets = Array<Array<T>>(kBuckets);

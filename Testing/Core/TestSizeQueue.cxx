@@ -15,20 +15,20 @@ TEST(SizeQueue, PopsLargerClassesFirstAndNewestFirstWithinAClass)
 {
   SizeQueue<int> q;
   EXPECT_TRUE(q.empty());
-  q.push(1.0, 1);  // class of r^2 in [1, 4)
-  q.push(3.0, 2);  // same class
-  q.push(16.0, 3); // a larger class
-  q.push(0.5, 4);  // a smaller class
+  q.push(1.0, 1);  // class of r^2 in [1, 64)
+  q.push(48.0, 2); // same class
+  q.push(64.0, 3); // the next larger class
+  q.push(0.99, 4); // the next smaller class
   EXPECT_EQ(q.pop(), 3);
   EXPECT_EQ(q.pop(), 2); // newest of its class
   EXPECT_EQ(q.pop(), 1);
-  q.push(100.0, 5); // pushing a larger class after pops still comes first
+  q.push(5000.0, 5); // pushing a larger class after pops still comes first
   EXPECT_EQ(q.pop(), 5);
   EXPECT_EQ(q.pop(), 4);
   EXPECT_TRUE(q.empty());
 }
 
-TEST(SizeQueue, OrdersWithinAFactorOfTwoInRadiusAndLosesNothing)
+TEST(SizeQueue, OrdersWithinASizeClassAndLosesNothing)
 {
   std::mt19937_64 rng(3);
   std::uniform_real_distribution<double> exponent(-300, 300);
@@ -40,14 +40,16 @@ TEST(SizeQueue, OrdersWithinAFactorOfTwoInRadiusAndLosesNothing)
     q.push(keys.back(), i);
   }
   std::vector<char> seen(keys.size(), 0);
+  // A class spans 2^kExponentsPerClass in r^2 (a factor of 8 in r).
+  const double classRatio = std::ldexp(1.0, SizeQueue<int>::kExponentsPerClass);
   double smallest = std::numeric_limits<double>::infinity();
   while (!q.empty())
   {
     const int i = q.pop();
     ASSERT_FALSE(seen[i]) << "popped twice: " << i;
     seen[i] = 1;
-    // No later key may be more than a size class (4 in r^2) above an earlier one.
-    EXPECT_LE(keys[i], 4 * smallest) << i;
+    // No later key may be more than a size class above an earlier one.
+    EXPECT_LE(keys[i], classRatio * smallest) << i;
     smallest = std::min(smallest, keys[i]);
   }
   for (char s : seen)
