@@ -422,14 +422,18 @@ void Mesher::meshRounds(Work& w)
 /// Smallest and largest angle of the mesh in degrees, exactly as angleAt gives
 /// them. An atan2 per angle was a tenth of a run: a cosine filter skips the
 /// angles that cannot reach either extreme, and only the others get atan2.
+/// The filter compares cos|cos| (monotone in the cosine) multiplied out,
+/// dot|dot| against bound * |u|^2 |v|^2: no square root or division per angle.
 void angleExtremes(const TriMesh& mesh, double& minDeg, double& maxDeg)
 {
   const double deg = 180.0 / std::acos(-1.0);
-  // Far above the rounding of the filter's cosine and of the conversions.
+  // Far above the rounding of the filter's products and of the conversions.
   const double slack = 1e-9;
+  auto signedSquare = [](double x) { return x * std::fabs(x); };
   minDeg = mesh.triangles.empty() ? 0.0 : 180.0;
   maxDeg = 0.0;
-  double cosMin = -2, cosMax = 2; // skip an angle whose cosine is strictly between
+  // Skip an angle whose cos|cos| is strictly between these (none at first).
+  double below = -4, above = 4;
   for (const Triangle& t : mesh.triangles)
     for (int i = 0; i < 3; ++i)
     {
@@ -440,14 +444,14 @@ void angleExtremes(const TriMesh& mesh, double& minDeg, double& maxDeg)
       const double uu = ux * ux + uy * uy, vv = vx * vx + vy * vy;
       // Within these norms nothing over- or underflows (NaN fails the tests too).
       const bool normal = uu > 1e-150 && uu < 1e150 && vv > 1e-150 && vv < 1e150;
-      const double cosine = (ux * vx + uy * vy) / std::sqrt(uu * vv);
-      if (normal && cosine < cosMin && cosine > cosMax)
+      const double key = signedSquare(ux * vx + uy * vy), norms = uu * vv;
+      if (normal && key < below * norms && key > above * norms)
         continue;
       const double angle = deg * angleAt(a, b, c);
       minDeg = std::min(minDeg, angle);
       maxDeg = std::max(maxDeg, angle);
-      cosMin = std::cos(minDeg / deg) - slack;
-      cosMax = std::cos(maxDeg / deg) + slack;
+      below = signedSquare(std::cos(minDeg / deg) - slack);
+      above = signedSquare(std::cos(maxDeg / deg) + slack);
     }
 }
 
