@@ -5,6 +5,7 @@
 
 #include "Geometry.h"
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 
@@ -86,14 +87,22 @@ inline int orientSign(const Point& a, const Point& b, const Point& c)
 /// constructed on that line near x (a crossing with an edge of about
 /// `length`) would round onto x: within a few ulps of x's coordinates plus of
 /// `length`. Used to snap such vertices onto segments, a repair within rounding.
-inline bool onLineWithinRounding(const Point& a, const Point& b, const Point& x, double length)
+/// This form takes o = orient2d(a, b, x) and |b - a| (std::hypot), which a
+/// walk along one segment computes once, not per vertex it meets.
+inline bool onLineWithinRounding(double o, const Point& x, double length, double abLength)
 {
-  const double o = orient2d(a, b, x); // exact sign, magnitude within a factor of 2
   if (o == 0)
     return true;
-  const double scale = std::fmax(std::fabs(x.x), std::fabs(x.y)) + length;
+  // (std::max, not std::fmax, a library call: the coordinates are finite.)
+  const double scale = std::max(std::fabs(x.x), std::fabs(x.y)) + length;
   const double tolerance = 8 * DBL_EPSILON * scale;
-  return std::fabs(o) <= tolerance * std::hypot(b.x - a.x, b.y - a.y);
+  return std::fabs(o) <= tolerance * abLength;
+}
+
+inline bool onLineWithinRounding(const Point& a, const Point& b, const Point& x, double length)
+{
+  // orient2d: exact sign, magnitude within a factor of 2.
+  return onLineWithinRounding(orient2d(a, b, x), x, length, std::hypot(b.x - a.x, b.y - a.y));
 }
 
 } // namespace osm

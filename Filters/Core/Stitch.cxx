@@ -117,6 +117,7 @@ private:
   const double sinTheta1;
   Walk& out;
   int segmentStart = -1;                  ///< first vertex of the segment being walked
+  double segmentLength = 0;               ///< its length (std::hypot)
   Array<std::pair<int, int>> triPiece;    ///< (overlay triangle, piece) traversed
   Array<std::pair<int, int>> steinerHits; ///< (Steiner vertex, segment) passing through it
 };
@@ -147,7 +148,8 @@ int Walker::firstStep(int cur, int b, int& l, int& r, int& tri)
   {
     const int i = localIndex(ov.tris[t], cur);
     const int u = ov.tris[t][(i + 1) % 3];
-    if (ahead(C, P[u], B) && onLineWithinRounding(A, B, P[u], std::sqrt(dist2(C, P[u]))))
+    if (ahead(C, P[u], B) &&
+      onLineWithinRounding(orient2d(A, B, P[u]), P[u], std::sqrt(dist2(C, P[u])), segmentLength))
     {
       tri = ov.edgeId(t, (i + 2) % 3);
       return u;
@@ -210,7 +212,7 @@ void Walker::addCrossing(int edge, int piece, const Point& A, const Point& B)
   if (!c.resolved)
     c.s = crossingFraction(B, dx, dy, p0, p1, edgeLength, c.resolved);
   c.p = { p0.x + c.s * ex, p0.y + c.s * ey };
-  const double sine = std::fabs(cross(dx, dy, ex, ey)) / (std::hypot(dx, dy) * edgeLength);
+  const double sine = std::fabs(cross(dx, dy, ex, ey)) / (segmentLength * edgeLength);
   c.good = sine > sinTheta1;
   out.crossings.push_back(c);
 }
@@ -220,6 +222,7 @@ void Walker::walk(int segment, int a, int b)
   const Point& A = P[a];
   const Point& B = P[b];
   segmentStart = a;
+  segmentLength = std::hypot(B.x - A.x, B.y - A.y);
   int cur = a;
   for (std::size_t pieces = 0; cur != b; ++pieces)
   {
@@ -250,9 +253,10 @@ void Walker::walk(int segment, int a, int b)
         triPiece.push_back({ t, piece });
         const int il = localIndex(ov.tris[t], l), ir = localIndex(ov.tris[t], r);
         const int x = ov.tris[t][3 - il - ir];
-        const int o = orientSign(A, B, P[x]);
+        const double o = orient2d(A, B, P[x]);
         const double local = std::sqrt(std::max(dist2(P[x], P[l]), dist2(P[x], P[r])));
-        if (o == 0 || (onLineWithinRounding(A, B, P[x], local) && ahead(P[cur], P[x], B)))
+        if (o == 0 ||
+          (onLineWithinRounding(o, P[x], local, segmentLength) && ahead(P[cur], P[x], B)))
           next = x;
         else if (o > 0)
         {
