@@ -435,24 +435,41 @@ void angleExtremes(const TriMesh& mesh, double& minDeg, double& maxDeg)
   // Skip an angle whose cos|cos| is strictly between these (none at first).
   double below = -4, above = 4;
   for (const Triangle& t : mesh.triangles)
+  {
+    const Point& p0 = mesh.vertices[t[0]];
+    const Point& p1 = mesh.vertices[t[1]];
+    const Point& p2 = mesh.vertices[t[2]];
+    // Edge i is opposite corner i; the angle at corner i lies between edges
+    // i + 1 and i + 2, and their dot product, negated exactly, is the one of
+    // the vectors from that corner that angleAt(p[i+1], p[i], p[i+2]) takes.
+    const double ex[3] = { p2.x - p1.x, p0.x - p2.x, p1.x - p0.x };
+    const double ey[3] = { p2.y - p1.y, p0.y - p2.y, p1.y - p0.y };
+    double len2[3];
+    bool normal = true;
     for (int i = 0; i < 3; ++i)
     {
-      const Point& a = mesh.vertices[t[(i + 1) % 3]];
-      const Point& b = mesh.vertices[t[i]];
-      const Point& c = mesh.vertices[t[(i + 2) % 3]];
-      const double ux = a.x - b.x, uy = a.y - b.y, vx = c.x - b.x, vy = c.y - b.y;
-      const double uu = ux * ux + uy * uy, vv = vx * vx + vy * vy;
+      len2[i] = ex[i] * ex[i] + ey[i] * ey[i];
       // Within these norms nothing over- or underflows (NaN fails the tests too).
-      const bool normal = uu > 1e-150 && uu < 1e150 && vv > 1e-150 && vv < 1e150;
-      const double key = signedSquare(ux * vx + uy * vy), norms = uu * vv;
+      normal = normal && len2[i] > 1e-150 && len2[i] < 1e150;
+    }
+    // Corner i between edges j and k, written out three times (a loop's
+    // index arithmetic cost as much as the filter).
+    auto corner = [&](int i, int j, int k) {
+      const double key = signedSquare(-(ex[j] * ex[k] + ey[j] * ey[k]));
+      const double norms = len2[j] * len2[k];
       if (normal && key < below * norms && key > above * norms)
-        continue;
-      const double angle = deg * angleAt(a, b, c);
+        return;
+      const double angle =
+        deg * angleAt(mesh.vertices[t[j]], mesh.vertices[t[i]], mesh.vertices[t[k]]);
       minDeg = std::min(minDeg, angle);
       maxDeg = std::max(maxDeg, angle);
       below = signedSquare(std::cos(minDeg / deg) - slack);
       above = signedSquare(std::cos(maxDeg / deg) + slack);
-    }
+    };
+    corner(0, 1, 2);
+    corner(1, 2, 0);
+    corner(2, 0, 1);
+  }
 }
 
 void Mesher::buildOutput(const Work& w, const PlanarGraph& g, Completion& c, Carving& carve,
