@@ -21,6 +21,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <cstring>
 #include <vector>
 
 namespace osm
@@ -67,7 +69,13 @@ private:
       return 0;
     if (std::isinf(key))
       return kBuckets - 1;
-    return (std::ilogb(key) - kMinExponent) / kExponentsPerClass;
+    // The binary exponent from the bits (ilogb is a library call per push);
+    // ilogb for subnormals, whose exponent field is 0.
+    std::uint64_t bits;
+    std::memcpy(&bits, &key, sizeof bits);
+    const int field = static_cast<int>(bits >> 52); // the sign bit is 0
+    const int exponent = field != 0 ? field - 1023 : std::ilogb(key);
+    return (exponent - kMinExponent) / kExponentsPerClass;
   }
 
   Array<Array<T>> buckets = Array<Array<T>>(kBuckets);

@@ -71,3 +71,17 @@ TEST(SizeQueue, ExtremeKeys)
   EXPECT_EQ(q.pop(), 1);
   EXPECT_TRUE(q.empty());
 }
+
+TEST(SizeQueue, SubnormalKeysKeepTheirSizeOrder)
+{
+  // Subnormal squared radii have no exponent field to read: they must still
+  // fall into classes by their true exponent, below the normal numbers.
+  SizeQueue<int> q;
+  q.push(std::ldexp(1.0, -1030), 1); // subnormal, several classes above...
+  q.push(std::ldexp(1.0, -1074), 2); // ...the smallest positive double
+  q.push(std::ldexp(1.0, -1000), 3); // normal
+  EXPECT_EQ(q.pop(), 3);
+  EXPECT_EQ(q.pop(), 1); // were both subnormals in one class, 2 (newest) would come first
+  EXPECT_EQ(q.pop(), 2);
+  EXPECT_TRUE(q.empty());
+}
