@@ -370,6 +370,18 @@ Array<int> hullBoundary(const Array<Point>& P)
     onHull[v] = 1;
   // near[k]: points within rounding of hull edge k (from hull[k] to hull[k+1]).
   Array<Array<int>> near(h);
+  // The chains' edge lengths, once: every other point is tested against one
+  // edge of each chain, and a hypot call per test was most of this function.
+  const auto edgeLengths = [&](const Array<int>& chain) {
+    Array<double> length(chain.size() - 1);
+    for (std::size_t i = 0; i + 1 < chain.size(); ++i)
+    {
+      const Point &a = P[chain[i]], &b = P[chain[i + 1]];
+      length[i] = std::hypot(b.x - a.x, b.y - a.y);
+    }
+    return length;
+  };
+  const Array<double> lowerLength = edgeLengths(lower), upperLength = edgeLengths(upper);
   // The hull edge index near which point p lies within rounding, or -1.
   const auto nearEdge = [&](const Array<int>& chain, int p, bool isLower) {
     const auto it = std::upper_bound(chain.begin(), chain.end(), p, less);
@@ -377,7 +389,8 @@ Array<int> hullBoundary(const Array<Point>& P)
       return -1;
     const int i = static_cast<int>(it - chain.begin()) - 1;
     const Point &a = P[chain[i]], &b = P[chain[i + 1]];
-    if (!onLineWithinRounding(a, b, P[p], std::hypot(b.x - a.x, b.y - a.y)))
+    const double length = (isLower ? lowerLength : upperLength)[i];
+    if (!onLineWithinRounding(orient2d(a, b, P[p]), P[p], length, length))
       return -1;
     return isLower ? i : h - 1 - i;
   };

@@ -87,8 +87,9 @@ inline int orientSign(const Point& a, const Point& b, const Point& c)
 /// constructed on that line near x (a crossing with an edge of about
 /// `length`) would round onto x: within a few ulps of x's coordinates plus of
 /// `length`. Used to snap such vertices onto segments, a repair within rounding.
-/// This form takes o = orient2d(a, b, x) and |b - a| (std::hypot), which a
-/// walk along one segment computes once, not per vertex it meets.
+/// Takes o = orient2d(a, b, x) (exact sign, magnitude within a factor of 2)
+/// and |b - a| (std::hypot), which a caller testing many points against one
+/// line computes once.
 inline bool onLineWithinRounding(double o, const Point& x, double length, double abLength)
 {
   if (o == 0)
@@ -97,12 +98,6 @@ inline bool onLineWithinRounding(double o, const Point& x, double length, double
   const double scale = std::max(std::fabs(x.x), std::fabs(x.y)) + length;
   const double tolerance = 8 * DBL_EPSILON * scale;
   return std::fabs(o) <= tolerance * abLength;
-}
-
-inline bool onLineWithinRounding(const Point& a, const Point& b, const Point& x, double length)
-{
-  // orient2d: exact sign, magnitude within a factor of 2.
-  return onLineWithinRounding(orient2d(a, b, x), x, length, std::hypot(b.x - a.x, b.y - a.y));
 }
 
 } // namespace osm
