@@ -13,7 +13,7 @@
 // the current one is done all over the mesh; a factor of 8 keeps the
 // refinement local. Overlay phase, median of 9 alternating runs: random-
 // segments 2e5 0.598 -> 0.549 s, us48 0.377 -> 0.332 s, points 1e6 4.38 ->
-// 3.97 s, with 0.4-3% fewer triangles; a factor of 16 or 64 gained no more.
+// 3.97 s, with 0.7-3% fewer triangles; a factor of 16 or 64 gained no more.
 #ifndef osm_SizeQueue_h
 #define osm_SizeQueue_h
 

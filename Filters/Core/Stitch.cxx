@@ -117,7 +117,7 @@ private:
   const double sinTheta1;
   Walk& out;
   int segmentStart = -1;                  ///< first vertex of the segment being walked
-  double segmentLength = 0;               ///< its length (std::hypot)
+  double segmentLength = 0;               ///< its length (addCrossing's A to B)
   Array<std::pair<int, int>> triPiece;    ///< (overlay triangle, piece) traversed
   Array<std::pair<int, int>> steinerHits; ///< (Steiner vertex, segment) passing through it
 };
