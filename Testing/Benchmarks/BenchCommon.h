@@ -26,6 +26,7 @@
 #include <functional>
 #include <sstream>
 #include <string>
+#include <sys/resource.h>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -126,18 +127,32 @@ inline bool resetPeakRss()
   return static_cast<bool>(out);
 }
 
+/// Page faults served without a disk read so far in this process.
+inline long long processMinorFaults()
+{
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_minflt;
+}
+
 /// Memory around the meshing call: RSS just before it, and the peak RSS during it.
 struct MemoryProbe
 {
   long long baseRss = -1;
   long long peakRss = -1;
   bool peakWasReset = false;
+  long long minorFaults = -1; ///< page faults the call took (no disk read)
   void before()
   {
     peakWasReset = resetPeakRss();
     baseRss = procStatusBytes("VmRSS");
+    minorFaults = processMinorFaults();
   }
-  void after() { peakRss = procStatusBytes("VmHWM"); }
+  void after()
+  {
+    peakRss = procStatusBytes("VmHWM");
+    minorFaults = processMinorFaults() - minorFaults;
+  }
 };
 
 // ---------------------------------------------------------------- output checks
@@ -424,7 +439,8 @@ inline int driverMain(int argc, char** argv, const char* tool,
     .add("out_triangles", out.triangles)
     .add("base_rss", out.memory.baseRss)
     .add("peak_rss", out.memory.peakRss)
-    .add("peak_reset", out.memory.peakWasReset);
+    .add("peak_reset", out.memory.peakWasReset)
+    .add("minor_faults", out.memory.minorFaults);
   if (out.ok && check)
   {
     const Quality q = inspect(pslg, out.mesh, out.inDomain);
