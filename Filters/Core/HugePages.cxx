@@ -27,32 +27,11 @@ std::size_t mappedSize(std::size_t bytes)
   return (bytes + pages::kRedZoneBytes + kHuge - 1) & ~(kHuge - 1);
 }
 
-// Declare bytes of a mapping unusable or usable to AddressSanitizer.
-void poison(void* p, std::size_t bytes)
-{
-#if defined(OSM_ADDRESS_SANITIZER)
-  __asan_poison_memory_region(p, bytes);
-#else
-  (void)p;
-  (void)bytes;
-#endif
-}
-
-void unpoison(void* p, std::size_t bytes)
-{
-#if defined(OSM_ADDRESS_SANITIZER)
-  __asan_unpoison_memory_region(p, bytes);
-#else
-  (void)p;
-  (void)bytes;
-#endif
-}
-
 /// A block of bytes at the start of a mapping of size: usable up to its end.
 void* handOut(void* p, std::size_t bytes, std::size_t size)
 {
-  unpoison(p, bytes);
-  poison(static_cast<char*>(p) + bytes, size - bytes);
+  pages::unpoison(p, bytes);
+  pages::poison(static_cast<char*>(p) + bytes, size - bytes);
   return p;
 }
 
@@ -77,22 +56,11 @@ Kept& kept()
   return k;
 }
 
-void unmapNow(void* p, std::size_t size) noexcept
-{
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-  unpoison(p, size); // the address range may serve another mapping later
-  munmap(p, size);
-#else
-  (void)p;
-  (void)size;
-#endif
-}
-
 /// Gives every kept range back to the kernel.
 void giveBackAll(Kept& k) noexcept
 {
   for (const Range& r : k.ranges)
-    unmapNow(r.p, r.size);
+    pages::unmapNow(r.p, r.size);
   k.ranges.clear();
 }
 
@@ -156,6 +124,60 @@ bool hugePagesWanted()
 namespace pages
 {
 
+void poison(void* p, std::size_t bytes)
+{
+#if defined(OSM_ADDRESS_SANITIZER)
+  __asan_poison_memory_region(p, bytes);
+#else
+  (void)p;
+  (void)bytes;
+#endif
+}
+
+void unpoison(void* p, std::size_t bytes)
+{
+#if defined(OSM_ADDRESS_SANITIZER)
+  __asan_unpoison_memory_region(p, bytes);
+#else
+  (void)p;
+  (void)bytes;
+#endif
+}
+
+void unmapNow(void* p, std::size_t size) noexcept
+{
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  unpoison(p, size); // the address range may serve another mapping later
+  munmap(p, size);
+#else
+  (void)p;
+  (void)size;
+#endif
+}
+
+void* mapHuge(std::size_t size) noexcept
+{
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  // mmap aligns to small pages only: map one huge page more, keep the
+  // aligned part and give back the rest.
+  const std::size_t span = size + kHuge;
+  void* m = mmap(nullptr, span, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+  if (m == MAP_FAILED)
+    return nullptr;
+  const auto start = reinterpret_cast<std::uintptr_t>(m);
+  const std::uintptr_t aligned = (start + kHuge - 1) & ~(kHuge - 1);
+  if (aligned > start)
+    munmap(m, aligned - start);
+  if (const std::uintptr_t end = aligned + size; start + span > end)
+    munmap(reinterpret_cast<void*>(end), start + span - end);
+  madvise(reinterpret_cast<void*>(aligned), size, MADV_HUGEPAGE); // advice: may fail
+  return reinterpret_cast<void*>(aligned);
+#else
+  (void)size;
+  return nullptr;
+#endif
+}
+
 bool ownMapping(std::size_t bytes)
 {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
@@ -179,20 +201,10 @@ void* map(std::size_t bytes)
     // mappings never exceed the largest total the live arrays have had.
     giveBackAll(k);
   }
-  // mmap aligns to small pages only: map one huge page more, keep the
-  // aligned part and give back the rest.
-  const std::size_t span = size + kHuge;
-  void* m = mmap(nullptr, span, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-  if (m == MAP_FAILED)
+  void* p = mapHuge(size);
+  if (!p)
     throw std::bad_alloc();
-  const auto start = reinterpret_cast<std::uintptr_t>(m);
-  const std::uintptr_t aligned = (start + kHuge - 1) & ~(kHuge - 1);
-  if (aligned > start)
-    munmap(m, aligned - start);
-  if (const std::uintptr_t end = aligned + size; start + span > end)
-    munmap(reinterpret_cast<void*>(end), start + span - end);
-  madvise(reinterpret_cast<void*>(aligned), size, MADV_HUGEPAGE); // advice: may fail
-  return handOut(reinterpret_cast<void*>(aligned), bytes, size);
+  return handOut(p, bytes, size);
 #else
   (void)bytes;
   throw std::bad_alloc(); // ownMapping() is false here: never called
@@ -225,13 +237,17 @@ std::size_t keptBytes()
 
 Reuse::Reuse()
 {
-  Kept& k = kept();
-  const std::lock_guard<std::mutex> lock(k.mutex);
-  ++k.scopes;
+  {
+    Kept& k = kept();
+    const std::lock_guard<std::mutex> lock(k.mutex);
+    ++k.scopes;
+  }
+  pool::openScope();
 }
 
 Reuse::~Reuse()
 {
+  pool::closeScope();
   Kept& k = kept();
   const std::lock_guard<std::mutex> lock(k.mutex);
   if (--k.scopes > 0)

@@ -11,8 +11,9 @@
 //
 // osm::Array is the mesher's std::vector: a block of kOwnMappingBytes or more
 // gets whole 2 MiB pages of a mapping of the mesher's own, aligned and
-// advised (a fresh one, or freed ones kept for reuse, see Reuse); smaller
-// ones come from operator new. A mapping of its own, not
+// advised (a fresh one, or freed ones kept for reuse, see Reuse); medium ones
+// come from the block pool while a Reuse scope lives (BlockPool.h), the rest
+// from operator new. A mapping of its own, not
 // advice on the heap's memory, because the heap's blocks start anywhere, and
 // the small pages at both ends of a block were most of the faults left.
 // Where huge pages cost more than they save (a kernel that compacts memory
@@ -20,6 +21,8 @@
 // mappings off.
 #ifndef osm_HugePages_h
 #define osm_HugePages_h
+
+#include "BlockPool.h"
 
 #include <cstddef>
 #include <new>
@@ -71,6 +74,17 @@ void* map(std::size_t bytes);
 /// Gives back a mapping from map(bytes), or keeps it for reuse (see Reuse).
 void unmap(void* p, std::size_t bytes) noexcept;
 
+/// A fresh mapping of size bytes (whole huge pages), aligned to 2 MiB and
+/// advised; null if there is no room.
+void* mapHuge(std::size_t size) noexcept;
+
+/// Gives a mapping or a part of one back to the kernel.
+void unmapNow(void* p, std::size_t size) noexcept;
+
+/// Declares bytes unusable or usable to AddressSanitizer (no-ops without it).
+void poison(void* p, std::size_t bytes);
+void unpoison(void* p, std::size_t bytes);
+
 /// The bytes of freed mappings kept for reuse now.
 std::size_t keptBytes();
 
@@ -82,7 +96,7 @@ std::size_t keptBytes();
 /// no kept range holds first gives them all back, so these mappings never
 /// exceed the largest total that the live arrays have had (operator new's
 /// memory cannot use them). When the last one ends, the kept ranges are given
-/// back.
+/// back. While one lives, the block pool serves medium blocks (BlockPool.h).
 class Reuse
 {
 public:
@@ -112,6 +126,9 @@ struct HugeAllocator
     const std::size_t bytes = n * sizeof(T);
     if (pages::ownMapping(bytes))
       return static_cast<T*>(pages::map(bytes));
+    if (bytes >= pool::kPooledBytes && alignof(T) <= 4096)
+      if (void* p = pool::take(bytes))
+        return static_cast<T*>(p);
     if constexpr (alignof(T) > __STDCPP_DEFAULT_NEW_ALIGNMENT__)
       return static_cast<T*>(::operator new(bytes, std::align_val_t(alignof(T))));
     else
@@ -123,6 +140,8 @@ struct HugeAllocator
     const std::size_t bytes = n * sizeof(T);
     if (pages::ownMapping(bytes))
       pages::unmap(p, bytes);
+    else if (bytes >= pool::kPooledBytes && pool::give(p, bytes))
+      return;
     else if constexpr (alignof(T) > __STDCPP_DEFAULT_NEW_ALIGNMENT__)
       ::operator delete(p, std::align_val_t(alignof(T)));
     else

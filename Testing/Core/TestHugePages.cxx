@@ -3,6 +3,7 @@
 // benchmarks).
 
 #include "HugePages.h"
+#include "MemoryTestUtils.h"
 
 #include <gtest/gtest.h>
 
@@ -11,9 +12,7 @@
 #endif
 
 #include <cstdint>
-#include <cstdlib>
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -71,32 +70,6 @@ TEST(HugePages, OverAlignedElementsAreAlignedInSmallAndLargeBlocks)
     Array<Wide> v(n);
     EXPECT_EQ(reinterpret_cast<std::uintptr_t>(v.data()) % 32, 0u) << n;
   }
-}
-
-/// The VmFlags of the mapping that holds address a (/proc/self/smaps), or ""
-/// where there is no such file.
-std::string mappingFlags(const void* a)
-{
-  std::ifstream smaps("/proc/self/smaps");
-  const auto at = reinterpret_cast<std::uintptr_t>(a);
-  bool inside = false;
-  for (std::string line; std::getline(smaps, line);)
-  {
-    std::uintptr_t lo = 0, hi = 0;
-    char dash = 0;
-    std::istringstream head(line);
-    if (head >> std::hex >> lo >> dash >> hi && dash == '-')
-      inside = lo <= at && at < hi;
-    else if (inside && line.rfind("VmFlags:", 0) == 0)
-      return line;
-  }
-  return "";
-}
-
-bool expectHugePages()
-{
-  const char* off = std::getenv("OSM_NO_HUGE_PAGES");
-  return !off || !*off || std::string(off) == "0";
 }
 
 /// Whether large blocks should get their own mappings in this environment.

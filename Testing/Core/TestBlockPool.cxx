@@ -1,0 +1,185 @@
+// The block pool serves medium blocks from huge-page chunks while a Reuse
+// scope lives; outside one, or with huge pages off, operator new does. Its
+// speed is measured by the benchmarks; these tests check where blocks come
+// from, that freed ones are reused, and that no block or chunk is lost or
+// given back while in use.
+
+#include "BlockPool.h"
+#include "HugePages.h"
+#include "MemoryTestUtils.h"
+
+#include <gtest/gtest.h>
+
+#if defined(OSM_ADDRESS_SANITIZER)
+#include <sanitizer/asan_interface.h>
+#endif
+
+#include <cstdint>
+#include <fstream>
+#include <string>
+
+namespace osm
+{
+namespace
+{
+
+constexpr std::size_t kKiB = 1024;
+
+/// A medium block that takes this many KiB of its chunk, filled with c (a
+/// little less than that many KiB, for AddressSanitizer's red zone).
+Array<char> block(std::size_t kib, char c)
+{
+  return Array<char>(kib * kKiB - 100, c);
+}
+
+/// Whether p lies in a huge-page chunk of the pool's (advised, 2 MiB aligned).
+bool inChunk(const void* p)
+{
+  return mappingFlags(p).find(" hg") != std::string::npos;
+}
+
+/// Opens a scope and asks for the blocks that operator new serves in every
+/// scope, so that the next medium block comes from a chunk.
+struct PoolScope
+{
+  pages::Reuse reuse;
+  Array<char> first = block(250, 'w');
+};
+
+bool poolExpected()
+{
+  return expectHugePages() && std::ifstream("/proc/self/smaps").good();
+}
+
+TEST(BlockPool, OutsideAScopeMediumBlocksComeFromOperatorNew)
+{
+  const std::size_t before = pool::chunks();
+  EXPECT_EQ(pool::take(64 * kKiB), nullptr);
+  Array<char> a = block(64, 'a');
+  EXPECT_EQ(pool::chunks(), before);
+  EXPECT_FALSE(pool::give(a.data(), a.size())) << "an operator new block is not the pool's";
+}
+
+TEST(BlockPool, TheFirstBlocksOfAScopeComeFromOperatorNewThenFromAChunk)
+{
+  if (!poolExpected())
+    GTEST_SKIP() << "huge pages off, or no /proc/self/smaps";
+  const std::size_t before = pool::chunks();
+  const pages::Reuse reuse;
+  Array<char> early = block(200, 'e');
+  EXPECT_EQ(pool::chunks(), before) << "the first 256 KiB of a scope";
+  Array<char> pooled = block(100, 'p');
+  EXPECT_EQ(pool::chunks(), before + 1);
+  EXPECT_TRUE(inChunk(pooled.data()));
+  EXPECT_EQ(reinterpret_cast<std::uintptr_t>(pooled.data()) % (2 * kKiB * kKiB), 0u)
+    << "the front of a fresh chunk";
+  // Freed inside the scope, an operator new block still goes back to it.
+  early = Array<char>();
+  EXPECT_EQ(pooled.back(), 'p');
+}
+
+TEST(BlockPool, FreedBlocksAreReusedAndMergeWithinTheirChunk)
+{
+  if (!poolExpected())
+    GTEST_SKIP() << "huge pages off, or no /proc/self/smaps";
+  const std::size_t before = pool::chunks();
+  PoolScope scope;
+  Array<char> a = block(64, 'a'), b = block(64, 'b'), c = block(64, 'c');
+  EXPECT_EQ(b.data(), a.data() + 64 * kKiB) << "carved one after the other";
+  EXPECT_EQ(c.data(), b.data() + 64 * kKiB);
+  char* first = a.data();
+  a = Array<char>();
+  Array<char> again = block(60, 'x'); // rounds up to the same 64 KiB
+  EXPECT_EQ(again.data(), first) << "a freed block is handed out again";
+  again = Array<char>();
+  b = Array<char>();
+  Array<char> both = block(128, 'y');
+  EXPECT_EQ(both.data(), first) << "adjacent freed blocks merge";
+  EXPECT_EQ(c.front(), 'c');
+  EXPECT_EQ(pool::chunks(), before + 1);
+}
+
+TEST(BlockPool, AChunkIsGivenBackWhenItsScopeEndsOrItsLastBlockIsFreed)
+{
+  if (!poolExpected())
+    GTEST_SKIP() << "huge pages off, or no /proc/self/smaps";
+  const std::size_t before = pool::chunks();
+  const char* freed = nullptr;
+  Array<char> outlives;
+  {
+    PoolScope scope;
+    Array<char> inside = block(100, 'i');
+    freed = inside.data();
+    outlives = block(100, 'o');
+    EXPECT_EQ(pool::chunks(), before + 1);
+  }
+  // The chunk stays mapped while a block in it lives, whole and writable.
+  EXPECT_EQ(pool::chunks(), before + 1);
+  EXPECT_FALSE(mappingFlags(freed).empty()) << "its addresses stay the chunk's";
+  for (char ch : outlives)
+    ASSERT_EQ(ch, 'o');
+  outlives.assign(outlives.size(), 'z');
+  const char* last = outlives.data();
+  outlives = Array<char>();
+  EXPECT_EQ(pool::chunks(), before);
+  EXPECT_TRUE(mappingFlags(last).empty()) << "given back with its last block";
+  {
+    PoolScope scope;
+    Array<char> inside = block(100, 'i');
+    last = inside.data();
+  }
+  EXPECT_EQ(pool::chunks(), before);
+  EXPECT_TRUE(mappingFlags(last).empty()) << "given back when the scope ends";
+}
+
+TEST(BlockPool, BlocksBelowOrAboveTheMediumSizesAreNotPooled)
+{
+  if (!poolExpected())
+    GTEST_SKIP() << "huge pages off, or no /proc/self/smaps";
+  const std::size_t before = pool::chunks();
+  PoolScope scope;
+  EXPECT_EQ(pool::take(pool::kPooledBytes - 1), nullptr);
+  EXPECT_EQ(pool::take(pages::kOwnMappingBytes), nullptr);
+  Array<char> small(pool::kPooledBytes - 1, 's');
+  Array<char> large(pages::kOwnMappingBytes, 'l');
+  EXPECT_FALSE(inChunk(small.data()));
+  EXPECT_EQ(pool::chunks(), before);
+}
+
+TEST(BlockPool, TurnedOffWithHugePages)
+{
+  if (expectHugePages())
+    GTEST_SKIP() << "run with OSM_NO_HUGE_PAGES=1 (its own CTest entry)";
+  const std::size_t before = pool::chunks();
+  PoolScope scope;
+  EXPECT_EQ(pool::take(100 * kKiB), nullptr);
+  Array<char> a = block(100, 'a');
+  EXPECT_EQ(pool::chunks(), before);
+}
+
+#if defined(OSM_ADDRESS_SANITIZER)
+// Past a live pooled block, and all of a freed one, the bytes are poisoned.
+TEST(BlockPool, UnderAddressSanitizerOnlyLiveBlocksAreAddressable)
+{
+  if (!poolExpected())
+    GTEST_SKIP() << "huge pages off";
+  PoolScope scope;
+  const std::size_t bytes = 70 * kKiB + 3;
+  char* p = nullptr;
+  {
+    Array<char> v(bytes, 'v');
+    p = v.data();
+    ASSERT_TRUE(inChunk(p));
+    EXPECT_EQ(__asan_region_is_poisoned(p, bytes), nullptr);
+    EXPECT_TRUE(__asan_address_is_poisoned(p + bytes));
+  }
+  EXPECT_TRUE(__asan_address_is_poisoned(p)) << "a freed block kept for reuse";
+  Array<char> w(bytes - 7, 'w');
+  ASSERT_EQ(w.data(), p);
+  EXPECT_EQ(__asan_region_is_poisoned(p, bytes - 7), nullptr);
+  EXPECT_TRUE(__asan_address_is_poisoned(p + bytes - 7));
+}
+#endif
+
+} // namespace
+} // namespace osm
