@@ -18,7 +18,7 @@ namespace
 {
 constexpr std::size_t kSmallPage = std::size_t{ 4 } << 10;
 constexpr std::size_t kHugePage = std::size_t{ 2 } << 20;
-constexpr std::size_t kOperatorNewBytes = std::size_t{ 256 } << 10;
+constexpr std::size_t kFirstPooledBytes = std::size_t{ 64 } << 10;
 
 /// Whole small pages holding the bytes and, under AddressSanitizer, the red zone.
 std::size_t blockSize(std::size_t bytes)
@@ -44,7 +44,7 @@ struct Pool
 {
   std::mutex mutex;
   int scopes = 0;
-  std::size_t requestedThisScope = 0; // bytes of the medium blocks asked for
+  bool pooling = false; // since the scope's first block of kFirstPooledBytes or more
   std::vector<Chunk> chunks;
   std::vector<Range> free; // in chunks, only while a scope lives; merged within a chunk
   std::atomic<std::size_t> mapped{ 0 }; // chunks.size(), read without the lock
@@ -161,11 +161,11 @@ void* take(std::size_t bytes)
   if (pl.scopes == 0)
     return nullptr;
   // A fresh huge page costs about as much as 10 to 20 small-page faults
-  // (60-220 us against 11 us on the benchmark machine): the first blocks of a
-  // call come from operator new, and only a call that asks for more (a mesh
-  // of more than about 500 triangles) maps chunks.
-  pl.requestedThisScope += size;
-  if (pl.requestedThisScope <= kOperatorNewBytes)
+  // (60-220 us against 11 us on the benchmark machine): a chunk pays only in a
+  // mesh large enough to need a block of 64 KiB (a few thousand triangles),
+  // and the blocks before the first such one come from operator new.
+  pl.pooling = pl.pooling || size >= kFirstPooledBytes;
+  if (!pl.pooling)
     return nullptr;
   char* p = takeFree(pl, size);
   if (p)
@@ -217,7 +217,7 @@ void openScope()
   Pool& pl = pool();
   const std::lock_guard<std::mutex> lock(pl.mutex);
   if (pl.scopes++ == 0)
-    pl.requestedThisScope = 0;
+    pl.pooling = false;
 }
 
 void closeScope() noexcept

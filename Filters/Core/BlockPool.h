@@ -7,9 +7,10 @@
 // random-segments 1e3 spent a third of its time in 240 page faults. While a
 // pages::Reuse scope lives, such blocks come instead from chunks of the pool's
 // own, each one 2 MiB huge page, and freed blocks are handed out again. The
-// first 256 KiB asked for in a scope still come from operator new, so that
-// the smallest meshes do not clear a huge page for a few blocks. Outside a
-// scope, and with huge pages turned off, operator new serves them all.
+// blocks asked for in a scope before its first one of 64 KiB or more still
+// come from operator new, so that small meshes do not clear a huge page for a
+// few blocks. Outside a scope, and with huge pages turned off, operator new
+// serves them all.
 //
 // A block handed out in a scope may outlive it (a Result's arrays): its chunk
 // then stays mapped, its free parts given back to the kernel, until its last

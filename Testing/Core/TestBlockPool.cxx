@@ -38,12 +38,12 @@ bool inChunk(const void* p)
   return mappingFlags(p).find(" hg") != std::string::npos;
 }
 
-/// Opens a scope and asks for the blocks that operator new serves in every
-/// scope, so that the next medium block comes from a chunk.
+/// Opens a scope and asks for a block of 64 KiB, so that the pool serves
+/// every medium block from then on.
 struct PoolScope
 {
   pages::Reuse reuse;
-  Array<char> first = block(250, 'w');
+  Array<char> first = block(64, 'w');
 };
 
 bool poolExpected()
@@ -66,16 +66,19 @@ TEST(BlockPool, TheFirstBlocksOfAScopeComeFromOperatorNewThenFromAChunk)
     GTEST_SKIP() << "huge pages off, or no /proc/self/smaps";
   const std::size_t before = pool::chunks();
   const pages::Reuse reuse;
-  Array<char> early = block(200, 'e');
-  EXPECT_EQ(pool::chunks(), before) << "the first 256 KiB of a scope";
-  Array<char> pooled = block(100, 'p');
-  EXPECT_EQ(pool::chunks(), before + 1);
-  EXPECT_TRUE(inChunk(pooled.data()));
-  EXPECT_EQ(reinterpret_cast<std::uintptr_t>(pooled.data()) % (2 * kKiB * kKiB), 0u)
+  Array<char> small = block(60, 's');
+  EXPECT_EQ(pool::chunks(), before) << "before the scope's first block of 64 KiB";
+  EXPECT_FALSE(inChunk(small.data()));
+  Array<char> first = block(64, 'f');
+  EXPECT_EQ(pool::chunks(), before + 1) << "from the scope's first block of 64 KiB on";
+  EXPECT_TRUE(inChunk(first.data()));
+  EXPECT_EQ(reinterpret_cast<std::uintptr_t>(first.data()) % (2 * kKiB * kKiB), 0u)
     << "the front of a fresh chunk";
-  // Freed inside the scope, an operator new block still goes back to it.
-  early = Array<char>();
-  EXPECT_EQ(pooled.back(), 'p');
+  Array<char> after = block(8, 'a');
+  EXPECT_EQ(after.data(), first.data() + 64 * kKiB) << "any medium block after it";
+  // Freed inside the scope, operator new's block still goes back to it.
+  small = Array<char>();
+  EXPECT_EQ(after.back(), 'a');
 }
 
 TEST(BlockPool, FreedBlocksAreReusedAndMergeWithinTheirChunk)
@@ -143,7 +146,7 @@ TEST(BlockPool, BlocksBelowOrAboveTheMediumSizesAreNotPooled)
   Array<char> small(pool::kPooledBytes - 1, 's');
   Array<char> large(pages::kOwnMappingBytes, 'l');
   EXPECT_FALSE(inChunk(small.data()));
-  EXPECT_EQ(pool::chunks(), before);
+  EXPECT_EQ(pool::chunks(), before + 1) << "the chunk of the scope's first block only";
 }
 
 TEST(BlockPool, TurnedOffWithHugePages)
