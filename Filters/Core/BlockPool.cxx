@@ -1,5 +1,6 @@
 #include "BlockPool.h"
 
+#include "FreeRanges.h"
 #include "HugePages.h"
 
 #include <atomic>
@@ -26,17 +27,10 @@ std::size_t blockSize(std::size_t bytes)
   return (bytes + pages::kRedZoneBytes + kSmallPage - 1) & ~(kSmallPage - 1);
 }
 
-struct Range
-{
-  char* p;
-  std::size_t size;
-  bool holds(const char* q) const { return q >= p && q < p + size; }
-};
-
 /// A mapping of the pool's and the bytes of it handed out and not yet freed.
 struct Chunk
 {
-  Range range;
+  AddressRange range;
   std::size_t live;
 };
 
@@ -46,7 +40,7 @@ struct Pool
   int scopes = 0;
   bool pooling = false; // since the scope's first block of kFirstPooledBytes or more
   std::vector<Chunk> chunks;
-  std::vector<Range> free; // in chunks, only while a scope lives; merged within a chunk
+  FreeRanges free; // in chunks, only while a scope lives; merged within a chunk
   std::atomic<std::size_t> mapped{ 0 }; // chunks.size(), read without the lock
 };
 
@@ -72,7 +66,7 @@ void forget(Pool& pl, const Chunk* c)
 
 /// Gives the memory of a range in a chunk back to the kernel; the addresses stay
 /// the chunk's, so that nothing else is mapped where the pool's blocks may lie.
-void release(const Range& r) noexcept
+void release(const AddressRange& r) noexcept
 {
 #if defined(__linux__)
   madvise(r.p, r.size, MADV_DONTNEED);
@@ -81,49 +75,12 @@ void release(const Range& r) noexcept
 #endif
 }
 
-/// The front of the smallest free range of at least size bytes, or null.
-char* takeFree(Pool& pl, std::size_t size)
-{
-  Range* best = nullptr;
-  for (Range& r : pl.free)
-    if (r.size >= size && (!best || r.size < best->size))
-      best = &r;
-  if (!best)
-    return nullptr;
-  char* p = best->p;
-  best->p += size;
-  best->size -= size;
-  if (best->size == 0)
-    pl.free.erase(pl.free.begin() + (best - pl.free.data()));
-  return p;
-}
-
 /// Adds a freed range, merged with the free ranges of its chunk that it touches.
 /// False if there is no memory to note it in.
-bool keepFree(Pool& pl, const Chunk& c, Range freed) noexcept
+bool keepFree(Pool& pl, const Chunk& c, AddressRange freed) noexcept
 {
-  try
-  {
-    pl.free.reserve(pl.free.size() + 1); // then nothing below throws
-  }
-  catch (const std::bad_alloc&)
-  {
-    return false;
-  }
-  for (std::size_t i = 0; i < pl.free.size();)
-  {
-    const Range r = pl.free[i];
-    const bool touches = r.p + r.size == freed.p || freed.p + freed.size == r.p;
-    if (touches && c.range.holds(r.p)) // chunks may touch: never merge across them
-    {
-      freed = { std::min(r.p, freed.p), r.size + freed.size };
-      pl.free.erase(pl.free.begin() + static_cast<std::ptrdiff_t>(i));
-    }
-    else
-      ++i;
-  }
-  pl.free.push_back(freed);
-  return true;
+  // Chunks may touch: never merge across them.
+  return pl.free.add(freed, [&c](const AddressRange& r) { return c.range.holds(r.p); });
 }
 
 /// A new chunk (one huge page) for a block of size bytes, its front handed out
@@ -133,7 +90,6 @@ char* newChunk(Pool& pl, std::size_t size)
   try
   {
     pl.chunks.reserve(pl.chunks.size() + 1);
-    pl.free.reserve(pl.free.size() + 1);
   }
   catch (const std::bad_alloc&)
   {
@@ -145,7 +101,8 @@ char* newChunk(Pool& pl, std::size_t size)
   pl.chunks.push_back({ { p, kHugePage }, size });
   pl.mapped.store(pl.chunks.size(), std::memory_order_release);
   pages::poison(p + size, kHugePage - size);
-  pl.free.push_back({ p + size, kHugePage - size });
+  // The rest is free (lost for reuse only if there is no memory to note it).
+  keepFree(pl, pl.chunks.back(), { p + size, kHugePage - size });
   return p;
 }
 
@@ -167,7 +124,7 @@ void* take(std::size_t bytes)
   pl.pooling = pl.pooling || size >= kFirstPooledBytes;
   if (!pl.pooling)
     return nullptr;
-  char* p = takeFree(pl, size);
+  char* p = pl.free.takeSmallestHolding(size);
   if (p)
     chunkHolding(pl, p)->live += size;
   else if (!(p = newChunk(pl, size)))
@@ -238,7 +195,7 @@ void closeScope() noexcept
   }
   // Chunks with blocks that outlive the scope keep their addresses, not the
   // memory of their free parts.
-  for (const Range& r : pl.free)
+  for (const AddressRange& r : pl.free.ranges())
     if (chunkHolding(pl, r.p))
       release(r);
   pl.free.clear();

@@ -1,11 +1,11 @@
 #include "HugePages.h"
 
-#include <algorithm>
+#include "FreeRanges.h"
+
 #include <cstdint>
 #include <cstdlib>
 #include <mutex>
 #include <string_view>
-#include <vector>
 
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -35,19 +35,12 @@ void* handOut(void* p, std::size_t bytes, std::size_t size)
   return p;
 }
 
-/// A range of whole huge pages, freed and kept mapped for reuse.
-struct Range
-{
-  char* p;
-  std::size_t size;
-};
-
 /// The freed ranges kept while a pages::Reuse lives; adjacent ones are merged.
 struct Kept
 {
   std::mutex mutex;
   int scopes = 0;
-  std::vector<Range> ranges;
+  FreeRanges ranges; // whole huge pages, freed and kept mapped for reuse
 };
 
 Kept& kept()
@@ -59,55 +52,11 @@ Kept& kept()
 /// Gives every kept range back to the kernel.
 void giveBackAll(Kept& k) noexcept
 {
-  for (const Range& r : k.ranges)
+  for (const AddressRange& r : k.ranges.ranges())
     pages::unmapNow(r.p, r.size);
   k.ranges.clear();
 }
 
-/// The front of the smallest kept range of at least size bytes (the rest stays
-/// kept), or null.
-void* takeKept(Kept& k, std::size_t size)
-{
-  Range* best = nullptr;
-  for (Range& r : k.ranges)
-    if (r.size >= size && (!best || r.size < best->size))
-      best = &r;
-  if (!best)
-    return nullptr;
-  char* p = best->p;
-  best->p += size;
-  best->size -= size;
-  if (best->size == 0)
-    k.ranges.erase(k.ranges.begin() + (best - k.ranges.data()));
-  return p;
-}
-
-/// Adds a freed range, merged with the kept ranges it touches; false if there
-/// is no memory to note it in.
-bool keep(Kept& k, Range freed) noexcept
-{
-  try
-  {
-    k.ranges.reserve(k.ranges.size() + 1); // then nothing below throws
-  }
-  catch (const std::bad_alloc&)
-  {
-    return false;
-  }
-  for (std::size_t i = 0; i < k.ranges.size();)
-  {
-    const Range r = k.ranges[i];
-    if (r.p + r.size == freed.p || freed.p + freed.size == r.p)
-    {
-      freed = { std::min(r.p, freed.p), r.size + freed.size };
-      k.ranges.erase(k.ranges.begin() + static_cast<std::ptrdiff_t>(i));
-    }
-    else
-      ++i;
-  }
-  k.ranges.push_back(freed);
-  return true;
-}
 } // namespace
 
 bool hugePagesWanted()
@@ -195,7 +144,7 @@ void* map(std::size_t bytes)
   {
     Kept& k = kept();
     const std::lock_guard<std::mutex> lock(k.mutex);
-    if (void* p = takeKept(k, size))
+    if (void* p = k.ranges.takeSmallestHolding(size))
       return handOut(p, bytes, size);
     // Nothing kept fits: give it all back before mapping more, so that the
     // mappings never exceed the largest total the live arrays have had.
@@ -216,7 +165,8 @@ void unmap(void* p, std::size_t bytes) noexcept
   const std::size_t size = mappedSize(bytes);
   Kept& k = kept();
   std::unique_lock<std::mutex> lock(k.mutex);
-  if (k.scopes == 0 || !keep(k, { static_cast<char*>(p), size }))
+  const auto any = [](const AddressRange&) { return true; };
+  if (k.scopes == 0 || !k.ranges.add({ static_cast<char*>(p), size }, any))
   {
     lock.unlock();
     unmapNow(p, size);
@@ -230,7 +180,7 @@ std::size_t keptBytes()
   Kept& k = kept();
   const std::lock_guard<std::mutex> lock(k.mutex);
   std::size_t bytes = 0;
-  for (const Range& r : k.ranges)
+  for (const AddressRange& r : k.ranges.ranges())
     bytes += r.size;
   return bytes;
 }
