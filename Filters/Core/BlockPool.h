@@ -30,8 +30,8 @@ namespace pool
 constexpr std::size_t kPooledBytes = std::size_t{ 4 } << 10;
 
 /// A block of at least bytes (rounded up to whole small pages) while a scope
-/// lives, or null: the caller then takes it from operator new. Throws
-/// std::bad_alloc if a chunk cannot be mapped.
+/// lives and pools, or null: the caller then takes it from operator new (also
+/// when a chunk cannot be mapped).
 void* take(std::size_t bytes);
 
 /// Frees a block if it is the pool's (then returns true), else returns false.
