@@ -15,8 +15,14 @@
 #endif
 
 #include <cstdint>
+#include <cstdlib>
 #include <fstream>
 #include <string>
+
+#if defined(__GLIBC__)
+#include <malloc.h>
+#include <sys/resource.h>
+#endif
 
 namespace osm
 {
@@ -148,6 +154,56 @@ TEST(BlockPool, BlocksBelowOrAboveTheMediumSizesAreNotPooled)
   EXPECT_FALSE(inChunk(small.data()));
   EXPECT_EQ(pool::chunks(), before + 1) << "the chunk of the scope's first block only";
 }
+
+#if defined(__GLIBC__) && !defined(OSM_ADDRESS_SANITIZER)
+/// The process's address space now, in bytes (VmSize), or 0 if unknown.
+std::size_t addressSpace()
+{
+  std::ifstream status("/proc/self/status");
+  for (std::string line; std::getline(status, line);)
+    if (line.rfind("VmSize:", 0) == 0)
+      return std::stoul(line.substr(7)) * kKiB;
+  return 0;
+}
+
+/// Run in a child process: caps the address space so that no chunk can be
+/// mapped, then asks for medium blocks in a scope. Exits with 0 if they came
+/// from operator new and hold their values, else with the failed check's code.
+void mediumBlocksWithoutRoomForAChunk()
+{
+  // Room in the heap first, which malloc keeps (no trimming) and serves
+  // blocks of up to 64 MiB from, instead of mapping them.
+  mallopt(M_MMAP_THRESHOLD, 64 << 20);
+  mallopt(M_TRIM_THRESHOLD, 1 << 30);
+  std::free(std::malloc(std::size_t{ 8 } << 20));
+  const std::size_t before = pool::chunks();
+  const rlimit cap{ addressSpace() + (std::size_t{ 1 } << 20), RLIM_INFINITY };
+  if (cap.rlim_cur <= (1u << 20) || setrlimit(RLIMIT_AS, &cap) != 0)
+    std::_Exit(2);
+  if (pages::mapHuge(std::size_t{ 2 } << 20))
+    std::_Exit(3); // the cap did not stop a chunk: this would test nothing
+  {
+    pages::Reuse reuse;
+    Array<char> first = block(64, 'f');
+    Array<char> second = block(200, 's');
+    first.resize(first.size() + 100 * kKiB, 'g'); // grows by a new block
+    if (pool::chunks() != before || inChunk(first.data()) || inChunk(second.data()))
+      std::_Exit(4);
+    if (first.front() != 'f' || first.back() != 'g' || second[150 * kKiB] != 's')
+      std::_Exit(5);
+  }
+  std::_Exit(pool::chunks() == before ? 0 : 6);
+}
+
+// take() falls back to operator new when mmap fails (address space exhausted,
+// or a limit): the caller's blocks must still come, from the heap.
+TEST(BlockPool, WhenNoChunkCanBeMappedBlocksComeFromOperatorNew)
+{
+  if (!poolExpected())
+    GTEST_SKIP() << "huge pages off, or no /proc/self/smaps";
+  EXPECT_EXIT(mediumBlocksWithoutRoomForAChunk(), ::testing::ExitedWithCode(0), "");
+}
+#endif
 
 TEST(BlockPool, TurnedOffWithHugePages)
 {
