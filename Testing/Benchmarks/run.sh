@@ -12,13 +12,13 @@
 #
 # It first installs the Debian packages it needs that are missing: the
 # project's own (.ci/common.sh) and, for the suite only, libcgal-dev (the CGAL
-# drivers), valgrind (the profile), python3-matplotlib (the plot) and time (GNU
+# drivers), valgrind and linux-perf (the profiles), python3-matplotlib (the plot) and time (GNU
 # time, the osm-mesh memory figure). The plugin never links CGAL.
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 source "$root/.ci/common.sh"
-OSM_PACKAGES+=(libcgal-dev valgrind python3-matplotlib time)
+OSM_PACKAGES+=(libcgal-dev valgrind linux-perf python3-matplotlib time)
 osm_install_packages
 build="${OSM_BENCH_BUILD:-$root/build-bench}"
 vtk_dir="${VTK_DIR:-/usr/lib/x86_64-linux-gnu/cmake/paraview-5.11/vtk}"

@@ -529,6 +529,129 @@ def run_profile(args):
     return note
 
 
+# The sampled profile: perf samples wall time where callgrind counts
+# instructions, so it shows what instruction counts cannot: cache misses, and
+# the kernel clearing fresh pages on their first touch.
+SAMPLED_INPUT = "random-segments:120000:1"  # about 10^6 output triangles
+SAMPLED_PHASES = [  # (phase, function-name prefixes after "osm::", anonymous namespaces dropped)
+    ("clean", ("cleanPslg", "exactRepresentatives", "mergeDuplicates", "nearRepresentatives",
+               "checkFinite", "mapSegments", "Mesher::mergeEqualPoints", "Mesher::splitCrossings")),
+    ("overlay", ("Refiner::", "Triangulation::", "buildOverlay", "hilbertOrder", "incircle",
+                 "orient", "SizeQueue")),
+    ("stitch", ("compactOverlay", "walkSegments", "stitch", "OverlayEdges::", "Walker::")),
+    ("complete", ("complete", "buildRotation", "triangulateMinMaxAngle")),
+    ("domain", ("carveDomain", "adjacency", "convexHull", "hullBoundary", "hullCandidates",
+                "components", "TriangleGrid", "segmentsEncloseRegion")),
+    ("output", ("Mesher::buildOutput", "angleExtremes")),
+]
+
+
+def sampled_phase(dso, sym):
+    """The phase a sampled function belongs to, from its name (flat profile, no call graph)."""
+    if sym.startswith("[k]"):
+        return "kernel"
+    name = sym[3:].strip().replace("(anonymous namespace)::", "")
+    if name.startswith("std::") and "osm::" in name:
+        name = name[name.index("osm::"):]  # a sort's comparator names its caller
+        for phase, prefixes in SAMPLED_PHASES:
+            if any(("osm::" + q) in name for q in prefixes):
+                return phase
+        return "other"
+    if name.startswith("osm::"):
+        name = name[len("osm::"):]
+        for phase, prefixes in SAMPLED_PHASES:
+            if name.startswith(prefixes):
+                return phase
+    return "other"
+
+
+def run_sampled_profile(args):
+    """perf record (cpu-clock samples) of one run of about 10^6 output triangles."""
+    exe = os.path.join(args.build, "bench", "bench_osm")
+    note = {"input": SAMPLED_INPUT}
+    git = subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"],
+                         capture_output=True, text=True)
+    if git.returncode == 0:
+        note["commit"] = git.stdout.strip()
+    perf = shutil.which("perf")
+    if not perf:
+        note["error"] = "perf is not installed (Debian package linux-perf)"
+        return note
+    out = os.path.join(args.build, "perf.bench_osm.data")
+    p = subprocess.run([perf, "record", "-q", "-F", "4000", "-e", "cpu-clock", "-o", out, "--",
+                        exe, SAMPLED_INPUT, "--no-check"],
+                       capture_output=True, text=True, timeout=600)
+    if p.returncode != 0:
+        note["error"] = "perf record failed: " + tail(p.stderr)
+        return note
+    for line in p.stdout.splitlines():
+        if line.startswith("{"):
+            note["run"] = json.loads(line)
+    r = subprocess.run([perf, "report", "-i", out, "--no-children", "--stdio", "--sort",
+                        "dso,sym", "--percent-limit", "0.05"],
+                       capture_output=True, text=True, timeout=600)
+    rows = []
+    counts = subprocess.run([perf, "report", "-i", out, "--stdio", "-n", "--sort", "dso"],
+                            capture_output=True, text=True, timeout=600)
+    note["samples"] = sum(int(line.split()[1]) for line in counts.stdout.splitlines()
+                          if not line.startswith("#") and len(line.split()) > 2
+                          and line.split()[0].endswith("%") and line.split()[1].isdigit())
+    for line in r.stdout.splitlines():
+        if line.startswith("#") or "%" not in line:
+            continue
+        parts = line.split(None, 2)
+        if len(parts) == 3 and parts[0].endswith("%"):
+            rows.append((float(parts[0].rstrip("%")), parts[1], parts[2].strip()))
+    if not rows:
+        note["error"] = "perf report gave no samples: " + tail(r.stderr)
+        return note
+    note["rows"] = rows
+    note["kernel_samples"] = any(sym.startswith("[k]") for _, _, sym in rows)
+    return note
+
+
+def sampled_profile_text(p):
+    if not p:
+        return ""
+    if p.get("error"):
+        return "Sampled profile not available: %s." % p["error"]
+    rows = p["rows"]
+    phases = {}
+    for share, dso, sym in rows:
+        ph = sampled_phase(dso, sym)
+        phases[ph] = phases.get(ph, 0.0) + share
+    kernel = [(share, sym[3:].strip()) for share, _, sym in rows if sym.startswith("[k]")]
+    L = ["Sampled profile: `perf record -F 4000 -e cpu-clock` (the samples are of wall time, "
+         "so cache misses and the kernel's work count, which callgrind's instructions do "
+         "not) on `bench_osm %s` (%s output triangles, %s samples; the whole process, the "
+         "generator included%s). Share of the samples by phase (each function assigned to "
+         "its phase by name; *other*: library calls and sorts, whose callers a flat profile "
+         "does not name):" % (p["input"], fmt_int(p.get("run", {}).get("out_triangles")),
+                              fmt_int(p.get("samples")),
+                              "; at commit %s" % p["commit"] if p.get("commit") else ""), "",
+         "| phase | share of samples |", "|---|---:|"]
+    order = [ph for ph, _ in SAMPLED_PHASES] + ["kernel", "other"]
+    for ph in order:
+        if ph in phases:
+            label = ph
+            if ph == "kernel" and kernel:
+                label = "kernel (largest: `%s`, %.1f%%)" % (kernel[0][1], kernel[0][0])
+            L.append("| %s | %.1f%% |" % (label, phases[ph]))
+    if not p.get("kernel_samples"):
+        L += ["", "No kernel samples: `perf_event_paranoid` withholds them from this user."]
+    L += ["", "Its most sampled functions:", "", "| function | phase | share |", "|---|---|---:|"]
+    for share, dso, sym in rows[:12]:
+        name = sym[3:].strip().replace("(anonymous namespace)", "anon")
+        if len(name) > 70:
+            name = name[:67] + "..."
+        L.append("| `%s` | %s | %.1f%% |" % (name, sampled_phase(dso, sym), share))
+    if kernel and kernel[0][1].startswith("clear_page"):
+        L += ["", "`%s` is the kernel clearing fresh memory at its first touch (huge pages "
+              "included); on this virtual machine a first touch also waits for the host to "
+              "back the page, which is why it is this large." % kernel[0][1]]
+    return "\n".join(L)
+
+
 def annotate(path, inclusive):
     """{function: instructions} from callgrind_annotate (symbols shortened)."""
     cmd = ["callgrind_annotate", "--threshold=100", "--inclusive=" + ("yes" if inclusive else "no"),
@@ -1040,6 +1163,9 @@ def write_report(data, profile, md_path, png_path, plot_note):
     if profile:
         w(profile_text(profile))
         w("")
+    if data.get("sampled_profile"):
+        w(sampled_profile_text(data["sampled_profile"]))
+        w("")
     w(CHANGES_FROM_PROFILES)
     w("")
     w("## Results")
@@ -1381,12 +1507,17 @@ def main():
     p.add_argument("--timeout", type=float, default=TIMEOUT, help="seconds per run (120)")
     p.add_argument("--report-only", action="store_true",
                    help="rewrite the report from the saved results, run nothing")
-    p.add_argument("--no-profile", action="store_true", help="skip the callgrind profile")
+    p.add_argument("--no-profile", action="store_true",
+                   help="skip the profiles (callgrind and perf)")
     p.add_argument("--profile-only", default=None, metavar="OUT.json",
                    help="only run the callgrind profile and save it (its instruction counts "
                         "do not depend on the load, so it may run beside the suite)")
     p.add_argument("--profile-from", default=None, metavar="FILE.json",
                    help="with --report-only: take the profile from this file")
+    p.add_argument("--sampled-profile-only", default=None, metavar="OUT.json",
+                   help="only run the sampled (perf) profile and save it")
+    p.add_argument("--sampled-profile-from", default=None, metavar="FILE.json",
+                   help="with --report-only: take the sampled profile from this file")
     p.add_argument("--partial", default=None,
                    help="also save the results after every run to this file")
     p.add_argument("--tools", default="",
@@ -1403,6 +1534,10 @@ def main():
     if args.results is None:
         args.results = os.path.join(args.build, "bench", "results.json")
 
+    if args.sampled_profile_only:
+        with open(args.sampled_profile_only, "w") as f:
+            json.dump(run_sampled_profile(args), f, indent=1)
+        return
     if args.profile_only:
         with open(args.profile_only, "w") as f:
             json.dump(run_profile(args), f, indent=1)
@@ -1413,11 +1548,16 @@ def main():
         if args.profile_from:
             with open(args.profile_from) as f:
                 data["profile"] = json.load(f)
+        if args.sampled_profile_from:
+            with open(args.sampled_profile_from) as f:
+                data["sampled_profile"] = json.load(f)
     else:
         data = run_suite(args)
         if not args.no_profile:
             print("profiling bench_osm under callgrind ...", flush=True)
             data["profile"] = run_profile(args)
+            print("profiling bench_osm under perf ...", flush=True)
+            data["sampled_profile"] = run_sampled_profile(args)
         with open(args.results, "w") as f:
             json.dump(data, f, indent=1)
             f.write("\n")
