@@ -488,6 +488,18 @@ PHASE_FUNCTIONS = [  # (phase, function whose inclusive cost is the phase's)
 PROFILE_INPUT = "random-segments:30000:1"
 
 
+def profiled_run(cmd, tool, note, timeout):
+    """Runs a driver under a profiler: its JSON line in note["run"], or note["error"]."""
+    p = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
+    if p.returncode != 0:
+        note["error"] = "%s failed: %s" % (tool, tail(p.stderr))
+        return False
+    for line in p.stdout.splitlines():
+        if line.startswith("{"):
+            note["run"] = json.loads(line)
+    return True
+
+
 def run_profile(args):
     """callgrind on a smaller run (perf has no hardware counters on this machine)."""
     exe = os.path.join(args.build, "bench", "bench_osm")
@@ -504,16 +516,11 @@ def run_profile(args):
         return note
     out = os.path.join(args.build, "callgrind.bench_osm.out")
     t0 = time.monotonic()
-    p = subprocess.run(["valgrind", "--tool=callgrind", "--callgrind-out-file=" + out,
-                        exe, PROFILE_INPUT, "--no-check"],
-                       capture_output=True, text=True, timeout=1800)
+    done = profiled_run(["valgrind", "--tool=callgrind", "--callgrind-out-file=" + out,
+                         exe, PROFILE_INPUT, "--no-check"], "callgrind", note, 1800)
     note["seconds"] = time.monotonic() - t0
-    if p.returncode != 0:
-        note["error"] = "callgrind failed: " + tail(p.stderr)
+    if not done:
         return note
-    for line in p.stdout.splitlines():
-        if line.startswith("{"):
-            note["run"] = json.loads(line)
     inclusive = annotate(out, True)
     exclusive = annotate(out, False)
     total = inclusive.get("__total__", 0)
@@ -578,15 +585,9 @@ def run_sampled_profile(args):
         note["error"] = "perf is not installed (Debian package linux-perf)"
         return note
     out = os.path.join(args.build, "perf.bench_osm.data")
-    p = subprocess.run([perf, "record", "-q", "-F", "4000", "-e", "cpu-clock", "-o", out, "--",
-                        exe, SAMPLED_INPUT, "--no-check"],
-                       capture_output=True, text=True, timeout=600)
-    if p.returncode != 0:
-        note["error"] = "perf record failed: " + tail(p.stderr)
+    if not profiled_run([perf, "record", "-q", "-F", "4000", "-e", "cpu-clock", "-o", out, "--",
+                         exe, SAMPLED_INPUT, "--no-check"], "perf record", note, 600):
         return note
-    for line in p.stdout.splitlines():
-        if line.startswith("{"):
-            note["run"] = json.loads(line)
     r = subprocess.run([perf, "report", "-i", out, "--no-children", "--stdio", "--sort",
                         "dso,sym", "--percent-limit", "0.05"],
                        capture_output=True, text=True, timeout=600)
