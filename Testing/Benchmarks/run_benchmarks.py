@@ -536,9 +536,10 @@ def run_profile(args):
     return note
 
 
-# The sampled profile: perf samples wall time where callgrind counts
-# instructions, so it shows what instruction counts cannot: cache misses, and
-# the kernel clearing fresh pages on their first touch.
+# The sampled profile: perf samples the process's CPU time (its own and the
+# kernel's on its behalf) where callgrind counts instructions, so it shows what
+# instruction counts cannot: cache misses, and the kernel clearing fresh pages
+# on their first touch.
 SAMPLED_INPUT = "random-segments:120000:1"  # about 10^6 output triangles
 SAMPLED_PHASES = [  # (phase, function-name prefixes after "osm::", anonymous namespaces dropped)
     ("clean", ("cleanPslg", "exactRepresentatives", "mergeDuplicates", "nearRepresentatives",
@@ -553,7 +554,7 @@ SAMPLED_PHASES = [  # (phase, function-name prefixes after "osm::", anonymous na
 ]
 
 
-def sampled_phase(dso, sym):
+def sampled_phase(sym):
     """The phase a sampled function belongs to, from its name (flat profile, no call graph)."""
     if sym.startswith("[k]"):
         return "kernel"
@@ -588,15 +589,15 @@ def run_sampled_profile(args):
     if not profiled_run([perf, "record", "-q", "-F", "4000", "-e", "cpu-clock", "-o", out, "--",
                          exe, SAMPLED_INPUT, "--no-check"], "perf record", note, 600):
         return note
-    r = subprocess.run([perf, "report", "-i", out, "--no-children", "--stdio", "--sort",
-                        "dso,sym", "--percent-limit", "0.05"],
-                       capture_output=True, text=True, timeout=600)
-    rows = []
     counts = subprocess.run([perf, "report", "-i", out, "--stdio", "-n", "--sort", "dso"],
                             capture_output=True, text=True, timeout=600)
     note["samples"] = sum(int(line.split()[1]) for line in counts.stdout.splitlines()
                           if not line.startswith("#") and len(line.split()) > 2
                           and line.split()[0].endswith("%") and line.split()[1].isdigit())
+    r = subprocess.run([perf, "report", "-i", out, "--no-children", "--stdio", "--sort",
+                        "dso,sym", "--percent-limit", "0.05"],
+                       capture_output=True, text=True, timeout=600)
+    rows = []  # (share in %, dso, "[.] symbol" or "[k] symbol")
     for line in r.stdout.splitlines():
         if line.startswith("#") or "%" not in line:
             continue
@@ -618,13 +619,13 @@ def sampled_profile_text(p):
         return "Sampled profile not available: %s." % p["error"]
     rows = p["rows"]
     phases = {}
-    for share, dso, sym in rows:
-        ph = sampled_phase(dso, sym)
+    for share, _, sym in rows:
+        ph = sampled_phase(sym)
         phases[ph] = phases.get(ph, 0.0) + share
     kernel = [(share, sym[3:].strip()) for share, _, sym in rows if sym.startswith("[k]")]
-    L = ["Sampled profile: `perf record -F 4000 -e cpu-clock` (the samples are of wall time, "
-         "so cache misses and the kernel's work count, which callgrind's instructions do "
-         "not) on `bench_osm %s` (%s output triangles, %s samples; the whole process, the "
+    L = ["Sampled profile: `perf record -F 4000 -e cpu-clock` (samples of the process's CPU "
+         "time, the kernel's on its behalf included, so cache misses and the kernel's work "
+         "count, which callgrind's instructions do not) on `bench_osm %s` (%s output triangles, %s samples; the whole process, the "
          "generator included%s). Share of the samples by phase (each function assigned to "
          "its phase by name; *other*: library calls and sorts, whose callers a flat profile "
          "does not name):" % (p["input"], fmt_int(p.get("run", {}).get("out_triangles")),
@@ -641,11 +642,11 @@ def sampled_profile_text(p):
     if not p.get("kernel_samples"):
         L += ["", "No kernel samples: `perf_event_paranoid` withholds them from this user."]
     L += ["", "Its most sampled functions:", "", "| function | phase | share |", "|---|---|---:|"]
-    for share, dso, sym in rows[:12]:
+    for share, _, sym in rows[:12]:
         name = sym[3:].strip().replace("(anonymous namespace)", "anon")
         if len(name) > 70:
             name = name[:67] + "..."
-        L.append("| `%s` | %s | %.1f%% |" % (name, sampled_phase(dso, sym), share))
+        L.append("| `%s` | %s | %.1f%% |" % (name, sampled_phase(sym), share))
     if kernel and kernel[0][1].startswith("clear_page"):
         L += ["", "`%s` is the kernel clearing fresh memory at its first touch (huge pages "
               "included); on this virtual machine a first touch also waits for the host to "
