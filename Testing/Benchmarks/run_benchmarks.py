@@ -555,21 +555,17 @@ SAMPLED_PHASES = [  # (phase, function-name prefixes after "osm::", anonymous na
 
 
 def sampled_phase(sym):
-    """The phase a sampled function belongs to, from its name (flat profile, no call graph)."""
+    """The phase a sampled function belongs to, from its name (flat profile, no call graph).
+    A library template (a sort) is placed by the first osm:: name in it, its comparator's."""
     if sym.startswith("[k]"):
         return "kernel"
-    name = sym[3:].strip().replace("(anonymous namespace)::", "")
-    if name.startswith("std::") and "osm::" in name:
-        name = name[name.index("osm::"):]  # a sort's comparator names its caller
-        for phase, prefixes in SAMPLED_PHASES:
-            if any(("osm::" + q) in name for q in prefixes):
-                return phase
+    name = sym[3:].replace("(anonymous namespace)::", "")
+    if "osm::" not in name:
         return "other"
-    if name.startswith("osm::"):
-        name = name[len("osm::"):]
-        for phase, prefixes in SAMPLED_PHASES:
-            if name.startswith(prefixes):
-                return phase
+    name = name[name.index("osm::") + len("osm::"):]
+    for phase, prefixes in SAMPLED_PHASES:
+        if name.startswith(prefixes):
+            return phase
     return "other"
 
 
@@ -608,7 +604,6 @@ def run_sampled_profile(args):
         note["error"] = "perf report gave no samples: " + tail(r.stderr)
         return note
     note["rows"] = rows
-    note["kernel_samples"] = any(sym.startswith("[k]") for _, _, sym in rows)
     return note
 
 
@@ -639,7 +634,7 @@ def sampled_profile_text(p):
             if ph == "kernel" and kernel:
                 label = "kernel (largest: `%s`, %.1f%%)" % (kernel[0][1], kernel[0][0])
             L.append("| %s | %.1f%% |" % (label, phases[ph]))
-    if not p.get("kernel_samples"):
+    if not kernel:
         L += ["", "No kernel samples: `perf_event_paranoid` withholds them from this user."]
     L += ["", "Its most sampled functions:", "", "| function | phase | share |", "|---|---|---:|"]
     for share, _, sym in rows[:12]:
