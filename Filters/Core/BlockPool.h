@@ -13,8 +13,8 @@
 // serves them all.
 //
 // A block handed out in a scope may outlive it (a Result's arrays): its chunk
-// then stays mapped, its free parts given back to the kernel, until its last
-// block is freed. A block is the pool's if it lies in one of its chunks, so
+// then stays mapped and whole (2 MiB resident, its free parts unused) until
+// its last block is freed. A block is the pool's if it lies in one of its chunks, so
 // operator new's blocks are never mistaken for the pool's.
 #ifndef osm_BlockPool_h
 #define osm_BlockPool_h

@@ -12,9 +12,9 @@
 namespace osm
 {
 
-/// The VmFlags of the mapping that holds address a (/proc/self/smaps), or ""
-/// where there is no such mapping or file.
-inline std::string mappingFlags(const void* a)
+/// The line starting with field of the mapping that holds address a
+/// (/proc/self/smaps), or "" where there is no such mapping or file.
+inline std::string mappingLine(const void* a, const std::string& field)
 {
   std::ifstream smaps("/proc/self/smaps");
   const auto at = reinterpret_cast<std::uintptr_t>(a);
@@ -26,10 +26,23 @@ inline std::string mappingFlags(const void* a)
     std::istringstream head(line);
     if (head >> std::hex >> lo >> dash >> hi && dash == '-')
       inside = lo <= at && at < hi;
-    else if (inside && line.rfind("VmFlags:", 0) == 0)
+    else if (inside && line.rfind(field, 0) == 0)
       return line;
   }
   return "";
+}
+
+/// The VmFlags of the mapping that holds address a, or "".
+inline std::string mappingFlags(const void* a)
+{
+  return mappingLine(a, "VmFlags:");
+}
+
+/// The resident KiB of the mapping that holds address a, or -1.
+inline long mappingRssKiB(const void* a)
+{
+  const std::string line = mappingLine(a, "Rss:");
+  return line.empty() ? -1 : std::stol(line.substr(4));
 }
 
 /// Whether OSM_NO_HUGE_PAGES leaves huge pages on (unset, empty or 0).
