@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <numeric>
+#include <optional>
 
 namespace osm
 {
@@ -234,6 +235,25 @@ private:
   Array<int> items;
 };
 
+/// The first triangle (lowest index) not removed whose closure contains q,
+/// or -1: what TriangleGrid::find returns, by a scan of all the triangles.
+int findByScan(const Array<Point>& P, const Array<Triangle>& tris, const Point& q,
+  const Array<int>& component, const Array<char>& removed)
+{
+  for (int t = 0; t < static_cast<int>(tris.size()); ++t)
+  {
+    if (removed[component[t]])
+      continue;
+    const Point &a = P[tris[t][0]], &b = P[tris[t][1]], &d = P[tris[t][2]];
+    if (q.x < std::min({ a.x, b.x, d.x }) || q.x > std::max({ a.x, b.x, d.x }) ||
+      q.y < std::min({ a.y, b.y, d.y }) || q.y > std::max({ a.y, b.y, d.y }))
+      continue;
+    if (orient2d(a, b, q) >= 0 && orient2d(b, d, q) >= 0 && orient2d(d, a, q) >= 0)
+      return t;
+  }
+  return -1;
+}
+
 } // namespace
 
 Carving carveDomain(const Array<Point>& P, const Array<Triangle>& tris,
@@ -251,10 +271,14 @@ Carving carveDomain(const Array<Point>& P, const Array<Triangle>& tris,
   Carving out;
   if (!holes.empty())
   {
-    const TriangleGrid grid(P, tris, component, removed);
+    // A few seeds are found faster by scanning than by building the grid.
+    std::optional<TriangleGrid> grid;
+    if (holes.size() > kHoleSeedsScanned)
+      grid.emplace(P, tris, component, removed);
     for (std::size_t h = 0; h < holes.size(); ++h)
     {
-      const int t = grid.find(holes[h], component, removed);
+      const int t = grid ? grid->find(holes[h], component, removed)
+                         : findByScan(P, tris, holes[h], component, removed);
       if (t >= 0)
         removed[component[t]] = 1;
       else

@@ -33,6 +33,11 @@ struct Carving
   Array<int> unusedHoles; ///< hole seeds outside the remaining triangles
 };
 
+/// Up to this many hole seeds, carveDomain finds the triangle under each one
+/// by a scan of the triangles; beyond it, by a grid of their bounding boxes
+/// (linear in the triangles and seeds). Both give the same triangle.
+constexpr std::size_t kHoleSeedsScanned = 8;
+
 /// removeExterior: drop triangles reachable from the box boundary without
 /// crossing a constrained edge. constrained holds (lo, hi) vertex pairs.
 /// known, the adjacency of the first triangles, must agree with them; it spares

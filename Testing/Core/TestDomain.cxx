@@ -114,6 +114,41 @@ TEST(Domain, KnownAdjacencyCarvesAsMatchingDoes)
     }
 }
 
+// Up to kHoleSeedsScanned seeds are found by a scan, more by a grid: the
+// same seeds plus one far away must carve alike. Seeds on half and whole
+// coordinates fall on edges and vertices too, where the first triangle in
+// index order decides which region a seed removes.
+TEST(Domain, HoleSeedsFoundByScanOrByGridCarveAlike)
+{
+  const Grid g(12);
+  Array<Segment> constrained;
+  addLoop(g, 1, 1, 4, 4, constrained);
+  addLoop(g, 5, 1, 8, 4, constrained);
+  addLoop(g, 1, 5, 4, 8, constrained);
+  addLoop(g, 5, 5, 11, 11, constrained);
+  addLoop(g, 7, 7, 9, 9, constrained);
+  std::mt19937 rng(11);
+  std::uniform_int_distribution<int> halfSteps(-2, 26);
+  for (int trial = 0; trial < 200; ++trial)
+  {
+    Array<Point> seeds;
+    while (seeds.size() < kHoleSeedsScanned)
+      seeds.push_back({ 0.5 * halfSteps(rng), 0.5 * halfSteps(rng) });
+    Array<Point> more = seeds;
+    more.push_back({ 100, 100 });
+    for (const bool removeExterior : { false, true })
+    {
+      const Carving scanned = carveDomain(g.points, g.tris, constrained, removeExterior, seeds);
+      const Carving gridded = carveDomain(g.points, g.tris, constrained, removeExterior, more);
+      EXPECT_EQ(gridded.regionId, scanned.regionId) << "trial " << trial;
+      EXPECT_EQ(gridded.regions, scanned.regions);
+      Array<int> unused = scanned.unusedHoles;
+      unused.push_back(static_cast<int>(kHoleSeedsScanned));
+      EXPECT_EQ(gridded.unusedHoles, unused);
+    }
+  }
+}
+
 TEST(Domain, KnownAdjacencyIsUsed)
 {
   // Known adjacency is trusted, not rechecked: a corner triangle declared
