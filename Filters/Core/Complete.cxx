@@ -20,7 +20,23 @@ constexpr std::size_t kLargestFaceHandled = 400;
 
 double maxAngle(const Point& a, const Point& b, const Point& c)
 {
-  return std::max({ angleAt(c, a, b), angleAt(a, b, c), angleAt(b, c, a) });
+  // The largest angle lies opposite the longest edge. An edge shorter than it
+  // by a relative 1e-9 in squared length faces an angle smaller by far more
+  // than angleAt's rounding (at least 5e-10 tan 60 degrees radians), so its
+  // atan2 can be skipped: one call instead of three, the same maximum. Where
+  // squared lengths over- or underflow, all three are computed.
+  const double la = dist2(b, c), lb = dist2(c, a), lc = dist2(a, b);
+  const double longest = std::max({ la, lb, lc });
+  const bool all = !(longest > 1e-290 && longest < 1e290);
+  const double cut = (1.0 - 1e-9) * longest;
+  double m = 0.0;
+  if (all || la >= cut)
+    m = angleAt(c, a, b);
+  if (all || lb >= cut)
+    m = std::max(m, angleAt(a, b, c));
+  if (all || lc >= cut)
+    m = std::max(m, angleAt(b, c, a));
+  return m;
 }
 
 namespace
@@ -69,16 +85,26 @@ bool isDiagonal(const Array<Point>& P, int i, int j)
 
 bool triangulateMinMaxAngle(const Array<Point>& P, const Array<int>& ids, Array<Triangle>& out)
 {
+  MinMaxScratch scratch;
+  return triangulateMinMaxAngle(P, ids, out, scratch);
+}
+
+bool triangulateMinMaxAngle(
+  const Array<Point>& P, const Array<int>& ids, Array<Triangle>& out, MinMaxScratch& scratch)
+{
   const int k = static_cast<int>(P.size());
   const double inf = std::numeric_limits<double>::infinity();
   // ok[i][j]: the chord i-j is a polygon edge or an interior diagonal.
-  Array<char> ok(k * k, 0);
+  Array<char>& ok = scratch.ok;
+  ok.assign(k * k, 0);
   for (int i = 0; i < k; ++i)
     for (int j = i + 1; j < k; ++j)
       ok[i * k + j] = (j == i + 1 || (i == 0 && j == k - 1)) ? 1 : isDiagonal(P, i, j);
   // cost[i][j]: best largest angle triangulating the chain i..j closed by chord i-j.
-  Array<double> cost(k * k, inf);
-  Array<int> apex(k * k, -1);
+  Array<double>& cost = scratch.cost;
+  Array<int>& apex = scratch.apex;
+  cost.assign(k * k, inf);
+  apex.assign(k * k, -1);
   for (int i = 0; i + 1 < k; ++i)
     cost[i * k + i + 1] = 0;
   for (int len = 2; len < k; ++len)
@@ -104,7 +130,8 @@ bool triangulateMinMaxAngle(const Array<Point>& P, const Array<int>& ids, Array<
   }
   if (cost[k - 1] == inf)
     return false;
-  Array<std::pair<int, int>> stack{ { 0, k - 1 } };
+  Array<std::pair<int, int>>& stack = scratch.stack;
+  stack.assign(1, { 0, k - 1 });
   while (!stack.empty())
   {
     const auto [i, j] = stack.back();
@@ -244,6 +271,7 @@ Completion complete(PlanarGraph& g, Statistics& stats, RunContext& run)
   // A face of k sides gives k - 2 triangles.
   out.triangles.reserve(out.triangles.size() + faceVertices.size() - 2 * (faceStart.size() - 1));
   Array<Point> polygon;
+  MinMaxScratch scratch;
   Array<int> face;
   for (std::size_t f = 0; f + 1 < faceStart.size(); ++f)
   {
@@ -265,7 +293,7 @@ Completion complete(PlanarGraph& g, Statistics& stats, RunContext& run)
     polygon.clear();
     for (int v : face)
       polygon.push_back(g.points[v]);
-    if (!triangulateMinMaxAngle(polygon, face, out.triangles))
+    if (!triangulateMinMaxAngle(polygon, face, out.triangles, scratch))
       throw Stop{ "internal error: a face with " + std::to_string(face.size()) + " sides near " +
         std::to_string(polygon[0].x) + ", " + std::to_string(polygon[0].y) +
         " could not be triangulated" };

@@ -10,6 +10,7 @@
 #include "Statistics.h"
 #include "Stitch.h"
 
+#include <utility>
 #include <vector>
 
 namespace osm
@@ -29,6 +30,19 @@ Completion complete(PlanarGraph& graph, Statistics& stats, RunContext& run);
 /// Appends triangles (indices into ids) and returns false if none exists.
 bool triangulateMinMaxAngle(
   const Array<Point>& polygon, const Array<int>& ids, Array<Triangle>& out);
+
+/// The arrays of that search (k^2 entries each for k vertices), kept from
+/// one face to the next: most faces are quadrilaterals, whose few
+/// allocations cost as much as their search.
+struct MinMaxScratch
+{
+  Array<char> ok;
+  Array<double> cost;
+  Array<int> apex;
+  Array<std::pair<int, int>> stack;
+};
+bool triangulateMinMaxAngle(
+  const Array<Point>& polygon, const Array<int>& ids, Array<Triangle>& out, MinMaxScratch& scratch);
 
 /// Largest angle of a triangle, in radians.
 double maxAngle(const Point& a, const Point& b, const Point& c);

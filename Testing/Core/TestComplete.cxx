@@ -5,22 +5,31 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <functional>
 #include <limits>
 #include <numeric>
 #include <random>
+#include <vector>
 
 using namespace osm;
 
 namespace
 {
 
+/// The largest angle as the three angles give it: the oracle, independent of
+/// maxAngle's shortcut.
+double maxOfThree(const Point& a, const Point& b, const Point& c)
+{
+  return std::max({ angleAt(c, a, b), angleAt(a, b, c), angleAt(b, c, a) });
+}
+
 double largestAngle(const Array<Point>& P, const Array<Triangle>& tris)
 {
   double m = 0;
   for (const Triangle& t : tris)
-    m = std::max(m, maxAngle(P[t[0]], P[t[1]], P[t[2]]));
+    m = std::max(m, maxOfThree(P[t[0]], P[t[1]], P[t[2]]));
   return m;
 }
 
@@ -33,7 +42,7 @@ double bruteForceConvex(const Array<Point>& P)
       return 0;
     double b = std::numeric_limits<double>::infinity();
     for (int m = i + 1; m < j; ++m)
-      b = std::min(b, std::max({ best(i, m), best(m, j), maxAngle(P[i], P[m], P[j]) }));
+      b = std::min(b, std::max({ best(i, m), best(m, j), maxOfThree(P[i], P[m], P[j]) }));
     return b;
   };
   return best(0, k - 1);
@@ -115,4 +124,38 @@ TEST(Complete, ReportsImpossiblePolygons)
   const Array<Point> P{ { 0, 0 }, { 1, 0 }, { 2, 0 }, { 3, 0 } };
   Array<Triangle> tris;
   EXPECT_FALSE(triangulateMinMaxAngle(P, iota(P.size()), tris));
+}
+
+// maxAngle computes only the angles opposite the longest edges; its value
+// must be exactly the largest of all three, ties and extreme scales included.
+TEST(Complete, MaxAngleIsTheLargestOfTheThreeAngles)
+{
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::vector<std::array<Point, 3>> cases = {
+    { { { 0, 0 }, { 1, 0 }, { 0.5, std::sqrt(3.0) / 2 } } }, // equilateral, within rounding
+    { { { 0, 0 }, { 1, 0 }, { 0, 1 } } },                    // right isosceles
+    { { { 0, 0 }, { 2, 0 }, { 1, 1e-12 } } },                // nearly flat, isosceles
+    { { { 0, 0 }, { 1, 0 }, { 2, 0 } } },                    // flat
+    { { { 0, 0 }, { 0, 0 }, { 1, 1 } } },                    // a repeated point
+    { { { 0, 0 }, { 1e-160, 0 }, { 0, 1e-160 } } },          // squares underflow
+    { { { 0, 0 }, { 1e160, 0 }, { 0, 1e160 } } },            // squares overflow
+  };
+  for (int i = 0; i < 20000; ++i)
+  {
+    const Point a{ unit(rng), unit(rng) };
+    const Point b{ unit(rng), unit(rng) };
+    cases.push_back({ a, b, { unit(rng), unit(rng) } });
+    // Isosceles within rounding: c on the perpendicular bisector of ab.
+    const double t = unit(rng);
+    cases.push_back(
+      { a, b, { 0.5 * (a.x + b.x) - t * (b.y - a.y), 0.5 * (a.y + b.y) + t * (b.x - a.x) } });
+  }
+  for (const auto& c : cases)
+    for (int r = 0; r < 3; ++r) // every rotation of the corners
+    {
+      const Point &p = c[r], &q = c[(r + 1) % 3], &s = c[(r + 2) % 3];
+      ASSERT_EQ(maxAngle(p, q, s), maxOfThree(p, q, s))
+        << p.x << "," << p.y << " " << q.x << "," << q.y << " " << s.x << "," << s.y;
+    }
 }
