@@ -24,7 +24,9 @@ double maxAngle(const Point& a, const Point& b, const Point& c)
   // by a relative 1e-9 in squared length faces an angle smaller by far more
   // than angleAt's rounding (at least 5e-10 tan 60 degrees radians), so its
   // atan2 can be skipped: one call instead of three, the same maximum. Where
-  // squared lengths over- or underflow, all three are computed.
+  // squared lengths over- or underflow, all three are computed. (angleRange
+  // takes either angle where edges tie within rounding; the search compares
+  // these maxima for ties, so it needs exactly the largest.)
   const double la = dist2(b, c), lb = dist2(c, a), lc = dist2(a, b);
   const double longest = std::max({ la, lb, lc });
   const bool all = !(longest > 1e-290 && longest < 1e290);

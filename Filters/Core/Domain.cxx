@@ -138,6 +138,13 @@ Array<int> components(const KnownAdjacency& a)
   return root;
 }
 
+/// Whether the closed counter-clockwise triangle t holds q.
+bool closureHolds(const Array<Point>& P, const Triangle& t, const Point& q)
+{
+  const Point &a = P[t[0]], &b = P[t[1]], &d = P[t[2]];
+  return orient2d(a, b, q) >= 0 && orient2d(b, d, q) >= 0 && orient2d(d, a, q) >= 0;
+}
+
 /// Finds the triangle under a point among those not removed: a uniform grid
 /// of their bounding boxes, about one cell per triangle, so locating many hole
 /// seeds stays linear. Triangles removed before it is built (the exterior)
@@ -199,9 +206,7 @@ public:
     for (int k = start[c]; k < start[c + 1]; ++k)
     {
       const int t = items[k];
-      const Point &a = P[tris[t][0]], &b = P[tris[t][1]], &d = P[tris[t][2]];
-      if (!removed[component[t]] && orient2d(a, b, q) >= 0 && orient2d(b, d, q) >= 0 &&
-        orient2d(d, a, q) >= 0)
+      if (!removed[component[t]] && closureHolds(P, tris[t], q))
         return t;
     }
     return -1;
@@ -248,7 +253,7 @@ int findByScan(const Array<Point>& P, const Array<Triangle>& tris, const Point& 
     if (q.x < std::min({ a.x, b.x, d.x }) || q.x > std::max({ a.x, b.x, d.x }) ||
       q.y < std::min({ a.y, b.y, d.y }) || q.y > std::max({ a.y, b.y, d.y }))
       continue;
-    if (orient2d(a, b, q) >= 0 && orient2d(b, d, q) >= 0 && orient2d(d, a, q) >= 0)
+    if (closureHolds(P, tris[t], q))
       return t;
   }
   return -1;
