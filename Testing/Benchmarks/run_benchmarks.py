@@ -423,9 +423,95 @@ def run_suite(args):
             else:
                 print("%-15s %-28s %s: %s" % (tool, name, status,
                                                r["first"].get("detail", "")), flush=True)
+    scaling = run_scaling_pass(found["osm"], results, args)
     meta["suite_seconds"] = time.monotonic() - started
     meta["load_end"] = os.getloadavg()
-    return {"meta": meta, "results": results}
+    return {"meta": meta, "results": results, "scaling_pass": scaling}
+
+
+# ----------------------------------------------------------------------------- scaling pass
+
+# The main pass runs each input's repeats back to back, the small ones minutes
+# before the large ones; on this shared virtual machine a slow phase lasts
+# minutes, so a ratio of two sizes can be the machine's. This pass times the
+# core alone on every size of a generated family in turn, in rounds (forward,
+# then backward), so that each round's sizes share its conditions, and compares
+# each size with the smallest one of the same round.
+SCALING_ROUNDS = 5
+SCALING_REPEATS_FAST = 3  # runs per size and round when one takes under FAST_SECONDS
+SCALING_FAMILIES = ("random-segments", "points", "spread")
+
+
+def scaling_specs(results):
+    """Per family, the (spec, triangles) of the core's runs with >= 1e4 triangles."""
+    specs = {}
+    for e in results:
+        if e["tool"] == "osm" and e["class"] in SCALING_FAMILIES and ok(e):
+            t = e["first"]["out_triangles"]
+            if 1e4 <= t <= 1.5e7:
+                specs.setdefault(e["class"], []).append((e["n"], e["input"], t))
+    return {f: [(spec, t) for _, spec, t in sorted(v)] for f, v in specs.items() if len(v) >= 2}
+
+
+def run_scaling_pass(exe, results, args):
+    """Rounds of the core over each family's sizes. Returns {"rounds", "runs"}."""
+    specs = scaling_specs(results)
+    if not specs:
+        return None
+    order = [(fam, spec, t) for fam, v in specs.items() for spec, t in v]
+    runs = []
+    print("scaling pass: %d rounds over %d inputs" % (SCALING_ROUNDS, len(order)), flush=True)
+    for rnd in range(SCALING_ROUNDS):
+        for fam, spec, t in (order if rnd % 2 == 0 else order[::-1]):
+            cpu = []
+            while True:
+                r = run_once(exe, spec, ["--no-check"], args.timeout)
+                if r["status"] != "ok" or r.get("out_triangles") != t:
+                    break
+                cpu.append(r["cpu_seconds"])
+                if len(cpu) >= SCALING_REPEATS_FAST or cpu[0] >= FAST_SECONDS:
+                    break
+            if cpu:
+                runs.append({"round": rnd, "family": fam, "input": spec, "triangles": t,
+                             "cpu": cpu})
+        print("scaling pass: round %d done" % (rnd + 1), flush=True)
+    return {"rounds": SCALING_ROUNDS, "runs": runs}
+
+
+def paired_scaling(data):
+    """Per family: [(spec, triangles, median ns/tri, median ratio, min ratio, max ratio)],
+    each ratio a size's time per triangle over the family's smallest size in the same
+    round (round medians of the repeats)."""
+    sp = data.get("scaling_pass")
+    if not sp:
+        return {}
+    per = {}  # (family, spec) -> {round: seconds per triangle}
+    tris = {}
+    for r in sp["runs"]:
+        per.setdefault((r["family"], r["input"]), {})[r["round"]] = \
+            statistics.median(r["cpu"]) / r["triangles"]
+        tris[(r["family"], r["input"])] = r["triangles"]
+    out = {}
+    for fam in SCALING_FAMILIES:
+        keys = sorted((k for k in per if k[0] == fam), key=lambda k: tris[k])
+        if len(keys) < 2:
+            continue
+        base = per[keys[0]]
+        rows = []
+        for k in keys:
+            ratios = [per[k][i] / base[i] for i in per[k] if i in base]
+            if not ratios:
+                continue
+            rows.append((k[1], tris[k], statistics.median(per[k].values()) * 1e9,
+                         statistics.median(ratios), min(ratios), max(ratios)))
+        out[fam] = rows
+    return out
+
+
+def paired_growth(rows):
+    """The largest over the smallest of a family's median paired ratios."""
+    med = [r[3] for r in rows]
+    return max(med) / min(med)
 
 
 def find_cli(build):
@@ -900,6 +986,17 @@ def targets(data, profile):
             fam, fmt(lo * 1e9), fmt(hi * 1e9), fmt_int(pts[0][0]), fmt_int(pts[-1][0]),
             fmt(hi / lo, 2), m2text))
     largest = max((o["first"]["out_triangles"] for o in osm_runs), default=0)
+    paired = paired_scaling(data)
+    if paired:
+        # The verdict is the interleaved pass's: sizes timed in the same rounds.
+        met = all(paired_growth(rows) <= 1.5 for rows in paired.values())
+        texts = ["interleaved pass (%d rounds; each size against the smallest in the same "
+                 "round, median over the rounds): %s" % (
+                     data["scaling_pass"]["rounds"], ", ".join(
+                         "%s ×%s" % (fam, fmt(paired_growth(rows), 2))
+                         for fam, rows in paired.items())) +
+                 " (main pass, each size's median, sizes timed minutes apart: " +
+                 "; ".join(texts) + ")"]
     if texts:
         out.append(("Time per output triangle within 1.5× from 1e4 to 1e7 triangles",
                     "; ".join(texts) + ("" if largest >= 1e7 else
@@ -1019,6 +1116,24 @@ def scaling_text(data):
                 other("osm-mesh", lambda x: per_triangle(x) * 1e9),
                 fmt(bytes_per_triangle(o)),
                 other("osm-mesh", bytes_per_triangle)))
+    paired = paired_scaling(data)
+    if paired:
+        L += ["", "The interleaved scaling pass: after the main pass, the core alone ran on "
+              "every size of a family with at least 10^4 triangles in turn, %d rounds (forward, "
+              "then backward; sizes under %g s of CPU %d times per round, the median taken), so "
+              "that every size is timed under the same conditions as the others of its round. "
+              "*vs smallest*: a size's time per triangle over the family's smallest size in the "
+              "same round; the median over the rounds and their range. The target's verdict is "
+              "this pass's: the main pass times each size minutes apart, and this machine's "
+              "slow phases last minutes." % (data["scaling_pass"]["rounds"], FAST_SECONDS,
+                                              SCALING_REPEATS_FAST), "",
+              "| family | OSM triangles | ns/tri (median over rounds) | vs smallest, same round "
+              "(median) | range over rounds |",
+              "|---|---:|---:|---:|---|"]
+        for fam, rows in paired.items():
+            for spec, t, ns, med, lo, hi in rows:
+                L.append("| %s | %s | %s | %s | %s – %s |" % (
+                    fam, fmt_int(t), fmt(ns), fmt(med, 3), fmt(lo, 3), fmt(hi, 3)))
     return "\n".join(L)
 
 
