@@ -76,6 +76,17 @@ inline double processCpuSeconds()
   return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
 }
 
+/// The part of the process's CPU time spent in the kernel on its behalf (page
+/// faults, clearing fresh pages), in seconds. The kernel splits CPU time into user
+/// and system by sampling at its tick: read it for runs of a second or more.
+inline double processSystemSeconds()
+{
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_stime.tv_sec) +
+    1e-6 * static_cast<double>(usage.ru_stime.tv_usec);
+}
+
 /// Wall time and process CPU time since construction. On a loaded machine the CPU
 /// time is the steadier figure: it does not count the time the process waited for
 /// a core (it still feels the caches and memory bandwidth that others share).
@@ -85,16 +96,20 @@ public:
   Stopwatch()
     : t0(std::chrono::steady_clock::now())
     , cpu0(processCpuSeconds())
+    , system0(processSystemSeconds())
   {}
   double seconds() const
   {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }
   double cpuSeconds() const { return processCpuSeconds() - cpu0; }
+  /// The kernel's part of cpuSeconds().
+  double systemSeconds() const { return processSystemSeconds() - system0; }
 
 private:
   std::chrono::steady_clock::time_point t0;
   double cpu0;
+  double system0;
 };
 
 /// A field of /proc/self/status in bytes (VmRSS, VmHWM), or -1.
@@ -384,6 +399,7 @@ struct RunOutput
   std::string error;
   double seconds = 0.0;       ///< the meshing call only, wall time
   double cpuSeconds = 0.0;    ///< the same call, process CPU time
+  double systemSeconds = -1;  ///< the kernel's part of it, if the driver measured it
   MeshOut mesh;               ///< filled after the timed call (conversion not timed)
   std::vector<char> inDomain; ///< per input point, see inspect(); empty: all
   std::size_t triangles = 0;
@@ -441,6 +457,8 @@ inline int driverMain(int argc, char** argv, const char* tool,
     .add("peak_rss", out.memory.peakRss)
     .add("peak_reset", out.memory.peakWasReset)
     .add("minor_faults", out.memory.minorFaults);
+  if (out.systemSeconds >= 0)
+    line.add("system_seconds", out.systemSeconds);
   if (out.ok && check)
   {
     const Quality q = inspect(pslg, out.mesh, out.inDomain);

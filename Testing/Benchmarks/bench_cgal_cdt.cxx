@@ -22,6 +22,7 @@ int main(int argc, char** argv)
       osmbench::insertAll(cdt, in);
       out.seconds = clock.seconds();
       out.cpuSeconds = clock.cpuSeconds();
+      out.systemSeconds = clock.systemSeconds();
       out.memory.after();
       out.vertices = cdt.number_of_vertices();
       out.triangles = cdt.number_of_faces();

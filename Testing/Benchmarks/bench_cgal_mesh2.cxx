@@ -104,6 +104,7 @@ int main(int argc, char** argv)
       CGAL::refine_Delaunay_mesh_2(cdt, Criteria(), /*domain_specified=*/true);
       out.seconds = clock.seconds();
       out.cpuSeconds = clock.cpuSeconds();
+      out.systemSeconds = clock.systemSeconds();
       out.memory.after();
       out.extra.add("cdt_seconds", cdtSeconds)
         .add("domain", enclosed ? "enclosed" : "hull")

@@ -16,6 +16,7 @@ int main(int argc, char** argv)
       osm::Result result = osm::mesh(input, options);
       out.seconds = clock.seconds();
       out.cpuSeconds = clock.cpuSeconds();
+      out.systemSeconds = clock.systemSeconds();
       out.memory.after();
       out.ok = result.ok;
       out.error = result.error;

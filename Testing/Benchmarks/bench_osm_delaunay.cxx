@@ -16,6 +16,7 @@ int main(int argc, char** argv)
       osm::Triangulation t = osm::delaunayTriangulation(input.points, vertexOf);
       out.seconds = clock.seconds();
       out.cpuSeconds = clock.cpuSeconds();
+      out.systemSeconds = clock.systemSeconds();
       out.memory.after();
       // Triangles touching the four box corners (vertices 0..3) are not part of
       // the triangulation of the points.

@@ -30,6 +30,7 @@ int main(int argc, char** argv)
       delaunay->Update();
       out.seconds = clock.seconds();
       out.cpuSeconds = clock.cpuSeconds();
+      out.systemSeconds = clock.systemSeconds();
       out.memory.after();
       vtkPolyData* result = delaunay->GetOutput();
       out.triangles = osmbench::countTriangles(result);

@@ -28,6 +28,7 @@ int main(int argc, char** argv)
       mesher->Update();
       out.seconds = clock.seconds();
       out.cpuSeconds = clock.cpuSeconds();
+      out.systemSeconds = clock.systemSeconds();
       out.memory.after();
       vtkPolyData* result = mesher->GetOutput();
       out.triangles = osmbench::countTriangles(result);

@@ -463,47 +463,58 @@ def run_scaling_pass(exe, results, args):
     print("scaling pass: %d rounds over %d inputs" % (SCALING_ROUNDS, len(order)), flush=True)
     for rnd in range(SCALING_ROUNDS):
         for fam, spec, t in (order if rnd % 2 == 0 else order[::-1]):
-            cpu = []
+            cpu, system = [], []
             while True:
                 r = run_once(exe, spec, ["--no-check"], args.timeout)
                 if r["status"] != "ok" or r.get("out_triangles") != t:
                     break
                 cpu.append(r["cpu_seconds"])
+                system.append(r.get("system_seconds"))
                 if len(cpu) >= SCALING_REPEATS_FAST or cpu[0] >= FAST_SECONDS:
                     break
             if cpu:
                 runs.append({"round": rnd, "family": fam, "input": spec, "triangles": t,
-                             "cpu": cpu})
+                             "cpu": cpu, "system": system})
         print("scaling pass: round %d done" % (rnd + 1), flush=True)
     return {"rounds": SCALING_ROUNDS, "runs": runs}
 
 
 def paired_scaling(data):
-    """Per family: [(spec, triangles, median ns/tri, median ratio, min ratio, max ratio)],
-    each ratio a size's time per triangle over the family's smallest size in the same
-    round (round medians of the repeats)."""
+    """Per family: [(spec, triangles, median ns/tri, median ratio, min ratio, max ratio,
+    kernel share, median user-time ratio)], each ratio a size's time per triangle over
+    the family's smallest size in the same round (round medians of the repeats); the
+    kernel share and the user-time ratio are None where the runs did not report it."""
     sp = data.get("scaling_pass")
     if not sp:
         return {}
-    per = {}  # (family, spec) -> {round: seconds per triangle}
+    per, user, share = {}, {}, {}  # (family, spec) -> {round: value}
     tris = {}
     for r in sp["runs"]:
-        per.setdefault((r["family"], r["input"]), {})[r["round"]] = \
-            statistics.median(r["cpu"]) / r["triangles"]
-        tris[(r["family"], r["input"])] = r["triangles"]
+        k = (r["family"], r["input"])
+        per.setdefault(k, {})[r["round"]] = statistics.median(r["cpu"]) / r["triangles"]
+        tris[k] = r["triangles"]
+        system = r.get("system") or []
+        if system and all(x is not None for x in system):
+            u = [c - x for c, x in zip(r["cpu"], system)]
+            user.setdefault(k, {})[r["round"]] = statistics.median(u) / r["triangles"]
+            share.setdefault(k, []).extend(x / c for c, x in zip(r["cpu"], system) if c > 0)
     out = {}
     for fam in SCALING_FAMILIES:
         keys = sorted((k for k in per if k[0] == fam), key=lambda k: tris[k])
         if len(keys) < 2:
             continue
-        base = per[keys[0]]
+        base, ubase = per[keys[0]], user.get(keys[0], {})
         rows = []
         for k in keys:
             ratios = [per[k][i] / base[i] for i in per[k] if i in base]
             if not ratios:
                 continue
+            uk = user.get(k, {})
+            uratios = [uk[i] / ubase[i] for i in uk if i in ubase and ubase[i] > 0]
             rows.append((k[1], tris[k], statistics.median(per[k].values()) * 1e9,
-                         statistics.median(ratios), min(ratios), max(ratios)))
+                         statistics.median(ratios), min(ratios), max(ratios),
+                         statistics.median(share[k]) if share.get(k) else None,
+                         statistics.median(uratios) if uratios else None))
         out[fam] = rows
     return out
 
@@ -1125,15 +1136,21 @@ def scaling_text(data):
               "*vs smallest*: a size's time per triangle over the family's smallest size in the "
               "same round; the median over the rounds and their range. The target's verdict is "
               "this pass's: the main pass times each size minutes apart, and this machine's "
-              "slow phases last minutes." % (data["scaling_pass"]["rounds"], FAST_SECONDS,
-                                              SCALING_REPEATS_FAST), "",
+              "slow phases last minutes. *Kernel*: the share of the CPU time that the kernel "
+              "spent on the process's behalf (nearly all of it first touches of fresh memory: "
+              "page faults and clearing pages; the kernel splits user from system time by "
+              "sampling at its tick, so the small runs' shares are coarse); *user time only*: "
+              "the same paired ratio without it." % (
+                  data["scaling_pass"]["rounds"], FAST_SECONDS, SCALING_REPEATS_FAST), "",
               "| family | OSM triangles | ns/tri (median over rounds) | vs smallest, same round "
-              "(median) | range over rounds |",
-              "|---|---:|---:|---:|---|"]
+              "(median) | range over rounds | kernel | user time only, vs smallest |",
+              "|---|---:|---:|---:|---|---:|---:|"]
         for fam, rows in paired.items():
-            for spec, t, ns, med, lo, hi in rows:
-                L.append("| %s | %s | %s | %s | %s – %s |" % (
-                    fam, fmt_int(t), fmt(ns), fmt(med, 3), fmt(lo, 3), fmt(hi, 3)))
+            for spec, t, ns, med, lo, hi, kshare, umed in rows:
+                L.append("| %s | %s | %s | %s | %s – %s | %s | %s |" % (
+                    fam, fmt_int(t), fmt(ns), fmt(med, 3), fmt(lo, 3), fmt(hi, 3),
+                    "—" if kshare is None else "%.1f%%" % (100 * kshare),
+                    fmt(umed, 3)))
     return "\n".join(L)
 
 
