@@ -45,18 +45,19 @@ namespace
 {
 
 /// Does the open segment from polygon vertex i to j lie inside the polygon?
-bool isDiagonal(const Array<Point>& P, int i, int j)
+/// orient(a, b, c) is orientSign of polygon vertices a, b and c.
+template <class Orient>
+bool isDiagonal(const Array<Point>& P, int i, int j, const Orient& orient)
 {
   const int k = static_cast<int>(P.size());
   // Inside the interior cone at each end (a straight angle is a half-plane).
   for (int end = 0; end < 2; ++end)
   {
     const int a = end == 0 ? i : j, b = end == 0 ? j : i;
-    const Point& prev = P[(a + k - 1) % k];
-    const Point& next = P[(a + 1) % k];
-    const int turn = orientSign(prev, P[a], next);
-    const int toNext = orientSign(P[a], next, P[b]);
-    const int fromPrev = orientSign(prev, P[a], P[b]);
+    const int prev = (a + k - 1) % k, next = (a + 1) % k;
+    const int turn = orient(prev, a, next);
+    const int toNext = orient(a, next, b);
+    const int fromPrev = orient(prev, a, b);
     const bool inside = turn > 0 ? (toNext > 0 && fromPrev > 0)
       : turn < 0                 ? (toNext > 0 || fromPrev > 0)
                                  : toNext > 0;
@@ -68,17 +69,88 @@ bool isDiagonal(const Array<Point>& P, int i, int j)
   {
     if (m == i || m == j)
       continue;
-    const int o = orientSign(P[i], P[j], P[m]);
+    const int o = orient(i, j, m);
     if (o == 0 && std::min(P[i].x, P[j].x) <= P[m].x && P[m].x <= std::max(P[i].x, P[j].x) &&
       std::min(P[i].y, P[j].y) <= P[m].y && P[m].y <= std::max(P[i].y, P[j].y))
       return false;
     const int n = (m + 1) % k;
     if (n == i || n == j)
       continue;
-    const int o2 = orientSign(P[i], P[j], P[n]);
-    if (o != 0 && o2 != 0 && o != o2 &&
-      orientSign(P[m], P[n], P[i]) * orientSign(P[m], P[n], P[j]) < 0)
+    const int o2 = orient(i, j, n);
+    if (o != 0 && o2 != 0 && o != o2 && orient(m, n, i) * orient(m, n, j) < 0)
       return false;
+  }
+  return true;
+}
+
+/// The orientations of a quadrilateral's vertex triples: four exact tests
+/// answer all of them, as an exact sign only changes with the triple's order.
+struct QuadrilateralOrientation
+{
+  std::array<int, 4> sign; ///< of the three vertices other than m, in increasing order
+
+  explicit QuadrilateralOrientation(const Array<Point>& P)
+    : sign{ orientSign(P[1], P[2], P[3]), orientSign(P[0], P[2], P[3]),
+      orientSign(P[0], P[1], P[3]), orientSign(P[0], P[1], P[2]) }
+  {}
+
+  /// orientSign(P[a], P[b], P[c]) for three different vertices.
+  int operator()(int a, int b, int c) const
+  {
+    int parity = 1;
+    if (a > b)
+      std::swap(a, b), parity = -parity;
+    if (b > c)
+      std::swap(b, c), parity = -parity;
+    if (a > b)
+      std::swap(a, b), parity = -parity;
+    return parity * sign[6 - a - b - c];
+  }
+};
+
+/// The dynamic program below unrolled for a quadrilateral, the usual face
+/// (53,370 of us48.poly's 53,428): the same tests in the same order, hence the
+/// same triangles, without its arrays, loops and stack, and with four exact
+/// orientation tests instead of 24. c02 is the cost of the chain 0..2 closed
+/// by the chord 0-2 (apex 1), c13 that of 1..3 (apex 2).
+bool triangulateQuadrilateral(const Array<Point>& P, const Array<int>& ids, Array<Triangle>& out)
+{
+  const double inf = std::numeric_limits<double>::infinity();
+  const QuadrilateralOrientation orient(P);
+  double c02 = inf, c13 = inf;
+  if (isDiagonal(P, 0, 2, orient) && orient(0, 1, 2) > 0)
+    if (const double c = std::max(0.0, maxAngle(P[0], P[1], P[2])); c < inf)
+      c02 = c;
+  if (isDiagonal(P, 1, 3, orient) && orient(1, 2, 3) > 0)
+    if (const double c = std::max(0.0, maxAngle(P[1], P[2], P[3])); c < inf)
+      c13 = c;
+  // The chord 0-3 closes the chain 0..3 with apex 1 (then the chain 1..3) or
+  // apex 2 (then 0..2); a tie keeps apex 1.
+  double best = inf;
+  int apex = -1;
+  if (const double sub = std::max(0.0, c13); !(sub >= best) && orient(0, 1, 3) > 0)
+    if (const double c = std::max(sub, maxAngle(P[0], P[1], P[3])); c < best)
+    {
+      best = c;
+      apex = 1;
+    }
+  if (const double sub = std::max(c02, 0.0); !(sub >= best) && orient(0, 2, 3) > 0)
+    if (const double c = std::max(sub, maxAngle(P[0], P[2], P[3])); c < best)
+    {
+      best = c;
+      apex = 2;
+    }
+  if (best == inf)
+    return false;
+  if (apex == 1)
+  {
+    out.push_back({ ids[0], ids[1], ids[3] });
+    out.push_back({ ids[1], ids[2], ids[3] });
+  }
+  else
+  {
+    out.push_back({ ids[0], ids[2], ids[3] });
+    out.push_back({ ids[0], ids[1], ids[2] });
   }
   return true;
 }
@@ -94,14 +166,23 @@ bool triangulateMinMaxAngle(const Array<Point>& P, const Array<int>& ids, Array<
 bool triangulateMinMaxAngle(
   const Array<Point>& P, const Array<int>& ids, Array<Triangle>& out, MinMaxScratch& scratch)
 {
+  if (P.size() == 4)
+    return triangulateQuadrilateral(P, ids, out);
+  return triangulateMinMaxAngleByProgram(P, ids, out, scratch);
+}
+
+bool triangulateMinMaxAngleByProgram(
+  const Array<Point>& P, const Array<int>& ids, Array<Triangle>& out, MinMaxScratch& scratch)
+{
   const int k = static_cast<int>(P.size());
   const double inf = std::numeric_limits<double>::infinity();
+  const auto orient = [&P](int a, int b, int c) { return orientSign(P[a], P[b], P[c]); };
   // ok[i][j]: the chord i-j is a polygon edge or an interior diagonal.
   Array<char>& ok = scratch.ok;
   ok.assign(k * k, 0);
   for (int i = 0; i < k; ++i)
     for (int j = i + 1; j < k; ++j)
-      ok[i * k + j] = (j == i + 1 || (i == 0 && j == k - 1)) ? 1 : isDiagonal(P, i, j);
+      ok[i * k + j] = (j == i + 1 || (i == 0 && j == k - 1)) ? 1 : isDiagonal(P, i, j, orient);
   // cost[i][j]: best largest angle triangulating the chain i..j closed by chord i-j.
   Array<double>& cost = scratch.cost;
   Array<int>& apex = scratch.apex;

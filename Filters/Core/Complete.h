@@ -44,6 +44,11 @@ struct MinMaxScratch
 bool triangulateMinMaxAngle(
   const Array<Point>& polygon, const Array<int>& ids, Array<Triangle>& out, MinMaxScratch& scratch);
 
+/// The same search by the dynamic program alone, which triangulateMinMaxAngle
+/// unrolls for quadrilaterals (the tests compare the two).
+bool triangulateMinMaxAngleByProgram(
+  const Array<Point>& polygon, const Array<int>& ids, Array<Triangle>& out, MinMaxScratch& scratch);
+
 /// Largest angle of a triangle, in radians.
 double maxAngle(const Point& a, const Point& b, const Point& c);
 

@@ -159,3 +159,35 @@ TEST(Complete, MaxAngleIsTheLargestOfTheThreeAngles)
         << p.x << "," << p.y << " " << q.x << "," << q.y << " " << s.x << "," << s.y;
     }
 }
+
+// Quadrilaterals take a shortcut: the dynamic program unrolled, with four
+// orientation tests for all of its diagonal and apex tests. It must give
+// exactly what the program gives, ties (squares, kites) and degenerate
+// quadrilaterals (straight and zero angles, repeated and collinear points,
+// reflex and clockwise ones) included.
+TEST(Complete, QuadrilateralsAsTheDynamicProgram)
+{
+  std::mt19937 rng(11);
+  std::uniform_int_distribution<int> grid(0, 3);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const Array<int> ids{ 10, 11, 12, 13 };
+  int triangulated = 0, ties = 0;
+  for (int trial = 0; trial < 100000; ++trial)
+  {
+    Array<Point> P(4);
+    for (Point& p : P)
+      p = trial % 2 == 0 ? Point{ double(grid(rng)), double(grid(rng)) }
+                         : Point{ unit(rng), unit(rng) };
+    Array<Triangle> quick, program;
+    MinMaxScratch scratch;
+    const bool a = triangulateMinMaxAngle(P, ids, quick, scratch);
+    const bool b = triangulateMinMaxAngleByProgram(P, ids, program, scratch);
+    ASSERT_EQ(a, b) << "trial " << trial;
+    ASSERT_EQ(quick, program) << "trial " << trial;
+    triangulated += a;
+    ties += a && maxOfThree(P[0], P[1], P[3]) == maxOfThree(P[0], P[2], P[3]);
+  }
+  // The cases must have come up: triangulated ones, and ties between the diagonals.
+  EXPECT_GT(triangulated, 15000);
+  EXPECT_GT(ties, 100) << ties;
+}
