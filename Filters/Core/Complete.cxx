@@ -117,25 +117,24 @@ bool triangulateQuadrilateral(const Array<Point>& P, const Array<int>& ids, Arra
 {
   const double inf = std::numeric_limits<double>::infinity();
   const QuadrilateralOrientation orient(P);
+  // An angle is never infinite, and the program's max(0, NaN) is 0: a chain's
+  // cost, once found, is finite.
   double c02 = inf, c13 = inf;
   if (isDiagonal(P, 0, 2, orient) && orient(0, 1, 2) > 0)
-    if (const double c = std::max(0.0, maxAngle(P[0], P[1], P[2])); c < inf)
-      c02 = c;
+    c02 = std::max(0.0, maxAngle(P[0], P[1], P[2]));
   if (isDiagonal(P, 1, 3, orient) && orient(1, 2, 3) > 0)
-    if (const double c = std::max(0.0, maxAngle(P[1], P[2], P[3])); c < inf)
-      c13 = c;
+    c13 = std::max(0.0, maxAngle(P[1], P[2], P[3]));
   // The chord 0-3 closes the chain 0..3 with apex 1 (then the chain 1..3) or
   // apex 2 (then 0..2); a tie keeps apex 1.
   double best = inf;
   int apex = -1;
-  if (const double sub = std::max(0.0, c13); !(sub >= best) && orient(0, 1, 3) > 0)
-    if (const double c = std::max(sub, maxAngle(P[0], P[1], P[3])); c < best)
-    {
-      best = c;
-      apex = 1;
-    }
-  if (const double sub = std::max(c02, 0.0); !(sub >= best) && orient(0, 2, 3) > 0)
-    if (const double c = std::max(sub, maxAngle(P[0], P[2], P[3])); c < best)
+  if (c13 < inf && orient(0, 1, 3) > 0)
+  {
+    best = std::max(c13, maxAngle(P[0], P[1], P[3]));
+    apex = 1;
+  }
+  if (c02 < best && orient(0, 2, 3) > 0)
+    if (const double c = std::max(c02, maxAngle(P[0], P[2], P[3])); c < best)
     {
       best = c;
       apex = 2;
