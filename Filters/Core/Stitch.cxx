@@ -91,6 +91,18 @@ double cross(double ax, double ay, double bx, double by)
   return ax * by - ay * bx;
 }
 
+/// Calls f(piece index) for every piece, in segment order and along each
+/// segment: the order the walks would have made them in index order.
+template <typename F>
+void forEachPieceInSegmentOrder(const Walk& walk, F&& f)
+{
+  for (std::size_t s = 0; s < walk.firstPiece.size(); ++s)
+    for (int k = walk.firstPiece[s];
+         k >= 0 && k < static_cast<int>(walk.pieces.size()) && walk.pieces[k].segment == int(s);
+         ++k)
+      f(k);
+}
+
 class Walker
 {
 public:
@@ -309,20 +321,20 @@ Point intersection(const Point& a, const Point& b, const Point& c, const Point& 
 void Walker::markDuplicates()
 {
   // Overlapping collinear segments were split at each other's endpoints, so
-  // their shared parts are identical pieces: keep the first.
-  Array<std::array<int, 3>> keys;
+  // their shared parts are identical pieces: keep the first in segment order.
+  Array<std::array<int, 4>> keys;
   keys.reserve(out.pieces.size());
   for (int i = 0; i < static_cast<int>(out.pieces.size()); ++i)
   {
     const Piece& p = out.pieces[i];
-    keys.push_back({ std::min(p.v0, p.v1), std::max(p.v0, p.v1), i });
+    keys.push_back({ std::min(p.v0, p.v1), std::max(p.v0, p.v1), p.segment, i });
   }
   std::sort(keys.begin(), keys.end());
   for (std::size_t k = 1; k < keys.size(); ++k)
   {
     if (keys[k][0] == keys[k - 1][0] && keys[k][1] == keys[k - 1][1])
     {
-      out.pieces[keys[k][2]].duplicate = true;
+      out.pieces[keys[k][3]].duplicate = true;
       ++out.duplicatePieces;
     }
   }
@@ -338,11 +350,19 @@ void Walker::findSegmentCrossings()
   // Two segments that cross share an overlay triangle...
   std::sort(triPiece.begin(), triPiece.end());
   triPiece.erase(std::unique(triPiece.begin(), triPiece.end()), triPiece.end());
+  // A triangle's pieces in segment order (they are few), as walks in index
+  // order would have numbered them.
+  auto bySegment = [&](const std::pair<int, int>& x, const std::pair<int, int>& y) {
+    const int sx = out.pieces[x.second].segment, sy = out.pieces[y.second].segment;
+    return sx != sy ? sx < sy : x.second < y.second;
+  };
   for (std::size_t k = 0; k < triPiece.size();)
   {
     std::size_t end = k;
     while (end < triPiece.size() && triPiece[end].first == triPiece[k].first)
       ++end;
+    if (end - k > 1)
+      std::sort(triPiece.begin() + k, triPiece.begin() + end, bySegment);
     for (std::size_t i = k; i < end; ++i)
     {
       const Piece& p = out.pieces[triPiece[i].second];
@@ -364,16 +384,19 @@ void Walker::findSegmentCrossings()
     if (out.pieces[i].overlayEdge >= 0 && !out.pieces[i].duplicate)
       edgePiece.push_back({ out.pieces[i].overlayEdge, i });
   std::sort(edgePiece.begin(), edgePiece.end());
-  for (const Crossing& c : out.crossings)
-  {
-    if (out.pieces[c.piece].duplicate)
-      continue;
-    // The last piece along the edge, as an array over the edges would keep.
-    const auto after = std::upper_bound(
-      edgePiece.begin(), edgePiece.end(), std::make_pair(c.edge, std::numeric_limits<int>::max()));
-    if (after != edgePiece.begin() && std::prev(after)->first == c.edge)
-      record(c.piece, std::prev(after)->second, c.p);
-  }
+  forEachPieceInSegmentOrder(out, [&](int piece) {
+    const Piece& p = out.pieces[piece];
+    for (int k = p.firstCrossing; k < p.firstCrossing + p.crossingCount && !p.duplicate; ++k)
+    {
+      const Crossing& c = out.crossings[k];
+      // The last piece along the edge (there is one: two along the same edge
+      // are duplicates), as an array over the edges would keep.
+      const auto after = std::upper_bound(edgePiece.begin(), edgePiece.end(),
+        std::make_pair(c.edge, std::numeric_limits<int>::max()));
+      if (after != edgePiece.begin() && std::prev(after)->first == c.edge)
+        record(c.piece, std::prev(after)->second, c.p);
+    }
+  });
   // ...or both pass exactly through the same Steiner vertex.
   std::sort(steinerHits.begin(), steinerHits.end());
   for (std::size_t k = 1; k < steinerHits.size(); ++k)
@@ -393,17 +416,49 @@ void Walker::findSegmentCrossings()
     sc.end());
 }
 
+/// Segment indices by their smaller vertex, bucketed into as many classes as
+/// segments (a counting sort, linear in time and memory; within a class, in
+/// index order). Nearby vertex numbers are nearby in space.
+Array<int> walkOrder(const Array<Segment>& segments, std::size_t vertexCount)
+{
+  const std::size_t m = segments.size();
+  const double scale = vertexCount > 0 ? double(m) / double(vertexCount) : 0.0;
+  auto bucket = [&](const Segment& s) {
+    const auto b = static_cast<std::size_t>(double(std::min(s[0], s[1])) * scale);
+    return std::min(b, m - 1);
+  };
+  Array<int> start;
+  start.assign(m + 1, 0);
+  for (const Segment& s : segments)
+    ++start[bucket(s) + 1];
+  for (std::size_t b = 0; b < m; ++b)
+    start[b + 1] += start[b];
+  Array<int> order(m);
+  for (std::size_t i = 0; i < m; ++i)
+    order[start[bucket(segments[i])]++] = static_cast<int>(i);
+  return order;
+}
+
 } // namespace
 
 Walk walkSegments(const OverlayEdges& ov, const Overlay& overlay, const Array<Segment>& segments,
-  double sinTheta1, RunContext& run)
+  double sinTheta1, RunContext& run, const Array<int>* order)
 {
   Walk out;
   Walker walker(ov, overlay, sinTheta1, out);
-  for (std::size_t s = 0; s < segments.size(); ++s)
+  // In the order of their smaller vertex, which the overlay numbers along a
+  // Hilbert curve: consecutive walks then touch nearby triangles. In index
+  // order (random on a segment soup) each walk starts with cache misses:
+  // stitch phase on random-segments 1.2e6 1.65-1.70 -> 1.28-1.33 s.
+  const Array<int> spatial = order ? Array<int>() : walkOrder(segments, overlay.mesh.points.size());
+  const Array<int>& walkIn = order ? *order : spatial;
+  out.firstPiece.assign(segments.size(), -1);
+  for (std::size_t k = 0; k < walkIn.size(); ++k)
   {
-    walker.walk(static_cast<int>(s), segments[s][0], segments[s][1]);
-    run.tick(double(s) / double(segments.size()), 256);
+    const int s = walkIn[k];
+    out.firstPiece[s] = static_cast<int>(out.pieces.size());
+    walker.walk(s, segments[s][0], segments[s][1]);
+    run.tick(double(k) / double(segments.size()), 256);
   }
   walker.findSegmentCrossings();
   return out;
@@ -629,10 +684,10 @@ PlanarGraph stitch(OverlayEdges ov, Array<Point> points, const Array<char>& isIn
 
   // Input subsegments: each piece, split at its kept crossings. A piece along
   // an uncrossed overlay edge is that edge, added above.
-  for (const Piece& p : walk.pieces)
-  {
+  forEachPieceInSegmentOrder(walk, [&](int piece) {
+    const Piece& p = walk.pieces[piece];
     if (p.duplicate || (p.overlayEdge >= 0 && !(flags[p.overlayEdge] & HalfCrossed)))
-      continue;
+      return;
     int prev = p.v0;
     for (int k = p.firstCrossing; k < p.firstCrossing + p.crossingCount; ++k)
     {
@@ -646,7 +701,7 @@ PlanarGraph stitch(OverlayEdges ov, Array<Point> points, const Array<char>& isIn
     addEdge(prev, p.v1, true, OpenBoth);
     if (inspect && p.overlayEdge < 0)
       inspect->push_back({ prev, p.v1, EdgeInput });
-  }
+  });
   return g;
 }
 

@@ -90,18 +90,26 @@ struct SegmentCrossing
   Point p;
 };
 
+/// The walks' results. Segments are walked in spatial order, not in index
+/// order, so pieces and crossings come in that order; firstPiece gives each
+/// segment's pieces (contiguous, along the segment) so that every use that
+/// affects the output can visit them in segment order, as if walked so.
 struct Walk
 {
   Array<Piece> pieces;
   Array<Crossing> crossings;
+  Array<int> firstPiece; ///< per segment: the index of its first piece
   Array<SegmentCrossing> segmentCrossings;
   std::size_t splitsAtInputVertices = 0;
   std::size_t duplicatePieces = 0;
 };
 
-/// Walk every segment (endpoints given as overlay vertices) through the overlay.
+/// Walk every segment (endpoints given as overlay vertices) through the overlay,
+/// in the given order (a permutation of the segment indices) or, by default,
+/// in the spatial order of their first vertex. The stitched graph does not
+/// depend on the order.
 Walk walkSegments(const OverlayEdges& ov, const Overlay& overlay, const Array<Segment>& segments,
-  double sinTheta1, RunContext& run);
+  double sinTheta1, RunContext& run, const Array<int>* order = nullptr);
 
 /// Sides of a planar-graph edge that lie in a face still to be completed.
 enum OpenSide : std::uint8_t

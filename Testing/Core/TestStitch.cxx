@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <random>
@@ -241,4 +242,79 @@ TEST(Stitch, WalksFollowTheSegmentInOrder)
   ASSERT_FALSE(s.walk.pieces.empty());
   EXPECT_EQ(s.walk.pieces.front().v0, s.overlay.inputVertex[0]);
   EXPECT_EQ(s.walk.pieces.back().v1, s.overlay.inputVertex[1]);
+}
+
+/// Segments are walked in spatial order; everything stitching makes from the
+/// walks must be what walks in index order would give: the same graph, edge
+/// for edge, the same inspected edges and the same segment crossings.
+TEST(Stitch, TheStitchedGraphDoesNotDependOnTheWalkOrder)
+{
+  for (unsigned seed = 1; seed <= 6; ++seed)
+  {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> U(0, 1);
+    Array<Point> pts;
+    Array<Segment> segs;
+    for (int i = 0; i < 60; ++i) // long random segments: many cross
+    {
+      pts.push_back({ U(rng), U(rng) });
+      pts.push_back({ U(rng), U(rng) });
+      segs.push_back({ 2 * i, 2 * i + 1 });
+    }
+    // Overlapping collinear segments share pieces (duplicates), and one
+    // passes exactly through another's crossing points.
+    const int c = static_cast<int>(pts.size());
+    for (double x : { 0.125, 0.375, 0.625, 0.875 })
+      pts.push_back({ x, 0.5 });
+    segs.push_back({ c, c + 2 });
+    segs.push_back({ c + 1, c + 3 });
+    segs.push_back({ c, c + 3 });
+    Stitched s = stitchInput(pts, segs, 30);
+    ASSERT_GT(s.walk.segmentCrossings.size(), 20u) << "seed " << seed;
+    ASSERT_GT(s.walk.duplicatePieces, 0u) << "seed " << seed;
+
+    const std::size_t m = s.segments.size();
+    Array<int> identity(m), reversed(m), shuffled(m);
+    for (std::size_t i = 0; i < m; ++i)
+      identity[i] = reversed[m - 1 - i] = shuffled[i] = static_cast<int>(i);
+    std::shuffle(shuffled.begin(), shuffled.end(), rng);
+    RunContext run(nullptr);
+    const double sinTheta1 = std::sin(30 * kPi / 180);
+    Statistics refStats;
+    Array<Edge> refEdges;
+    const Walk ref = walkSegments(s.ov, s.overlay, s.segments, sinTheta1, run, &identity);
+    const PlanarGraph g0 =
+      stitch(s.ov, s.overlay.mesh.points, s.overlay.isInput, ref, &refEdges, refStats);
+    const std::array<const Array<int>*, 3> orders{ &reversed, &shuffled, nullptr };
+    for (const Array<int>* order : orders)
+    {
+      const Walk w = walkSegments(s.ov, s.overlay, s.segments, sinTheta1, run, order);
+      ASSERT_EQ(w.segmentCrossings.size(), ref.segmentCrossings.size()) << "seed " << seed;
+      for (std::size_t k = 0; k < w.segmentCrossings.size(); ++k)
+      {
+        const SegmentCrossing &x = w.segmentCrossings[k], &y = ref.segmentCrossings[k];
+        EXPECT_TRUE(x.a == y.a && x.b == y.b && x.p == y.p)
+          << "seed " << seed << ", crossing " << k;
+      }
+      EXPECT_EQ(w.duplicatePieces, ref.duplicatePieces);
+      Statistics stats;
+      Array<Edge> edges;
+      const PlanarGraph g =
+        stitch(s.ov, s.overlay.mesh.points, s.overlay.isInput, w, &edges, stats);
+      EXPECT_TRUE(g.points == g0.points) << "seed " << seed;
+      EXPECT_TRUE(g.origin == g0.origin) << "seed " << seed;
+      EXPECT_TRUE(g.intact == g0.intact) << "seed " << seed;
+      EXPECT_TRUE(g.intactAdjacency.nbr == g0.intactAdjacency.nbr) << "seed " << seed;
+      EXPECT_TRUE(g.edges == g0.edges) << "seed " << seed;
+      EXPECT_TRUE(g.constrained == g0.constrained) << "seed " << seed;
+      EXPECT_TRUE(g.openSides == g0.openSides) << "seed " << seed;
+      ASSERT_EQ(edges.size(), refEdges.size()) << "seed " << seed;
+      for (std::size_t k = 0; k < edges.size(); ++k)
+        EXPECT_TRUE(edges[k].a == refEdges[k].a && edges[k].b == refEdges[k].b &&
+          edges[k].flags == refEdges[k].flags)
+          << "seed " << seed << ", edge " << k;
+      EXPECT_EQ(stats.goodCrossings, refStats.goodCrossings);
+      EXPECT_EQ(stats.badCrossings, refStats.badCrossings);
+    }
+  }
 }
