@@ -476,9 +476,13 @@ Array<int> crossingsByEdge(const Walk& walk)
   for (std::size_t i = 0; i < order.size(); ++i)
     order[i] = static_cast<int>(i);
   const Array<Crossing>& c = walk.crossings;
+  // Ties (crossings at the same point, which stitching refuses) in segment
+  // order, then along the segment: the same error whatever the walk order.
+  const auto segment = [&](int x) { return walk.pieces[c[x].piece].segment; };
   std::sort(order.begin(), order.end(), [&](int a, int b) {
     return c[a].edge != c[b].edge ? c[a].edge < c[b].edge
       : c[a].s != c[b].s          ? c[a].s < c[b].s
+      : segment(a) != segment(b)  ? segment(a) < segment(b)
                                   : a < b;
   });
   return order;

@@ -98,7 +98,7 @@ struct Walk
 {
   Array<Piece> pieces;
   Array<Crossing> crossings;
-  Array<int> firstPiece; ///< per segment: the index of its first piece
+  Array<int> firstPiece; ///< per segment: where its pieces start (none if it has none)
   Array<SegmentCrossing> segmentCrossings;
   std::size_t splitsAtInputVertices = 0;
   std::size_t duplicatePieces = 0;
@@ -106,7 +106,7 @@ struct Walk
 
 /// Walk every segment (endpoints given as overlay vertices) through the overlay,
 /// in the given order (a permutation of the segment indices) or, by default,
-/// in the spatial order of their first vertex. The stitched graph does not
+/// in the spatial order of their smaller vertex. The stitched graph does not
 /// depend on the order.
 Walk walkSegments(const OverlayEdges& ov, const Overlay& overlay, const Array<Segment>& segments,
   double sinTheta1, RunContext& run, const Array<int>* order = nullptr);
