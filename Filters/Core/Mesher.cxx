@@ -345,10 +345,10 @@ void Mesher::meshRounds(Work& w)
 
     t = Clock::now();
     run.phase("stitch", 0.6, 0.75);
+    // From here on the compact copy serves: the refinement's triangles are
+    // freed, and their pages (kept by the Reuse scope) hold the later phases'
+    // arrays.
     OverlayEdges ov = compactOverlay(overlay.mesh);
-    // From here on the compact copy serves: free the refinement's triangles,
-    // whose pages (kept by the Reuse scope) then hold the later phases' arrays.
-    overlay.mesh.releaseTriangles();
     for (Segment& s : segments)
       s = { overlay.inputVertex[s[0]], overlay.inputVertex[s[1]] };
     Walk walk = walkSegments(ov, overlay, segments, sinTheta1, run);

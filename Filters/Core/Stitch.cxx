@@ -12,8 +12,13 @@
 namespace osm
 {
 
-OverlayEdges compactOverlay(const Triangulation& mesh)
+OverlayEdges compactOverlay(Triangulation& mesh)
 {
+  // The core's peak memory is here, where the slots and their compact copy
+  // both live, so nothing else is: the slots' vertex links go first, a
+  // slot's mark (the cavity search's stamp, unused from here on) holds its
+  // compact index, and the compact vertex links come once the slots are gone.
+  Array<int>().swap(mesh.vtri);
   OverlayEdges ov;
   // Triangles in the order of their smallest vertex (a counting sort): with
   // vertices in spatial order, neighbours in the mesh are near in memory.
@@ -27,8 +32,6 @@ OverlayEdges compactOverlay(const Triangulation& mesh)
       ++start[lowest(t) + 1];
   for (std::size_t v = 0; v + 1 < start.size(); ++v)
     start[v + 1] += start[v];
-  Array<int> index;
-  index.assign(static_cast<std::size_t>(mesh.slots()), -1);
   // Stitching makes the intact triangles and their adjacency out of tris and
   // nbr in place, and completion appends to them: room now (untouched, it
   // costs only address space) spares copying them then.
@@ -45,22 +48,24 @@ OverlayEdges compactOverlay(const Triangulation& mesh)
   {
     if (!mesh.alive(t))
       continue;
-    index[t] = start[lowest(t)]++;
-    ov.tris[index[t]] = mesh.tri[t].v;
+    const int c = start[lowest(t)]++;
+    mesh.tri[t].mark = static_cast<std::uint32_t>(c);
+    ov.tris[c] = mesh.tri[t].v;
   }
   Array<int>().swap(start);
   ov.nbr.resize(ov.tris.size());
   for (int t = 0; t < mesh.slots(); ++t)
   {
-    const int c = index[t];
-    if (c < 0)
+    if (!mesh.alive(t))
       continue;
+    std::array<int, 3>& nbr = ov.nbr[mesh.tri[t].mark];
     for (int i = 0; i < 3; ++i)
     {
       const int u = mesh.tri[t].n[i];
-      ov.nbr[c][i] = u < 0 ? -1 : index[u];
+      nbr[i] = u < 0 ? -1 : static_cast<int>(mesh.tri[u].mark);
     }
   }
+  mesh.releaseTriangles();
   // In this order, near in space, vtri is written near in memory too.
   ov.vtri.assign(mesh.points.size(), -1);
   for (int c = 0; c < static_cast<int>(ov.tris.size()); ++c)

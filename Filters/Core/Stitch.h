@@ -58,7 +58,9 @@ struct OverlayEdges
   std::size_t idBound() const { return 3 * tris.size(); }
 };
 
-OverlayEdges compactOverlay(const Triangulation& mesh);
+/// The overlay's live triangles in compact form. Releases the mesh's
+/// triangles (its points stay): they are not needed after this.
+OverlayEdges compactOverlay(Triangulation& mesh);
 
 /// A maximal part of a segment between two overlay vertices.
 struct Piece
