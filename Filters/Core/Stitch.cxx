@@ -371,7 +371,9 @@ void Walker::findSegmentCrossings()
     for (std::size_t i = k; i < end; ++i)
     {
       const Piece& p = out.pieces[triPiece[i].second];
-      for (std::size_t j = i + 1; j < end && !p.duplicate; ++j)
+      if (p.duplicate)
+        continue;
+      for (std::size_t j = i + 1; j < end; ++j)
       {
         const Piece& q = out.pieces[triPiece[j].second];
         if (q.duplicate || q.segment == p.segment)
@@ -391,7 +393,9 @@ void Walker::findSegmentCrossings()
   std::sort(edgePiece.begin(), edgePiece.end());
   forEachPieceInSegmentOrder(out, [&](int piece) {
     const Piece& p = out.pieces[piece];
-    for (int k = p.firstCrossing; k < p.firstCrossing + p.crossingCount && !p.duplicate; ++k)
+    if (p.duplicate)
+      return;
+    for (int k = p.firstCrossing; k < p.firstCrossing + p.crossingCount; ++k)
     {
       const Crossing& c = out.crossings[k];
       // The last piece along the edge (there is one: two along the same edge
