@@ -15,7 +15,7 @@ namespace osm
 OverlayEdges compactOverlay(Triangulation& mesh)
 {
   // The core's peak memory is here, where the slots and their compact copy
-  // both live, so nothing else is: the slots' vertex links go first, a
+  // both live, and nothing else should: the slots' vertex links go first, a
   // slot's mark (the cavity search's stamp, unused from here on) holds its
   // compact index, and the compact vertex links come once the slots are gone.
   Array<int>().swap(mesh.vtri);

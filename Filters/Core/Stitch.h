@@ -59,7 +59,8 @@ struct OverlayEdges
 };
 
 /// The overlay's live triangles in compact form. Releases the mesh's
-/// triangles (its points stay): they are not needed after this.
+/// triangles and vertex links (its points stay): nothing after this walks or
+/// inserts into the overlay.
 OverlayEdges compactOverlay(Triangulation& mesh);
 
 /// A maximal part of a segment between two overlay vertices.
