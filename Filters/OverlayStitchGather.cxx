@@ -298,6 +298,12 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
       }
       if (cells->GetNumberOfCells() > 0)
       {
+        // The serial filter's storage (32-bit when the ids fit), so that the
+        // gathered output is the serial one to the byte when written.
+        if (cells->CanConvertTo32BitStorage())
+        {
+          cells->ConvertTo32BitStorage();
+        }
         switch (kind)
         {
           case 0:
