@@ -7,9 +7,9 @@
 // random-segments 1e3 spent a third of its time in 240 page faults. While a
 // pages::Reuse scope lives, such blocks come instead from chunks of the pool's
 // own, each one 2 MiB huge page, and freed blocks are handed out again. The
-// blocks asked for in a scope before its first one of 64 KiB or more still
-// come from operator new, so that small meshes do not clear a huge page for a
-// few blocks. Outside a scope, and with huge pages turned off, operator new
+// blocks asked for in a scope before its first one of kFirstPooledBytes or
+// more still come from operator new, so that small meshes do not clear a huge
+// page for a few blocks. Outside a scope, and with huge pages turned off, operator new
 // serves them all.
 //
 // A block handed out in a scope may outlive it (a Result's arrays): its chunk
@@ -28,6 +28,10 @@ namespace pool
 
 /// Blocks from this size up (and below pages::kOwnMappingBytes) are pooled.
 constexpr std::size_t kPooledBytes = std::size_t{ 4 } << 10;
+
+/// A scope pools from its first block of this size on (a mesh of about a
+/// thousand triangles); the blocks before come from operator new.
+constexpr std::size_t kFirstPooledBytes = std::size_t{ 32 } << 10;
 
 /// A block of at least bytes (rounded up to whole small pages) while a scope
 /// lives and pools, or null: the caller then takes it from operator new (also

@@ -44,7 +44,8 @@ bool inChunk(const void* p)
   return mappingFlags(p).find(" hg") != std::string::npos;
 }
 
-/// Opens a scope and asks for a block of 64 KiB, so that the pool serves
+/// Opens a scope and asks for a block of 64 KiB (at least kFirstPooledBytes),
+/// so that the pool serves
 /// every medium block from then on.
 struct PoolScope
 {
@@ -72,16 +73,17 @@ TEST(BlockPool, TheFirstBlocksOfAScopeComeFromOperatorNewThenFromAChunk)
     GTEST_SKIP() << "huge pages off, or no /proc/self/smaps";
   const std::size_t before = pool::chunks();
   const pages::Reuse reuse;
-  Array<char> small = block(60, 's');
-  EXPECT_EQ(pool::chunks(), before) << "before the scope's first block of 64 KiB";
+  const std::size_t firstKiB = pool::kFirstPooledBytes / kKiB;
+  Array<char> small = block(firstKiB - 4, 's');
+  EXPECT_EQ(pool::chunks(), before) << "before the scope's first block of kFirstPooledBytes";
   EXPECT_FALSE(inChunk(small.data()));
-  Array<char> first = block(64, 'f');
-  EXPECT_EQ(pool::chunks(), before + 1) << "from the scope's first block of 64 KiB on";
+  Array<char> first = block(firstKiB, 'f');
+  EXPECT_EQ(pool::chunks(), before + 1) << "from the scope's first block of kFirstPooledBytes on";
   EXPECT_TRUE(inChunk(first.data()));
   EXPECT_EQ(reinterpret_cast<std::uintptr_t>(first.data()) % (2 * kKiB * kKiB), 0u)
     << "the front of a fresh chunk";
   Array<char> after = block(8, 'a');
-  EXPECT_EQ(after.data(), first.data() + 64 * kKiB) << "any medium block after it";
+  EXPECT_EQ(after.data(), first.data() + firstKiB * kKiB) << "any medium block after it";
   // Freed inside the scope, operator new's block still goes back to it.
   small = Array<char>();
   EXPECT_EQ(after.back(), 'a');
