@@ -9,6 +9,7 @@
 #include "Overlay.h"
 #include "Predicates.h"
 #include "RunContext.h"
+#include "Series.h"
 #include "Stitch.h"
 
 #include <algorithm>
@@ -25,11 +26,11 @@ namespace osm
 
 double predictedMaxAngleDeg(double minAngleDeg)
 {
-  const double pi = std::acos(-1.0);
-  const double theta1 = minAngleDeg * pi / 180.0;
+  const double theta1 = minAngleDeg * series::kPi / 180.0;
   const double gamma = gammaForMinAngle(minAngleDeg);
-  const double theta2 = std::asin(1.0 / (2.0 * gamma * (2.0 * gamma + std::cos(theta1))));
-  return 180.0 - theta2 * 180.0 / pi;
+  // The argument is at most 0.23 (at θ1 = 35°, the largest Options allows).
+  const double theta2 = series::asin(1.0 / (2.0 * gamma * (2.0 * gamma + series::cos(theta1))));
+  return 180.0 - theta2 * 180.0 / series::kPi;
 }
 
 EdgeClass edgeClass(std::uint8_t flags)
@@ -323,7 +324,7 @@ Domain Mesher::chooseDomain(const Work& w, Array<int>& hull)
 void Mesher::meshRounds(Work& w)
 {
   Statistics& st = res.stats;
-  const double sinTheta1 = std::sin(options.minAngleDeg * std::acos(-1.0) / 180.0);
+  const double sinTheta1 = series::sin(options.minAngleDeg * series::kPi / 180.0);
   // Crossing points are rounded, so splitting may expose new tiny crossings:
   // repeat a few times, then give up with a clear error.
   for (int round = 0;; ++round)
@@ -426,7 +427,7 @@ void Mesher::meshRounds(Work& w)
 /// dot|dot| against bound * |u|^2 |v|^2: no square root or division per angle.
 void angleExtremes(const TriMesh& mesh, double& minDeg, double& maxDeg)
 {
-  const double deg = 180.0 / std::acos(-1.0);
+  const double deg = 180.0 / series::kPi;
   // Far above the rounding of the filter's products and of the conversions.
   const double slack = 1e-9;
   auto signedSquare = [](double x) { return x * std::fabs(x); };
@@ -463,8 +464,8 @@ void angleExtremes(const TriMesh& mesh, double& minDeg, double& maxDeg)
         deg * angleAt(mesh.vertices[t[j]], mesh.vertices[t[i]], mesh.vertices[t[k]]);
       minDeg = std::min(minDeg, angle);
       maxDeg = std::max(maxDeg, angle);
-      below = signedSquare(std::cos(minDeg / deg) - slack);
-      above = signedSquare(std::cos(maxDeg / deg) + slack);
+      below = signedSquare(series::cos(minDeg / deg) - slack);
+      above = signedSquare(series::cos(maxDeg / deg) + slack);
     };
     corner(0, 1, 2);
     corner(1, 2, 0);

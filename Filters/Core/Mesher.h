@@ -127,7 +127,8 @@ struct Result
 /// ok = false with a message instead. Deterministic: same input, same output.
 Result mesh(const Pslg& input, const Options& options = {}, Progress* progress = nullptr);
 
-/// θ2 and the bound 180° − θ2 on every output angle, for an overlay angle θ1 (degrees).
+/// θ2 and the bound 180° − θ2 on every output angle, for an overlay angle θ1
+/// (degrees), 0 < θ1 <= 60: the range Options allows (1 to 35) and more.
 double predictedMaxAngleDeg(double minAngleDeg);
 
 } // namespace osm

@@ -13,6 +13,7 @@
 
 #include "HugePages.h"
 #include "Predicates.h"
+#include "Series.h"
 #include "SizeQueue.h"
 #include "SpatialSort.h"
 
@@ -27,8 +28,7 @@ namespace osm
 
 double gammaForMinAngle(double minAngleDeg)
 {
-  const double pi = std::acos(-1.0);
-  return 1.0 / (2.0 * std::sin(minAngleDeg * pi / 180.0));
+  return 1.0 / (2.0 * series::sin(minAngleDeg * series::kPi / 180.0));
 }
 
 namespace

@@ -41,6 +41,7 @@ struct Overlay
 Overlay buildOverlay(const Array<Point>& points, const OverlayOptions& options, RunContext& run);
 
 /// Gap ratio Γ for an overlay minimum angle θ1 (degrees): sin θ1 = 1 / (2Γ).
+/// For 0 < θ1 <= 90, the range Options allows (1 to 35) and more.
 double gammaForMinAngle(double minAngleDeg);
 
 } // namespace osm
