@@ -120,7 +120,7 @@ void* take(std::size_t bytes)
   // (120-220 us against 12 us on the benchmark machine): a chunk pays only in
   // a mesh large enough to need a block of 32 KiB (about a thousand
   // triangles), and the blocks before the first such one come from operator
-  // new. From 16 KiB on, meshes of 100 triangles slowed down by up to 24%.
+  // new. Pooling from 16 KiB slowed meshes of about 100 triangles by up to 24%.
   pl.pooling = pl.pooling || size >= kFirstPooledBytes;
   if (!pl.pooling)
     return nullptr;

@@ -9,8 +9,8 @@
 // own, each one 2 MiB huge page, and freed blocks are handed out again. The
 // blocks asked for in a scope before its first one of kFirstPooledBytes or
 // more still come from operator new, so that small meshes do not clear a huge
-// page for a few blocks. Outside a scope, and with huge pages turned off, operator new
-// serves them all.
+// page for a few blocks. Outside a scope, and with huge pages turned off,
+// operator new serves them all.
 //
 // A block handed out in a scope may outlive it (a Result's arrays): its chunk
 // then stays mapped and whole (2 MiB resident, its free parts unused) until

@@ -30,6 +30,8 @@ namespace
 {
 
 constexpr std::size_t kKiB = 1024;
+// The sizes below take a block just under the threshold and PoolScope's 64 KiB.
+static_assert(pool::kFirstPooledBytes >= 8 * kKiB && pool::kFirstPooledBytes <= 64 * kKiB);
 
 /// A medium block that takes this many KiB of its chunk, filled with c (a
 /// little less than that many KiB, for AddressSanitizer's red zone).
@@ -45,8 +47,7 @@ bool inChunk(const void* p)
 }
 
 /// Opens a scope and asks for a block of 64 KiB (at least kFirstPooledBytes),
-/// so that the pool serves
-/// every medium block from then on.
+/// so that the pool serves every medium block from then on.
 struct PoolScope
 {
   pages::Reuse reuse;

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -95,6 +96,9 @@ TEST(Series, TheMeshersConstantsAsWithLibm)
   // ulp or two of Γ and of the bound at any angle.
   for (int deg = 1; deg <= 35; ++deg)
   {
+    const double theta1 = deg * series::kPi / 180.0;
+    EXPECT_EQ(series::sin(theta1), std::sin(theta1)) << deg;
+    EXPECT_EQ(series::cos(theta1), std::cos(theta1)) << deg;
     EXPECT_EQ(gammaForMinAngle(deg), libmGamma(deg)) << deg;
     EXPECT_EQ(predictedMaxAngleDeg(deg), libmPredictedMaxAngle(deg)) << deg;
   }
