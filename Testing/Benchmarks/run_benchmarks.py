@@ -17,6 +17,7 @@ note, if it is missing).
 import argparse
 import datetime
 import json
+import mmap
 import os
 import platform
 import resource
@@ -130,6 +131,45 @@ def spawn(cmd, timeout):
     if code == -signal.SIGXCPU or (code == -signal.SIGKILL and cpu and cpu >= CPU_LIMIT):
         status = "timeout"
     return status, code, out, err, wall, (maxrss, cpu)
+
+
+# This virtual machine's host backs the guest's memory at its first touch and
+# takes freed memory back within about 30 seconds (virtio_balloon's free page
+# reporting; BENCHMARKS.md, item 47): a run that needs more memory than the runs
+# just before it pays the host's first touches too, about 4.4 ms per 2 MiB page
+# against 0.13 ms once backed. The scaling pass compares each size with the
+# smallest one of its round, whose memory (freed a moment before) is mostly
+# backed; so before each of its runs it touches WARM_FACTOR times the size's
+# main-pass peak and frees it. The guest does not hand the freed pages out first,
+# hence the factor (1.25 times the peak left most of the host's cost).
+WARM_FACTOR = 4
+
+
+def available_bytes():
+    try:
+        with open("/proc/meminfo") as f:
+            for line in f:
+                if line.startswith("MemAvailable:"):
+                    return int(line.split()[1]) * 1024
+    except (OSError, ValueError, IndexError):
+        pass
+    return 0
+
+
+def back_memory(nbytes):
+    """Touches nbytes of fresh memory (in huge pages where the kernel gives them,
+    leaving 2 GiB free), then frees it. Returns the bytes touched."""
+    nbytes = min(nbytes, available_bytes() - (2 << 30))
+    if nbytes <= 0:
+        return 0
+    m = mmap.mmap(-1, nbytes, flags=mmap.MAP_PRIVATE | mmap.MAP_ANONYMOUS)
+    try:
+        if hasattr(mmap, "MADV_HUGEPAGE"):
+            m.madvise(mmap.MADV_HUGEPAGE)
+        m[::mmap.PAGESIZE] = b"\x01" * len(range(0, nbytes, mmap.PAGESIZE))
+    finally:
+        m.close()
+    return nbytes
 
 
 def run_once(exe, spec, args, timeout):
@@ -468,14 +508,16 @@ SCALING_FAMILIES = ("random-segments", "points", "spread")
 
 
 def scaling_specs(results):
-    """Per family, the (spec, triangles) of the core's runs with >= 1e4 triangles."""
+    """Per family, the (spec, triangles, peak RSS or 0) of the core's runs with >= 1e4
+    triangles."""
     specs = {}
     for e in results:
         if e["tool"] == "osm" and e["class"] in SCALING_FAMILIES and ok(e):
             t = e["first"]["out_triangles"]
+            peak = e["first"].get("process_maxrss") or 0
             if 1e4 <= t <= 1.5e7:
-                specs.setdefault(e["class"], []).append((e["n"], e["input"], t))
-    return {f: [(spec, t) for _, spec, t in sorted(v)] for f, v in specs.items() if len(v) >= 2}
+                specs.setdefault(e["class"], []).append((e["n"], e["input"], t, peak))
+    return {f: [x[1:] for x in sorted(v)] for f, v in specs.items() if len(v) >= 2}
 
 
 def run_scaling_pass(exe, results, args):
@@ -483,15 +525,17 @@ def run_scaling_pass(exe, results, args):
     specs = scaling_specs(results)
     if not specs:
         return None
-    order = [(fam, spec, t) for fam, v in specs.items() for spec, t in v]
+    order = [(fam, spec, t, peak) for fam, v in specs.items() for spec, t, peak in v]
     runs = []
     print("scaling pass: %d rounds over %d inputs" % (SCALING_ROUNDS, len(order)), flush=True)
     for rnd in range(SCALING_ROUNDS):
-        for fam, spec, t in (order if rnd % 2 == 0 else order[::-1]):
-            cpu, system = [], []
+        for fam, spec, t, peak in (order if rnd % 2 == 0 else order[::-1]):
+            cpu, system, warmed = [], [], []
             while True:
+                warmed.append(back_memory(WARM_FACTOR * peak))
                 r = run_once(exe, spec, ["--no-check"], args.timeout)
                 if r["status"] != "ok" or r.get("out_triangles") != t:
+                    warmed.pop()
                     break
                 cpu.append(r["cpu_seconds"])
                 system.append(r.get("system_seconds"))
@@ -499,7 +543,7 @@ def run_scaling_pass(exe, results, args):
                     break
             if cpu:
                 runs.append({"round": rnd, "family": fam, "input": spec, "triangles": t,
-                             "cpu": cpu, "system": system})
+                             "cpu": cpu, "system": system, "warmed": warmed})
         print("scaling pass: round %d done" % (rnd + 1), flush=True)
     return {"rounds": SCALING_ROUNDS, "runs": runs}
 
@@ -1471,7 +1515,11 @@ Tried after 39 and not kept: renumbering the overlay's vertices along the Hilber
 
 45. **Output cells in 32-bit storage** (`vtkOverlayStitchMesher`, found by looking at what the filter's output holds per triangle: 24 bytes of connectivity and 8 of offsets in `vtkIdType`, more than the angles and region id together). The filter now builds each port's `vtkCellArray` from `vtkTypeInt32Array` offsets and connectivity whenever the ids fit (below about 700 million triangles), 64-bit beyond; the MPI gather converts its cells the same way, so that serial and parallel outputs stay byte-identical. Measured after suite run 10, one run each of the code before (575f1f9) and after, each with its own build of the filter library: `osm-mesh` on random-segments 1.2e6 (writing .vtp), GNU time's maximum RSS 1,810 -> 1,485 MB (twice each, within 0.1 MB), 188 -> 154 bytes per output triangle, and the .vtp file 364.9 -> 355.6 MB; `bench_vtk_osm`, peak increase during `Update()`: random-segments 2e5 181 -> 157 MB, 1.2e6 958 -> 808 MB.
 
-46. **A fresh process's fixed costs on meshes of up to 10,000 triangles** (`BlockPool`, `Series`, found by recording every page fault of a call with its call stack, `perf record -e page-faults --call-graph dwarf`, and timing first touches on this machine again: 12 us per fresh 4 KiB page, 120-220 us per fresh 2 MiB page, and 115-250 us for the first `sin` of a process, 17-56 us for the first `asin`). (a) A call now pools its medium blocks from its first block of 32 KiB instead of 64 KiB: meshes of 500 to 2,000 triangles never asked for 64 KiB and took every block in fresh small pages; page faults in the call: la.poly 71 -> 25, guitar 54 -> 26, airfoil_exterior 53 -> 23. (b) The sine, cosine and arcsine of the constants from the minimum angle, and the cosines in the angle statistics' filter, come from Taylor series of the project's own (`Filters/Core/Series.h`): within an ulp of libm's for the constants and equal to them at whole degrees, within 1e-15 for the filter's cosines, which only widen a 1e-9 margin (`Series.*` tests); libm's first call faulted in 5 to 7 pages of its code and tables. Wall time of the call, median of 21 fresh processes alternating the code before (8bf18db) / (b) alone / both: A.poly 1.297 / 1.198 / 1.262 ms, face 1.081 / 1.154 / 1.135, clusters 0.995 / 0.990 / 0.855, double_hex 1.176 / 1.088 / 1.150, fish-and-rectangle 1.020 / 0.977 / 0.955, guitar 1.851 / 1.766 / 1.571, airfoil_exterior 1.644 / 1.775 / 1.464, la 2.332 / 2.310 / 1.912, lake_superior 3.267 / 3.210 / 3.149, square_circle_hole 2.073 / 2.013 / 2.001, nazca_monkey 4.786 / 4.648 / 4.431, airfoil 3.566 / 3.572 / 3.395, img5 3.019 / 2.916 / 2.905; from Constrained_Sweden.poly (36k triangles) and random-segments 1e3 up, within 1.5% either way. The same 144 output files (`osm-mesh`, every real input and 7 generated ones, both domains, byte for byte). Tried and not kept: pooling from 16 KiB (41 fresh processes each: face.poly +24%, fish-and-rectangle +10%, where a huge page was cleared for a few blocks)."""
+46. **A fresh process's fixed costs on meshes of up to 10,000 triangles** (`BlockPool`, `Series`, found by recording every page fault of a call with its call stack, `perf record -e page-faults --call-graph dwarf`, and timing first touches on this machine again: 12 us per fresh 4 KiB page, 120-220 us per fresh 2 MiB page, and 115-250 us for the first `sin` of a process, 17-56 us for the first `asin`). (a) A call now pools its medium blocks from its first block of 32 KiB instead of 64 KiB: meshes of 500 to 2,000 triangles never asked for 64 KiB and took every block in fresh small pages; page faults in the call: la.poly 71 -> 25, guitar 54 -> 26, airfoil_exterior 53 -> 23. (b) The sine, cosine and arcsine of the constants from the minimum angle, and the cosines in the angle statistics' filter, come from Taylor series of the project's own (`Filters/Core/Series.h`): within an ulp of libm's for the constants and equal to them at whole degrees, within 1e-15 for the filter's cosines, which only widen a 1e-9 margin (`Series.*` tests); libm's first call faulted in 5 to 7 pages of its code and tables. Wall time of the call, median of 21 fresh processes alternating the code before (8bf18db) / (b) alone / both: A.poly 1.297 / 1.198 / 1.262 ms, face 1.081 / 1.154 / 1.135, clusters 0.995 / 0.990 / 0.855, double_hex 1.176 / 1.088 / 1.150, fish-and-rectangle 1.020 / 0.977 / 0.955, guitar 1.851 / 1.766 / 1.571, airfoil_exterior 1.644 / 1.775 / 1.464, la 2.332 / 2.310 / 1.912, lake_superior 3.267 / 3.210 / 3.149, square_circle_hole 2.073 / 2.013 / 2.001, nazca_monkey 4.786 / 4.648 / 4.431, airfoil 3.566 / 3.572 / 3.395, img5 3.019 / 2.916 / 2.905; from Constrained_Sweden.poly (36k triangles) and random-segments 1e3 up, within 1.5% either way. The same 144 output files (`osm-mesh`, every real input and 7 generated ones, both domains, byte for byte). Tried and not kept: pooling from 16 KiB (41 fresh processes each: face.poly +24%, fish-and-rectangle +10%, where a huge page was cleared for a few blocks).
+
+47. **What a fresh process pays on the smallest inputs, and where this machine's memory noise comes from** (measurements only; the code is unchanged, the meshes too). (a) face.poly (95 triangles), timed inside one process: the first call 0.69-0.90 ms, a repeated call 0.15 ms; with a 256 MB cache-thrashing pass between two calls, 0.20-0.30 ms. Before the first call, reading one byte of every executable page of the process (883 pages, 1 ms) and touching 4 MB of heap that the call's allocations then reuse (glibc's trim threshold raised) still leave 0.38-0.41 ms and 8 page faults (stack, libm's tables): about 0.25 ms of the first call is state no page touching warms (branch predictors, TLBs). Mesh_2's whole call on face.poly takes 0.30 ms in a fresh process. The per-phase shares stay alike (overlay 0.26 of 0.53 ms first, 0.08 of 0.16 ms repeated). (b) Populating small pages ahead does not help here: 256 KiB mapped and touched page by page took 0.72-0.91 ms; with `MAP_POPULATE` (or `MADV_POPULATE_WRITE`) the populate took 0.06 ms but the first touches after it still 0.35-0.43 ms, since this guest's shadow page tables charge each page's first access again. (c) The host backs the guest's memory lazily and takes freed memory back: touching 20 GiB took 45.4 s (4.4 ms per 2 MiB page), 1.34 s right after, and 45.8 s again about 15 minutes later (`virtio_balloon`, loaded here, reports free guest memory to the host). That is the occasional 5 ms stall of a huge page (item 46) and part of the large runs' kernel share; warming the memory before a suite run would not last through it. Right after such a warm-up, Constrained_Sweden.poly's first call in a process equalled its second (26-28 ms, against 40 ms with stalls before). (d) Tried and not kept: limiting the refinement to the bounding octagon of the segments' ends (bounds along x + y and x - y as well as x and y) instead of their bounding box. Overlay triangles fell on 9 of the 17 real inputs (A.poly 521 -> 475, guitar 1,262 -> 1,154, img5 3,970 -> 3,576, nazca_monkey 8,543 -> 7,876, Constrained_Sweden 64,037 -> 62,759) but rose on face.poly (212 -> 232, and its output 95 -> 117 triangles) and fish-and-rectangle (327 -> 333): the triangles it leaves unrefined lie far from the input, where the overlay is coarse anyway. The exterior triangles that matter lie along the segments (item 34), where only an exact test against the segments at each triangle's own scale could leave them out.
+
+48. **The scaling pass backs the memory of its runs first** (the suite itself, found when suite run 12, on the same code as run 11, gave random segments x1.53, points x1.48 and spread x1.39 against run 11's x1.34 / x1.34 / x1.05, on a machine booted 20 minutes before). The kernel's share of the 1e7-triangle runs was 20-21% (11-17% in run 11), and on user time alone the growth was the same as before (x1.25 / x1.18 / x1.05). The host of this virtual machine takes freed guest memory back within about 30 s (item 47): random-segments 1.2e6 right after 16 GiB had been touched and freed took 0.49 s of system time, and 1.44-1.52 s when started 30, 60 and 120 s later. The pass's smallest sizes reuse memory freed a moment before; the largest need more than that and pay the host's first touches. So before each run the pass now touches 4 times the size's main-pass peak and frees it (random-segments 1.2e6, system time after touching 1 / 2 / 3 / 4 GiB: 0.98 / 1.02 / 0.40 / 0.33 s; 1.25 times its 750 MB peak left 1.08-1.21 s, as the guest does not hand the freed pages out first). The main pass and every comparison between tools run as before, without it."""
 
 
 def profile_text(p):
@@ -1540,6 +1588,16 @@ def short_name(name):
     return ("".join(out).strip() or name[:60]) + what
 
 
+def warmed_text(data):
+    """What the scaling pass touched before its runs (older suites recorded nothing)."""
+    runs = data["scaling_pass"]["runs"] if data.get("scaling_pass") else []
+    sizes = [b for r in runs for b in r.get("warmed", [])]
+    if not sizes:
+        return "The runs of this report predate it."
+    return "In this suite run: %d of the pass's %d runs, %s MiB at most." % (
+        sum(1 for b in sizes if b), len(sizes), "{:,}".format(max(sizes) >> 20))
+
+
 def notes_text(data, plot_note):
     meta = data["meta"]
     fams = meta["families"]
@@ -1586,6 +1644,14 @@ def notes_text(data, plot_note):
         "time-out), %d s of wall time, %d GiB of address space." % (
             RUNS_FAST, FAST_SECONDS, RUNS, REPEAT_BUDGET,
             meta["timeout"], meta["timeout"] * WALL_FACTOR, MEMORY_LIMIT >> 30),
+        "- **Backed memory (scaling pass only).** This virtual machine's host backs the "
+        "guest's memory at its first touch and takes freed memory back within about 30 s "
+        "(item 47: about 4.4 ms per 2 MiB page then, 0.13 ms once backed), so a large run "
+        "pays first touches that the smallest size of its round, reusing memory freed a "
+        "moment before, mostly does not. In the scaling pass, before each run, the suite "
+        "touches %d times that size's main-pass peak (leaving 2 GiB free) and frees it. "
+        "The main pass, and every comparison between tools, runs without it. %s" % (
+            WARM_FACTOR, warmed_text(data)),
         "- **Memory.** Peak RSS of the child during the meshing call (the kernel's peak mark "
         "is reset just before it); *B/tri* is its increase over the RSS before the call, so "
         "the input's own memory is not counted, the output and all working memory are.",
