@@ -1,5 +1,7 @@
 """Unit tests of the benchmark suite's own logic (no benchmark is run): the
-scaling pass backs each run's memory first (BENCHMARKS.md, item 48)."""
+scaling pass backs each run's memory first (BENCHMARKS.md, item 48); the
+repeated-calls pass times the core and Mesh_2 after unmeasured calls in one
+process (item 49)."""
 import os
 import sys
 import unittest
@@ -82,6 +84,69 @@ class WarmedText(unittest.TestCase):
         data = {"scaling_pass": {"runs": [{"cpu": [1.0]}]}}
         self.assertEqual(rb.warmed_text(data), "The runs of this report predate it.")
         self.assertEqual(rb.warmed_text({}), "The runs of this report predate it.")
+
+
+def real_entry(tool, name, cpu, status="ok"):
+    return {"tool": tool, "class": "real", "n": None, "input": "/data/%s.poly" % name,
+            "name": "%s.poly" % name, "first": {"status": status, "out_triangles": 100},
+            "seconds": [cpu] * 3, "cpu": [cpu] * 3}
+
+
+class RepeatPass(unittest.TestCase):
+    def setUp(self):
+        self.saved = rb.run_once
+        self.calls = []
+
+        def run(exe, spec, args, timeout):
+            self.calls.append((exe, spec, list(args)))
+            cpu = {"bench_osm": 0.002, "bench_cgal_mesh2": 0.001}[exe]
+            return {"status": "ok", "cpu_seconds": cpu,
+                    "warm_calls": int(args[args.index("--warm") + 1])}
+
+        rb.run_once = run
+        self.results = [
+            real_entry("osm", "small", 0.004), real_entry("cgal-mesh2", "small", 0.002),
+            real_entry("osm", "large", 0.5), real_entry("cgal-mesh2", "large", 0.9),
+            real_entry("osm", "nomesh2", 0.004), real_entry("cgal-mesh2", "nomesh2", 120,
+                                                             "timeout"),
+            osm_entry("points", 1000, 9000, None)]
+
+    def tearDown(self):
+        rb.run_once = self.saved
+
+    def test_only_real_inputs_both_tools_mesh_quickly(self):
+        self.assertEqual(rb.repeat_specs(self.results), [("/data/small.poly", "small.poly")])
+
+    def test_alternates_the_tools_each_warmed_up_in_its_process(self):
+        found = {"osm": "bench_osm", "cgal-mesh2": "bench_cgal_mesh2"}
+        data = rb.run_repeat_pass(found, self.results, Args())
+        warm = ["--no-check", "--warm", str(rb.REPEAT_WARMUP)]
+        self.assertEqual(self.calls, [("bench_osm", "/data/small.poly", warm),
+                                      ("bench_cgal_mesh2", "/data/small.poly", warm)]
+                         * rb.REPEAT_RUNS)
+        self.assertEqual(data["runs"][0]["cpu"]["osm"], [0.002] * rb.REPEAT_RUNS)
+
+    def test_reports_the_repeated_and_the_fresh_ratios(self):
+        found = {"osm": "bench_osm", "cgal-mesh2": "bench_cgal_mesh2"}
+        data = {"results": self.results,
+                "repeat_pass": rb.run_repeat_pass(found, self.results, Args())}
+        self.assertEqual(rb.repeat_rows(data), [("small.poly", 0.002, 0.001, 0.5, 0.5)])
+        self.assertEqual(rb.repeat_summary(data),
+                         "in one process after 10 calls, on the 1 inputs both mesh in under "
+                         "0.1 s: faster on 0 of 1 (0 of 1 as fresh processes)")
+        self.assertIn("| small.poly | 2 | 1 | 0.5 | 0.5 |", rb.repeat_text(data))
+
+    def test_a_run_that_did_not_warm_up_is_not_counted(self):
+        rb.run_once = lambda exe, spec, args, timeout: {"status": "ok", "cpu_seconds": 1.0}
+        data = rb.run_repeat_pass({"osm": "a", "cgal-mesh2": "b"}, self.results, Args())
+        self.assertEqual(data["runs"][0]["cpu"], {"osm": [], "cgal-mesh2": []})
+        self.assertEqual(rb.repeat_rows({"results": self.results, "repeat_pass": data}), [])
+
+    def test_without_mesh2_or_older_results_it_says_so(self):
+        self.assertIsNone(rb.run_repeat_pass({"osm": "bench_osm"}, self.results, Args()))
+        self.assertEqual(self.calls, [])
+        self.assertIsNone(rb.repeat_summary({"results": self.results}))
+        self.assertTrue(rb.repeat_text({"results": self.results}).startswith("Not run"))
 
 
 if __name__ == "__main__":
