@@ -421,9 +421,8 @@ inline int driverMain(int argc, char** argv, const char* tool,
 {
   if (argc < 2)
   {
-    std::fprintf(
-      stderr, "usage: %s <file.poly | family:N:seed> [--no-check] [--warm K] [tool options]\n",
-      argv[0]);
+    std::fprintf(stderr,
+      "usage: %s <file.poly | family:N:seed> [--no-check] [--warm K] [tool options]\n", argv[0]);
     return 2;
   }
   const std::string spec = argv[1];
