@@ -433,8 +433,17 @@ inline int driverMain(int argc, char** argv, const char* tool,
   {
     if (std::string(argv[i]) == "--no-check")
       check = false;
-    else if (std::string(argv[i]) == "--warm" && i + 1 < argc)
-      warm = std::max(0, std::atoi(argv[++i]));
+    else if (std::string(argv[i]) == "--warm")
+    {
+      char* end = nullptr;
+      const long k = i + 1 < argc ? std::strtol(argv[++i], &end, 10) : -1;
+      if (!end || *end != '\0' || k < 0 || k > 1000000)
+      {
+        std::fprintf(stderr, "%s: --warm needs a count of calls from 0 to 1000000\n", argv[0]);
+        return 2;
+      }
+      warm = static_cast<int>(k);
+    }
     else
       out.args.push_back(argv[i]);
   }

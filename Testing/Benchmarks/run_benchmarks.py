@@ -1139,8 +1139,9 @@ def targets(data, profile):
     if worse:
         w_ = max(worse, key=lambda x: x[1])
         text += "; slowest relative: %s (OSM takes %s× Mesh_2's time)" % (w_[0], fmt(w_[1], 2))
-    if repeat_summary(data):
-        text += "; %s (see *Repeated calls*)" % repeat_summary(data)
+    repeated = repeat_summary(data)
+    if repeated:
+        text += "; %s (see *Repeated calls*)" % repeated
     out.append(("Core faster than CGAL Mesh_2 on every input", text,
                 not worse and compared > 0))
 
