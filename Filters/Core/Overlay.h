@@ -17,6 +17,9 @@ struct OverlayOptions
   double gamma = 1.0;         ///< radius / shortest-edge bound Γ
   double maxEdgeLength = 0.0; ///< 0: no size bound
   std::size_t maxSteinerPoints = 0;
+  /// Skinny triangles are refined at their off-center instead of their
+  /// circumcenter: fewer Steiner points, the same guarantees (Overlay.cxx).
+  bool offCenters = true;
   /// Where the mesh is wanted: a triangle entirely outside these bounds that
   /// holds no waiting input point is left as it is (no output triangle comes
   /// from it). Off: every triangle of the box is refined.
