@@ -141,6 +141,7 @@ public:
     , maxEdge2(options.maxEdgeLength * options.maxEdgeLength)
     , steinerCap(options.maxSteinerPoints)
     , limited(options.limitRefinement)
+    , beyondGuarantee(options.gamma < 1.0)
     , within(options.refineWithin)
   {}
 
@@ -183,6 +184,7 @@ private:
   const double maxEdge2;
   const std::size_t steinerCap;
   const bool limited;
+  const bool beyondGuarantee; ///< Γ below 1 (θ1 above 30 degrees): refinement need not end
   const Bounds within;
 
   Overlay out;
@@ -306,6 +308,10 @@ void Refiner::countSteiner()
   if (steinerCap > 0 && out.steinerPoints > steinerCap)
     throw Stop{ "the overlay needs more than the allowed " + std::to_string(steinerCap) +
       " Steiner points; raise the cap or coarsen the input" };
+  if (out.steinerPoints > hardCap && beyondGuarantee)
+    throw Stop{ "the overlay refinement exceeded " + std::to_string(hardCap) +
+      " Steiner points without ending: with a minimum angle above 30 degrees it need not end; "
+      "use 30 degrees or less" };
   if (out.steinerPoints > hardCap)
     throw Stop{ "the overlay refinement exceeded " + std::to_string(hardCap) +
       " Steiner points, which suggests a numerical problem with this input" };

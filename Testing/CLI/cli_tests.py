@@ -193,6 +193,19 @@ def group_options():
     check(abs(s.get("Gamma", 0) - 2.0) < 1e-9, "--gamma 2: Gamma = 2", str(s.get("Gamma")))
     default = stats_of(square)
     check(abs(default.get("Theta1Deg", 0) - 30.0) < 1e-9, "default Theta1Deg = 30")
+    # Above 30 degrees refinement has no guarantee: a warning, and a clear error
+    # where it does not end (4 points, one close to a corner, at 35 degrees).
+    p = mesh_ok(square, "--min-angle", "31", "-o", out("angle31.vtp"))
+    check("osm-mesh: warning: a minimum angle above 30 degrees (here 31) has no guarantee" in p.stderr,
+          "--min-angle 31 warns that nothing is guaranteed", p.stderr[-300:])
+    check("above 30" not in run(square, "-o", out("angle30.vtp")).stderr,
+          "the default angle gives no such warning")
+    corner = out("close-to-corner.poly")
+    with open(corner, "w") as f:
+        f.write(poly_text([(0, 0), (1, 0), (0, 1), (0.02, 0.01)], []))
+    expect_error([corner, "--min-angle", "35", "-o", out("angle35.vtp")], 1,
+                 ["Steiner points without ending", "above 30 degrees it need not end"],
+                 "--min-angle 35 on points where refinement does not end")
     check(default.get("MaxAngleDeg", 999) <= default.get("PredictedMaxAngleDeg", 0) + 1e-9,
           "default run within its predicted angle bound")
 

@@ -346,6 +346,28 @@ TEST(Mesher, RejectsBadOptions)
   EXPECT_FALSE(mesh(square(), o).ok);
 }
 
+TEST(Mesher, AnglesAbove30DegreesWarnAndFailClearlyWhenRefinementDoesNotEnd)
+{
+  // Below Γ = 1 Delaunay refinement is not proven to end: 31 degrees meshes
+  // with a warning; at 35 the refinement runs on until the cap on Steiner
+  // points, and the error says why instead of blaming the input's numerics.
+  Options o;
+  o.minAngleDeg = 30;
+  EXPECT_FALSE(mentions(mesh(square(), o).warnings, "above 30 degrees"));
+  o.minAngleDeg = 31;
+  const Result r = mesh(square(), o);
+  EXPECT_TRUE(r.ok) << r.error;
+  EXPECT_TRUE(mentions(r.warnings, "a minimum angle above 30 degrees (here 31) has no guarantee"));
+  Pslg points;
+  points.points = { { 0, 0 }, { 1, 0 }, { 0, 1 }, { 0.02, 0.01 } };
+  o.minAngleDeg = 35;
+  const Result failed = mesh(points, o);
+  EXPECT_FALSE(failed.ok);
+  EXPECT_NE(
+    failed.error.find("with a minimum angle above 30 degrees it need not end"), std::string::npos)
+    << failed.error;
+}
+
 namespace
 {
 struct CountingProgress : Progress
