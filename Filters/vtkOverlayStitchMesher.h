@@ -95,7 +95,7 @@ public:
    * θ1, the smallest angle of the phase-1 overlay mesh, in degrees (1 to 35,
    * default 30). The output's largest angle is bounded by 180° − θ2, where θ2
    * shrinks with θ1: 30° gives about 170°. Above 30° nothing is guaranteed:
-   * the mesh grows several times larger, and from about 33° the refinement
+   * the mesh grows several times larger, and from about 32.5° the refinement
    * may not end (an error after its cap on Steiner points).
    */
   vtkSetClampMacro(MinimumAngle, double, 1.0, 35.0);

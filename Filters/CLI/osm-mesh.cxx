@@ -78,7 +78,7 @@ INPUT                  Triangle .poly (holes honoured) or .node file, or
                        else hull), enclosed, hull or box
   --min-angle DEG      theta1, the overlay's smallest angle: 1 to 35 (default 30;
                        above 30 no guarantee: the mesh grows fast, and from
-                       about 33 the refinement may not end)
+                       about 32.5 the refinement may not end)
   --gamma G            the overlay's radius/edge bound instead:
                        theta1 = asin(1/(2G)), G from 0.8717 to 28.65
   --max-edge H         refine overlay triangles with an edge longer than H

@@ -308,13 +308,11 @@ void Refiner::countSteiner()
   if (steinerCap > 0 && out.steinerPoints > steinerCap)
     throw Stop{ "the overlay needs more than the allowed " + std::to_string(steinerCap) +
       " Steiner points; raise the cap or coarsen the input" };
-  if (out.steinerPoints > hardCap && beyondGuarantee)
-    throw Stop{ "the overlay refinement exceeded " + std::to_string(hardCap) +
-      " Steiner points without ending: with a minimum angle above 30 degrees it need not end; "
-      "use 30 degrees or less" };
   if (out.steinerPoints > hardCap)
     throw Stop{ "the overlay refinement exceeded " + std::to_string(hardCap) +
-      " Steiner points, which suggests a numerical problem with this input" };
+      (beyondGuarantee ? " Steiner points without ending: with a minimum angle above 30 degrees "
+                         "it need not end; use 30 degrees or less"
+                       : " Steiner points, which suggests a numerical problem with this input") };
 }
 
 Point Refiner::steinerPoint(int t, const Point& circumcenter) const
