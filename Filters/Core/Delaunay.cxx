@@ -24,14 +24,14 @@ Triangulation delaunayTriangulation(const Array<Point>& points, Array<int>& vert
   int last = t0;
   for (int i : hilbertOrder(points))
   {
-    const int start = T.locate(points[i], T.alive(last) ? last : T.vtri[c0]);
+    // last is alive: a failed insertion changes nothing.
+    const int start = T.locate(points[i], last);
     if (start < 0 || !T.cavityOf(points[i], start, cavity))
       continue; // outside (impossible) or a duplicate: left out
     const int v = T.addPoint(points[i]);
     if (!T.insertIntoCavity(v, cavity, created))
     {
       T.points.pop_back();
-      T.vtri.pop_back();
       continue;
     }
     vertexOf[i] = v;

@@ -99,19 +99,15 @@ void renumberAlongHilbertCurve(Overlay& overlay)
   for (int k = 0; k < n - 4; ++k)
     newIndex[order[k] + 4] = k + 4;
   Array<Point> points;
-  Array<int> vtri;
   Array<char> isInput;
   points.assign(n, Point{});
-  vtri.assign(n, 0);
   isInput.assign(n, char{ 0 });
   for (int v = 0; v < n; ++v)
   {
     points[newIndex[v]] = mesh.points[v];
-    vtri[newIndex[v]] = mesh.vtri[v];
     isInput[newIndex[v]] = overlay.isInput[v];
   }
   mesh.points.swap(points);
-  mesh.vtri.swap(vtri);
   overlay.isInput.swap(isInput);
   for (Triangulation::Slot& t : mesh.tri)
     if (t.v[0] >= 0)
@@ -451,7 +447,6 @@ bool Refiner::insertVertex(const Point& p, int start, int inputIndex, bool cavit
   if (!mesh.insertIntoCavity(v, cavity, created))
   {
     mesh.points.pop_back();
-    mesh.vtri.pop_back();
     return false;
   }
   out.isInput.push_back(inputIndex >= 0 ? 1 : 0);

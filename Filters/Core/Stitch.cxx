@@ -15,10 +15,8 @@ namespace osm
 OverlayEdges compactOverlay(Triangulation& mesh)
 {
   // The core's peak memory is here, where the slots and their compact copy
-  // both live, and nothing else should: the slots' vertex links go first, a
-  // slot's mark (the cavity search's stamp, unused from here on) holds its
-  // compact index, and the compact vertex links come once the slots are gone.
-  Array<int>().swap(mesh.vtri);
+  // both live, and nothing else should: a slot's mark (the cavity search's stamp, unused from here
+  // on) holds its compact index, and the compact vertex links come once the slots are gone.
   OverlayEdges ov;
   // Triangles in the order of their smallest vertex (a counting sort): with
   // vertices in spatial order, neighbours in the mesh are near in memory.

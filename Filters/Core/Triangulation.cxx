@@ -12,7 +12,6 @@ namespace osm
 int Triangulation::addPoint(const Point& p)
 {
   points.push_back(p);
-  vtri.push_back(-1);
   return static_cast<int>(points.size()) - 1;
 }
 
@@ -32,21 +31,18 @@ int Triangulation::newTriangle(int a, int b, int c)
   tri[t].v = { a, b, c };
   tri[t].n = { -1, -1, -1 };
   tri[t].info = -1;
-  vtri[a] = vtri[b] = vtri[c] = t;
   return t;
 }
 
 void Triangulation::reserve(std::size_t pointCount, std::size_t triangleCount)
 {
   points.reserve(pointCount);
-  vtri.reserve(pointCount);
   tri.reserve(triangleCount);
 }
 
 void Triangulation::releaseTriangles()
 {
   Array<Slot>().swap(tri);
-  Array<int>().swap(vtri);
   Array<int>().swap(freeSlots);
   releaseInsertionScratch();
 }

@@ -33,7 +33,6 @@ public:
 
   Array<Point> points;
   Array<Slot> tri;
-  Array<int> vtri; ///< one live triangle incident to each vertex
 
   int addPoint(const Point& p);
   int newTriangle(int a, int b, int c);
