@@ -92,6 +92,19 @@ def real_entry(tool, name, cpu, status="ok"):
             "seconds": [cpu] * 3, "cpu": [cpu] * 3}
 
 
+class PairedRatios(unittest.TestCase):
+    def test_each_long_run_against_the_runs_on_both_sides(self):
+        v = {"cpu": [40.0, 60.0], "paired_bracketed": True,
+             "paired_osm_runs": [[1.0, 1.0], [0.6, 0.6], [1.4, None]]}
+        # Run 0 lies between the sets 0 and 1 (mean 0.8); run 1 between 1
+        # and 2, which has a failed run: not counted.
+        self.assertEqual(rb.paired_ratios(v), [50.0])
+
+    def test_older_results_pair_the_runs_right_after(self):
+        v = {"cpu": [40.0, 60.0], "paired_osm_cpu": [0.8, 1.2]}
+        self.assertEqual(rb.paired_ratios(v), [50.0, 50.0])
+
+
 class RepeatPass(unittest.TestCase):
     def setUp(self):
         self.saved = rb.run_once
