@@ -172,10 +172,10 @@ TEST(AllocationFailure, EveryLargeAllocationFailsCleanlyOrFallsBack)
       ++outOfMemory;
     }
   }
-  // The fallbacks: the refinement reserves its points, vertex links, triangle
-  // slots and input flags (Overlay.cxx), compaction its triangles and
-  // neighbours (Stitch.cxx). Every other large allocation is needed.
-  EXPECT_EQ(same, 6) << "of " << large << " large allocations";
+  // The fallbacks: the refinement reserves its points, triangle slots and
+  // input flags (Overlay.cxx), compaction its triangles and neighbours
+  // (Stitch.cxx). Every other large allocation is needed.
+  EXPECT_EQ(same, 5) << "of " << large << " large allocations";
   EXPECT_EQ(outOfMemory, large - same);
 }
 
