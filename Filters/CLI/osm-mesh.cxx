@@ -60,8 +60,8 @@ constexpr int kZLibLevel = 1;
 const char* const Usage =
   R"(Usage: osm-mesh INPUT [-o OUTPUT] [--domain auto|enclosed|hull|box]
                 [--min-angle DEG | --gamma G] [--max-edge H] [--no-resolve]
-                [--merge-tolerance D] [--max-steiner N] [--stats] [--svg FILE]
-                [--help] [--version]
+                [--merge-tolerance D] [--max-steiner N] [--project-xy]
+                [--stats] [--svg FILE] [--help] [--version]
 
 Mesh a Planar Straight Line Graph with Overlay Stitch Meshing: a conforming
 triangulation in which no angle exceeds 180 - theta2 degrees (about 170 at
@@ -86,6 +86,9 @@ INPUT                  Triangle .poly (holes honoured) or .node file, or
   --no-resolve         crossing segments are an error (default: split them)
   --merge-tolerance D  merge points closer than D (default 0: exact duplicates)
   --max-steiner N      fail if more than N Steiner points are needed (0: no cap)
+  --project-xy         mesh the projection onto the XY plane of input points
+                       that are not coplanar (default: an error), at their
+                       mean z
   --stats              print the run statistics as JSON on stdout
   --svg FILE           draw the mesh: input segments bold, discarded overlay
                        edges dashed
@@ -260,6 +263,7 @@ struct Arguments
   double minAngle = 30.0;
   double maxEdge = 0.0;
   bool resolve = true;
+  bool projectXY = false;
   double mergeTolerance = 0.0;
   long long maxSteiner = 0;
   bool stats = false;
@@ -437,6 +441,11 @@ bool ParseArguments(int argc, char* argv[], Arguments& args)
     {
       noValue();
       args.resolve = false;
+    }
+    else if (arg == "--project-xy")
+    {
+      noValue();
+      args.projectXY = true;
     }
     else if (arg == "--merge-tolerance")
     {
@@ -734,6 +743,9 @@ void WriteMesh(
     vtkNew<vtkPolyDataWriter> writer;
     writer->SetInputData(clean);
     writer->SetFileName(path.c_str());
+    // Binary: ASCII legacy files keep about 11 significant digits, which would
+    // move the input's points.
+    writer->SetFileTypeToBinary();
     ok = writer->Write();
   }
   window->Check("cannot write '" + path + "': ", "the writer failed");
@@ -828,6 +840,7 @@ int Run(int argc, char* argv[], OsmOutputWindow* window)
   mesher->SetDomain(args.domain);
   mesher->SetResolveIntersections(args.resolve);
   mesher->SetMergeTolerance(args.mergeTolerance);
+  mesher->SetProjectToXYPlane(args.projectXY);
   mesher->SetMaximumSteinerPoints(static_cast<vtkIdType>(args.maxSteiner));
   mesher->SetGenerateEdges(true);
   mesher->SetGenerateOverlay(false);
@@ -839,6 +852,20 @@ int Run(int argc, char* argv[], OsmOutputWindow* window)
   if (mesh->GetNumberOfPolys() == 0)
   {
     Fail("the mesh of '" + args.input + "' is empty");
+  }
+
+  // Input in a tilted plane is meshed in that plane: x and y alone do not
+  // describe it, so the 2D outputs would be wrong. Refuse before writing any.
+  vtkDataArray* fitted = mesh->GetFieldData()->GetArray("InputPlaneFitted");
+  const bool tilted = fitted && fitted->GetNumberOfTuples() > 0 && fitted->GetComponent(0, 0) != 0;
+  const bool nodeOutput = Extension(args.output) == ".node";
+  if (tilted && (nodeOutput || !args.svg.empty()))
+  {
+    Fail("the points of '" + args.input +
+      "' lie in a plane that is not z = constant, and the mesh lies in that plane; " +
+      (nodeOutput ? "a .node file" : "--svg") +
+      " holds x and y only: write .vtp, .vtu or .vtk, or mesh the XY projection with "
+      "--project-xy");
   }
 
   if (!args.output.empty())

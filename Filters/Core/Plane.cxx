@@ -277,7 +277,8 @@ std::string PlaneMap::choose(const Array<Vec3>& points, bool projectToXY)
       fit.maxDistance, relativeTolerance, relativeTolerance * fit.diagonal);
     return "the input points are not coplanar: point " + std::to_string(fit.farthest) + " at " +
       formatPoint3(points[fit.farthest]) + buf +
-      "; turn on ProjectToXYPlane to mesh their projection onto the XY plane";
+      "; turn on ProjectToXYPlane (osm-mesh: --project-xy) to mesh their projection onto the "
+      "XY plane";
   }
   fitted = true;
   frame = fit.frame;

@@ -156,7 +156,7 @@ def group_help():
         check(p.returncode == 0 and p.stdout.startswith("Usage: osm-mesh INPUT"),
               flag + " prints the usage on stdout, exit 0", p.stdout[:100] + p.stderr)
         for option in ("-o", "--domain", "--min-angle", "--gamma", "--max-edge", "--no-resolve",
-                       "--merge-tolerance", "--max-steiner", "--stats", "--svg", "--version"):
+                       "--merge-tolerance", "--max-steiner", "--project-xy", "--stats", "--svg", "--version"):
             check(option in p.stdout, flag + " documents " + option)
     p = run("--version")
     check(p.returncode == 0 and p.stdout.startswith("osm-mesh ") and
@@ -347,6 +347,19 @@ def group_formats():
         summaries[ext] = line.split(",")[0:2]
     check(len(set(tuple(x) for x in summaries.values())) == 1,
           "all four formats hold the same number of triangles and vertices", str(summaries))
+    # Coordinates that need all 17 significant digits keep every bit in each
+    # format (legacy .vtk files included: they are written in binary).
+    odd = out("odd-digits.poly")
+    with open(odd, "w") as f:
+        f.write(poly_text([(0.1, 0.2), (10.123456789012345, 0.30000000000000004),
+                           (9.87654321098765, 7.777777777777777), (0.3333333333333333, 9.1)],
+                          [(0, 1), (1, 2), (2, 3), (3, 0)]))
+    for ext in ("vtp", "vtu", "vtk", "node"):
+        path = out("odd-digits." + ext)
+        mesh_ok(odd, "-o", path)
+        report = validate(odd, path, what="." + ext + ": 17-digit coordinates read back and valid")
+        check(" 4 of 4 input points" in report,
+              ".%s: the 4 input points keep their coordinates bit for bit" % ext, report)
     # Uppercase extension and a .node output base in a sub-directory.
     os.makedirs(out("sub"), exist_ok=True)
     mesh_ok(square, "-o", out("sub/UPPER.VTP"))
@@ -682,7 +695,20 @@ def group_matrix():
     tilted = legacy_vtk(out("m-3d.vtk"), [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 1)],
                         "LINES", [(0, 1, 2, 3, 0)])
     expect_error([tilted], 1, ["not coplanar: point", "from their best-fitting plane",
-                               "ProjectToXYPlane"], "points off one plane")
+                               "ProjectToXYPlane", "--project-xy"], "points off one plane")
+    matrix_row("project-xy", tilted, "--project-xy",
+               warnings=["projected onto the XY plane", "mean z"], validate_extra=())
+    # Coplanar points in the plane x = 0: meshed in that plane, which the 2D
+    # outputs (.node, --svg) cannot hold; the 3D formats can.
+    wall = legacy_vtk(out("m-wall.vtk"), [(0, 0, 0), (0, 4, 0), (0, 4, 3), (0, 0, 3)],
+                      "LINES", [(0, 1, 2, 3, 0)])
+    for target in (["-o", out("m-wall.node")], ["--svg", out("m-wall.svg")]):
+        expect_error([wall] + target, 1, ["not z = constant", "--project-xy", ".vtp"],
+                     "a mesh in the plane x = 0 to " + target[1].rsplit(".", 1)[1])
+        check(not os.path.exists(target[1]), "no %s written for it" % target[1])
+    wall_stats = stats_of(wall, "-o", out("m-wall.vtp"))
+    check(wall_stats.get("InputPlaneFitted") == 1 and wall_stats.get("OutputTriangles", 0) > 0,
+          "the mesh in the plane x = 0 is written to .vtp", repr(wall_stats)[:300])
 
 
 
