@@ -355,6 +355,10 @@ void Mesher::meshRounds(Work& w)
     OverlayOptions oo;
     oo.gamma = st.gamma;
     oo.maxEdgeLength = std::ldexp(options.maxEdgeLength, -exponent);
+    // A bound that scaling rounds to 0 would read as none: keep it tiny, and
+    // the overlay refuses it as too small to mesh.
+    if (options.maxEdgeLength > 0 && oo.maxEdgeLength == 0)
+      oo.maxEdgeLength = std::numeric_limits<double>::denorm_min();
     oo.maxSteinerPoints = options.maxSteinerPoints;
     limitRefinement(oo, domain, w, segments);
     Overlay overlay = buildOverlay(w.points, oo, run);

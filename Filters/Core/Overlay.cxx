@@ -28,6 +28,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <new>
 #include <string>
@@ -134,6 +135,7 @@ public:
     , run(run)
     , gamma2(options.gamma * options.gamma * (1.0 + 1e-12))
     , offCenter2(options.offCenters ? std::pow(offCenterHeight(options.gamma), 2) : 0.0)
+    , maxEdge(options.maxEdgeLength)
     , maxEdge2(options.maxEdgeLength * options.maxEdgeLength)
     , steinerCap(options.maxSteinerPoints)
     , limited(options.limitRefinement)
@@ -168,6 +170,7 @@ private:
   void distribute(int v, const Array<int>& fan);
   int findInFan(const Point& q, int v, const Array<int>& fan) const;
   void countSteiner();
+  double pointsForMaxEdge() const;
 
   // The input points in Hilbert order: the buckets of a triangle then hold
   // points that are near in memory too. original[i] is input point i's index
@@ -177,6 +180,7 @@ private:
   RunContext& run;
   const double gamma2;
   const double offCenter2; ///< (off-center height / shortest edge)^2; 0: circumcenters only
+  const double maxEdge;    ///< 0: no size bound
   const double maxEdge2;
   const std::size_t steinerCap;
   const bool limited;
@@ -238,7 +242,7 @@ void Refiner::enqueueIfNeeded(int t)
   if (mesh.tri[t].info < 0)
   {
     const double la = dist2(b, c), lb = dist2(a, c), lc = dist2(a, b);
-    const bool tooLong = maxEdge2 > 0 && std::max({ la, lb, lc }) > maxEdge2;
+    const bool tooLong = maxEdge > 0 && std::max({ la, lb, lc }) > maxEdge2;
     if (!tooLong && o.x * o.x + o.y * o.y <= gamma2 * std::min({ la, lb, lc }))
       return;
     // Poor, but beyond the bounds where output can be: leave it (tested only
@@ -265,9 +269,24 @@ Overlay Refiner::refine()
   {}
   makeBox();
   vertexOf.assign(input.size(), -1);
-  // Overlay size is O(n log(L/s)); doubles bound log(L/s), so this cap only
-  // catches a numerical runaway, turning a hang into a clear error.
-  hardCap = 1000 * input.size() + 1000000;
+  // Overlay size is O(n log(L/s)), plus what a size bound asks for; doubles
+  // bound log(L/s), so this cap only catches a numerical runaway, turning a
+  // hang into a clear error. A cap of the caller's replaces it.
+  const double forMaxEdge = pointsForMaxEdge();
+  // Triangle slots are ints, and a mesh has about twice as many triangles as vertices.
+  const double indexable = std::numeric_limits<int>::max() / 2;
+  if (!(forMaxEdge <= indexable))
+  {
+    char need[48] = "more";
+    if (std::isfinite(forMaxEdge))
+      std::snprintf(need, sizeof need, "at least %.3g", forMaxEdge);
+    throw Stop{ std::string("the maximum edge length is too small for this input: the overlay "
+                            "would need ") +
+      need + " points, and a mesh can index " + std::to_string(static_cast<long long>(indexable)) };
+  }
+  hardCap = steinerCap > 0
+    ? steinerCap
+    : 1000 * input.size() + 1000000 + static_cast<std::size_t>(8 * forMaxEdge);
   enqueueIfNeeded(0);
   enqueueIfNeeded(1);
   while (!queue.empty())
@@ -296,6 +315,25 @@ Overlay Refiner::refine()
   mesh.releaseInsertionScratch();
   renumberAlongHilbertCurve(out);
   return std::move(out);
+}
+
+double Refiner::pointsForMaxEdge() const
+{
+  if (maxEdge == 0)
+    return 0;
+  // A triangle with no edge longer than h has at most the area of the
+  // equilateral one (sqrt(3)/4 h^2), and a triangulation at most about twice
+  // as many triangles as vertices: a region of area A needs at least
+  // A / (sqrt(3)/2 h^2) vertices. The region is the box, or with limited
+  // refinement the bounds, padded by an edge each way (triangles across them
+  // are refined too). h^2 may underflow: the count is then infinite.
+  double w = mesh.points[2].x - mesh.points[0].x, h = mesh.points[2].y - mesh.points[0].y;
+  if (limited)
+  {
+    w = std::min(w, within.width() + 2 * maxEdge);
+    h = std::min(h, within.height() + 2 * maxEdge);
+  }
+  return w * h / (0.8660254037844386 * maxEdge * maxEdge);
 }
 
 void Refiner::countSteiner()

@@ -336,6 +336,45 @@ TEST(Mesher, MaxEdgeLengthRefines)
     }
 }
 
+TEST(Mesher, MaxEdgeLengthBeyondTheRunawayCapMeshes)
+{
+  // About 1.3 million Steiner points: more than the cap that catches a
+  // numerical runaway of a 4-point input (1,004,000), which must therefore
+  // grow with what the size bound asks for.
+  const Pslg p = square();
+  Options o;
+  o.maxEdgeLength = 0.0014;
+  const Result r = mesh(p, o);
+  ASSERT_TRUE(r.ok) << r.error;
+  EXPECT_GT(r.stats.overlaySteinerPoints, 1004000u);
+  EXPECT_LE(r.stats.maxAngleDeg, 170.0);
+  // A cap of the caller's replaces it, both ways.
+  o.maxSteinerPoints = 2000000;
+  EXPECT_TRUE(mesh(p, o).ok);
+  o.maxSteinerPoints = 1000;
+  const Result capped = mesh(p, o);
+  EXPECT_FALSE(capped.ok);
+  EXPECT_NE(capped.error.find("more than the allowed 1000 Steiner points"), std::string::npos)
+    << capped.error;
+}
+
+TEST(Mesher, MaxEdgeLengthTooSmallToIndexFailsAtOnce)
+{
+  // Refused before any refinement: 1e-5 on a unit square needs 1.2e10
+  // points; 1e-300 would have squared to 0, which read as no bound at all.
+  for (double h : { 1e-5, 1e-300, 5e-324 })
+  {
+    Options o;
+    o.maxEdgeLength = h;
+    const Result r = mesh(square(), o);
+    EXPECT_FALSE(r.ok) << h;
+    EXPECT_NE(
+      r.error.find("the maximum edge length is too small for this input"), std::string::npos)
+      << r.error;
+    EXPECT_EQ(r.stats.overlaySteinerPoints, 0u) << h;
+  }
+}
+
 TEST(Mesher, RejectsBadOptions)
 {
   Options o;
