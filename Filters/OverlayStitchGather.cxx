@@ -5,6 +5,9 @@
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkDataSet.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -428,4 +431,33 @@ bool OverlayStitchGatherInput(vtkMultiProcessController* controller, vtkPolyData
   }
   gathered = OverlayStitchCombinePieces(pieces, summary);
   return true;
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkPolyData> OverlayStitchCombineBlocks(
+  vtkCompositeDataSet* input, std::vector<std::string>& ignored)
+{
+  ignored.clear();
+  std::vector<vtkSmartPointer<vtkDataObject>> blocks;
+  auto it = vtkSmartPointer<vtkCompositeDataIterator>::Take(input->NewIterator());
+  for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+  {
+    vtkDataObject* leaf = it->GetCurrentDataObject();
+    if (vtkPolyData::SafeDownCast(leaf))
+    {
+      blocks.emplace_back(leaf);
+    }
+    else if (vtkDataSet* other = vtkDataSet::SafeDownCast(leaf))
+    {
+      if (other->GetNumberOfPoints() > 0)
+      {
+        ignored.emplace_back(other->GetClassName());
+      }
+    }
+  }
+  if (blocks.size() == 1)
+  {
+    return vtkPolyData::SafeDownCast(blocks.front());
+  }
+  return OverlayStitchCombinePieces(blocks);
 }

@@ -34,8 +34,10 @@
 #include "vtkSmartPointer.h" // for vtkSmartPointer
 #include "vtkType.h"         // for vtkIdType
 
+#include <string>
 #include <vector>
 
+class vtkCompositeDataSet;
 class vtkDataObject;
 class vtkMultiProcessController;
 class vtkPolyData;
@@ -64,5 +66,15 @@ bool OverlayStitchGatherInput(vtkMultiProcessController* controller, vtkPolyData
 vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
   const std::vector<vtkSmartPointer<vtkDataObject>>& pieces,
   OverlayStitchGatherSummary* summary = nullptr);
+
+/// A composite input (multiblock, partitioned) is one graph: its polydata
+/// leaves are combined as the ranks' pieces are (in the iteration order of the
+/// blocks; points equal to a point of an earlier block are that point, cells
+/// equal to one of an earlier block are dropped). A single polydata leaf is
+/// returned as it is (no copy), so that it meshes as it would on its own.
+/// `ignored` receives the class names of non-empty leaves that are not
+/// polydata, one entry per leaf.
+vtkSmartPointer<vtkPolyData> OverlayStitchCombineBlocks(
+  vtkCompositeDataSet* input, std::vector<std::string>& ignored);
 
 #endif

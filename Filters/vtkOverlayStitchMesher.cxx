@@ -9,6 +9,7 @@
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
+#include "vtkCompositeDataSet.h"
 #include "vtkDataObject.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -548,7 +549,12 @@ int vtkOverlayStitchMesher::FillInputPortInformation(int port, vtkInformation* i
 {
   if (port == 0)
   {
+    // Composite input is accepted whole and combined into one graph
+    // (RequestData): meshed block by block, its blocks would overlap with
+    // seams, and under MPI the ranks would gather once per local block, a
+    // different number of times each, and hang.
     info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+    info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkCompositeDataSet");
     return 1;
   }
   return 0;
@@ -558,7 +564,8 @@ int vtkOverlayStitchMesher::FillInputPortInformation(int port, vtkInformation* i
 int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  vtkDataObject* inputObject = vtkDataObject::GetData(inputVector[0], 0);
+  vtkSmartPointer<vtkPolyData> local = vtkPolyData::SafeDownCast(inputObject);
   vtkPolyData* mesh = vtkPolyData::GetData(outputVector, 0);
   vtkPolyData* edges = vtkPolyData::GetData(outputVector, 1);
   vtkPolyData* overlay = vtkPolyData::GetData(outputVector, 2);
@@ -573,12 +580,24 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   overlay->Initialize();
   // Parallel runs (pvbatch, pvserver): every rank takes part in gathering the whole input
   // on rank 0, which meshes it; the other ranks keep empty outputs (OverlayStitchGather.h).
+  if (auto* composite = vtkCompositeDataSet::SafeDownCast(inputObject))
+  {
+    std::vector<std::string> ignoredBlocks;
+    local = OverlayStitchCombineBlocks(composite, ignoredBlocks);
+    if (!ignoredBlocks.empty())
+    {
+      vtkWarningMacro(<< "Ignored " << ignoredBlocks.size()
+                      << " block(s) of the composite input that are not polydata (the first: "
+                      << ignoredBlocks.front()
+                      << "); segments come from the polydata blocks, which are meshed together.");
+    }
+  }
   vtkSmartPointer<vtkPolyData> gathered;
-  if (!OverlayStitchGatherInput(vtkMultiProcessController::GetGlobalController(), input, gathered))
+  if (!OverlayStitchGatherInput(vtkMultiProcessController::GetGlobalController(), local, gathered))
   {
     return 1;
   }
-  input = gathered;
+  vtkPolyData* input = gathered;
   if (!input)
   {
     vtkErrorMacro("No input polydata.");

@@ -12,6 +12,7 @@
 //   ignored-cells    cells that give no segment: ONE warning counting them by kind
 //   progress         progress through every phase, monotone, ending at 1
 //   abort            an abort requested from a progress observer on a big input
+//   composite        multiblock and partitioned input: its polydata blocks are one graph
 //   matrix           the bad-input matrix of issue 6, through the filter
 // Every check prints "ok" or "FAILED"; the exit status is the number of failures (capped).
 #include "MesherTestUtils.h"
@@ -22,11 +23,14 @@
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkIdList.h"
+#include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
+#include "vtkPartitionedDataSet.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
+#include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
 #include <array>
@@ -436,6 +440,108 @@ int TestFieldHoles()
 }
 
 //------------------------------------------------------------------------------
+/// Whether the mesh has a vertex at exactly (x, y).
+bool HasVertex(vtkPolyData* mesh, double x, double y)
+{
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    mesh->GetPoint(i, p);
+    if (p[0] == x && p[1] == y)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+int TestComposite()
+{
+  // One graph in three blocks: the outer square, an inner square (a hole by
+  // the seed in the inner block's field data) and a slit; and a block that is
+  // not polydata.
+  auto outer = Square();
+  auto inner =
+    MakeLines({ { 3, 3, 0 }, { 7, 3, 0 }, { 7, 7, 0 }, { 3, 7, 0 } }, { { 0, 1, 2, 3, 0 } });
+  AddFieldHoles(inner, { { 5, 5, 0 } });
+  auto slit = MakeLines({ { 0, 0, 0 }, { 2, 1, 0 } }, { { 0, 1 } });
+  vtkNew<vtkUnstructuredGrid> grid;
+  vtkNew<vtkPoints> gridPoints;
+  gridPoints->InsertNextPoint(50, 50, 0);
+  grid->SetPoints(gridPoints);
+  vtkNew<vtkMultiBlockDataSet> nested;
+  nested->SetNumberOfBlocks(2);
+  nested->SetBlock(0, slit);
+  nested->SetBlock(1, grid);
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  blocks->SetNumberOfBlocks(4);
+  blocks->SetBlock(0, outer);
+  blocks->SetBlock(1, inner);
+  blocks->SetBlock(2, nullptr);
+  blocks->SetBlock(3, nested);
+
+  Harness h;
+  h.Mesher->SetInputData(blocks);
+  h.Mesher->Update();
+  vtkPolyData* mesh = vtkPolyData::SafeDownCast(h.Mesher->GetOutputDataObject(0));
+  Check(mesh != nullptr, "a multiblock input gives one vtkPolyData mesh, not a multiblock");
+  if (!mesh)
+  {
+    return 1;
+  }
+  h.Messages->Print("multiblock");
+  const double area = osmtest::TotalArea(mesh);
+  Check(h.NoError() && std::fabs(area - 84.0) < 1e-9,
+    "the blocks are one graph: the inner block's seed cuts its hole (area " + Num(area) +
+      ", expected 84)");
+  Check(CentroidsInside(mesh, 3, 7) == 0, "no triangle centroid in the hole");
+  Check(HasVertex(mesh, 2, 1) && HasVertex(mesh, 0, 0),
+    "the slit block's segment is in the mesh, its shared corner merged");
+  Check(osmtest::LargestAngle(mesh) <= 170.0, "no angle above 170 degrees");
+  Check(h.Messages->HasWarning({ "Ignored 1 block", "not polydata", "vtkUnstructuredGrid" }),
+    "a warning names the block that is not polydata");
+  Check(Statistic(mesh, "InputSegments") == 9,
+    "9 input segments (4 + 4 + 1; the shared corner point is one point)");
+
+  // The same graph as one polydata gives the same mesh.
+  auto whole = MakeLines({ { 0, 0, 0 }, { 10, 0, 0 }, { 10, 10, 0 }, { 0, 10, 0 }, { 3, 3, 0 },
+                           { 7, 3, 0 }, { 7, 7, 0 }, { 3, 7, 0 }, { 2, 1, 0 } },
+    { { 0, 1, 2, 3, 0 }, { 4, 5, 6, 7, 4 }, { 0, 8 } });
+  AddFieldHoles(whole, { { 5, 5, 0 } });
+  Harness single;
+  vtkPolyData* reference = single.Run(whole, "the same graph as one polydata");
+  Check(reference->GetNumberOfPolys() == mesh->GetNumberOfPolys() &&
+      reference->GetNumberOfPoints() == mesh->GetNumberOfPoints(),
+    "the same triangles and points as the one-polydata input (" +
+      std::to_string(mesh->GetNumberOfPolys()) + " and " +
+      std::to_string(reference->GetNumberOfPolys()) + " triangles)");
+
+  // A partitioned dataset with one partition meshes as that partition alone.
+  vtkNew<vtkPartitionedDataSet> partitioned;
+  partitioned->SetNumberOfPartitions(1);
+  partitioned->SetPartition(0, whole);
+  Harness part;
+  part.Mesher->SetInputData(partitioned);
+  part.Mesher->Update();
+  vtkPolyData* partMesh = vtkPolyData::SafeDownCast(part.Mesher->GetOutputDataObject(0));
+  Check(partMesh && part.NoError() && partMesh->GetNumberOfPolys() == reference->GetNumberOfPolys(),
+    "a one-partition vtkPartitionedDataSet meshes as its partition");
+
+  // No polydata block at all: an empty input, said as such.
+  vtkNew<vtkMultiBlockDataSet> gridOnly;
+  gridOnly->SetNumberOfBlocks(1);
+  gridOnly->SetBlock(0, grid);
+  Harness none;
+  none.Mesher->SetInputData(gridOnly);
+  none.Mesher->Update();
+  Check(none.NoError() && osmtest::AllOutputsEmpty(none.Mesher),
+    "a multiblock without polydata gives empty outputs and no error");
+  none.Messages->Print("grid only");
+  Check(none.Messages->HasWarning({ "not polydata" }), "with the warning about the block");
+  return 0;
+}
+
+//------------------------------------------------------------------------------
 int TestIgnoredCells()
 {
   auto input = Square();
@@ -819,6 +925,7 @@ int main(int argc, char* argv[])
     { "progress", TestProgress },
     { "abort", [points] { return TestAbort(points); } },
     { "measure-big", [points] { return MeasureBig(points); } },
+    { "composite", TestComposite },
     { "matrix", TestMatrix },
   };
   const auto it = tests.find(test);

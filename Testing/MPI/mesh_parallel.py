@@ -1,12 +1,12 @@
 """Meshes one input with the Overlay Stitch Mesher under pvbatch (any number of
 MPI ranks) or, with --server, through a pvserver from pvpython.
 
-    [mpirun -np N] pvbatch mesh_parallel.py --plugin P --input in.vtp|in.pvtp --json out.json
+    [mpirun -np N] pvbatch mesh_parallel.py --plugin P --input in.vtp|in.pvtp|in.vtm --json out.json
         [--mesh mesh.vtp] [--distribute none|one|all] [--server HOST:PORT] [--fail-first]
         [--pvtp mesh.pvtp] [--png shot.png]
 
 A .pvtp input (a partitioned file) is read in parallel: each rank reads its own
-pieces. A .vtp input, or a .poly one (the plugin's TrianglePolyReader), is read
+pieces; so is a .vtm (a multiblock file), block by block. A .vtp input, or a .poly one (the plugin's TrianglePolyReader), is read
 whole by rank 0. Then, unless --distribute none,
 ParaView's RedistributeDataSet spreads the cells over the ranks by region
 (cells on a region boundary go to one region, or with "all" to every region
@@ -68,6 +68,10 @@ def main():
     if args.input.endswith(".pvtp"):
         # A partitioned file: each rank reads its own pieces.
         source = XMLPartitionedPolydataReader(FileName=[args.input])
+    elif args.input.endswith(".vtm"):
+        # A multiblock file: its blocks are spread over the ranks; the mesher
+        # combines each rank's blocks, then gathers them.
+        source = XMLMultiBlockDataReader(FileName=[args.input])
     elif args.input.endswith(".poly"):
         # The project's reader (it reads on piece 0; the other ranks get empty pieces).
         source = TrianglePolyReader(FileName=[args.input])

@@ -185,6 +185,16 @@ def write_pieces(points, segments, holes, count, path, global_ids, ghosts=False)
             f.write('  <Piece Source="%s"/>\n' % name)
         f.write(" </PPolyData>\n</VTKFile>\n")
     print("wrote %s: %d pieces%s" % (path, count, " with ghost cells" if ghosts else ""))
+    if not ghosts:
+        # The same pieces as the blocks of a multiblock file, which the mesher
+        # takes as one graph (its ranks read different blocks).
+        with open(base + ".vtm", "w") as f:
+            f.write('<?xml version="1.0"?>\n<VTKFile type="vtkMultiBlockDataSet" version="1.0" '
+                    'byte_order="LittleEndian" header_type="UInt64">\n <vtkMultiBlockDataSet>\n')
+            for k, name in enumerate(sources):
+                f.write('  <DataSet index="%d" file="%s"/>\n' % (k, name))
+            f.write(" </vtkMultiBlockDataSet>\n</VTKFile>\n")
+        print("wrote %s.vtm: %d blocks" % (base, count))
 
 
 def main():

@@ -183,7 +183,7 @@ class Runner:
                 check("OSM-FAILED-RUN-CELLS [0, 0, 0]" in parallel["log"],
                       "%s: the run that failed on rank 0 left every output empty" % tag)
             self.compare(tag, serial, parallel, ranks, input_cells, distribute,
-                         spread=distribute != "none" or kind == "pvtp")
+                         spread=distribute != "none" or kind in ("pvtp", "vtm"))
             self.validate(vtp, parallel)
             figures[tag] = parallel
         return figures
@@ -211,6 +211,10 @@ def bundled(runner):
             (2, name + "-2g.pvtp", "none", False),  # with a layer of ghost cells
             (2, name + ".vtp", "one", False),
             (3, name + ".vtp", "all", False),
+            # A multiblock of three blocks: 2 on one rank and 1 on the other (each rank
+            # must gather once, whatever its number of blocks), then one each.
+            (2, name + "-3.vtm", "none", False),
+            (3, name + "-3.vtm", "none", False),
         ])
 
 
