@@ -394,9 +394,10 @@ Array<int> hullBoundary(const Array<Point>& P)
   Array<int> upper{ hull[0] }; // the upper chain reversed: increasing too
   for (int k = h - 1; k >= m; --k)
     upper.push_back(hull[k]);
+  // Per point: 1 a corner of the lower chain only, 2 of the upper one only, 3 both ends.
   Array<char> onHull(P.size(), 0);
-  for (int v : hull)
-    onHull[v] = 1;
+  for (int k = 0; k < h; ++k)
+    onHull[hull[k]] = k == 0 || k == m ? 3 : k < m ? 1 : 2;
   // near[k]: points within rounding of hull edge k (from hull[k] to hull[k+1]).
   Array<Array<int>> near(h);
   // The chains' edge lengths, once: every other point is tested against one
@@ -423,16 +424,27 @@ Array<int> hullBoundary(const Array<Point>& P)
       return -1;
     return isLower ? i : h - 1 - i;
   };
+  // A point near both chains, or a corner of one chain near the other: the
+  // hull is thinner than rounding there. Its segments would pass through the
+  // points inside it, and it would enclose no area: no hull boundary, and the
+  // box domain serves.
   for (int p = 0; p < static_cast<int>(P.size()); ++p)
   {
-    if (onHull[p])
+    if (onHull[p] == 3)
       continue;
+    if (onHull[p])
+    {
+      if ((onHull[p] == 1 ? nearEdge(upper, p, false) : nearEdge(lower, p, true)) >= 0)
+        return {};
+      continue;
+    }
     const int lo = nearEdge(lower, p, true), up = nearEdge(upper, p, false);
-    if (lo >= 0 && up < 0)
+    if (lo >= 0 && up >= 0)
+      return {};
+    if (lo >= 0)
       near[lo].push_back(p);
-    else if (up >= 0 && lo < 0)
+    else if (up >= 0)
       near[up].push_back(p);
-    // Near both chains: a hull without area, where the box domain serves.
   }
   Array<int> boundary;
   for (int k = 0; k < h; ++k)

@@ -53,6 +53,9 @@ Array<int> convexHull(const Array<Point>& points);
 /// point that lies on a hull edge within rounding. The hull segments must pass
 /// through such points: missing one by an ulp would leave the hull segment
 /// and the segments at that point closer than double precision separates.
+/// Empty when the hull has no area, or none at double precision (a point
+/// within rounding of both chains, or a corner within rounding of the other
+/// chain, as in a zigzag 1e-15 high on a unit length).
 Array<int> hullBoundary(const Array<Point>& points);
 
 /// True if the segments contain a cycle (so they enclose some region).

@@ -230,7 +230,7 @@ private:
   void meshRounds(Work& w);
   Domain chooseDomain(const Work& w, Array<int>& hull);
   void buildOutput(const Work& w, const PlanarGraph& g, Completion& c, Carving& carve,
-    const Overlay& overlay, Array<Edge>& edges);
+    const Overlay& overlay, Array<Edge>& edges, Domain domain);
 
   const Pslg& input;
   const Options& options;
@@ -389,8 +389,9 @@ void Mesher::meshRounds(Work& w)
     }
     // Say why the domain changed, once.
     if (domain == Domain::Box && options.domain != Domain::Box)
-      res.warnings.push_back("the input points are collinear, so their convex hull has no area: "
-                             "meshing the padded bounding box instead");
+      res.warnings.push_back(
+        "the input points are collinear, or within rounding of it, so their convex hull has no "
+        "area at double precision: meshing the padded bounding box instead");
     if (st.crossingsSplit > 0)
       res.warnings.push_back("split " + std::to_string(st.crossingsSplit) +
         " crossing(s) of input segments at their intersection points, e.g. " + firstCrossing);
@@ -435,7 +436,7 @@ void Mesher::meshRounds(Work& w)
         "hole " +
         std::to_string(carve.unusedHoles.front()) + " at " +
         formatPoint(input.holes[carve.unusedHoles.front()]));
-    buildOutput(w, g, c, carve, overlay, edges);
+    buildOutput(w, g, c, carve, overlay, edges, domain);
     return;
   }
 }
@@ -494,7 +495,7 @@ void angleExtremes(const TriMesh& mesh, double& minDeg, double& maxDeg)
 }
 
 void Mesher::buildOutput(const Work& w, const PlanarGraph& g, Completion& c, Carving& carve,
-  const Overlay& overlay, Array<Edge>& edges)
+  const Overlay& overlay, Array<Edge>& edges, Domain domain)
 {
   Statistics& st = res.stats;
   // Scaling back is exact unless a point falls among the subnormal numbers,
@@ -572,12 +573,14 @@ void Mesher::buildOutput(const Work& w, const PlanarGraph& g, Completion& c, Car
       example = static_cast<int>(i);
   }
   // Say so when the domain leaves input out: nothing disappears silently.
+  // (Only the enclosed domain leaves out points outside every hole.)
   if (outside > 0)
     res.warnings.push_back(std::to_string(outside) +
       " input point(s) lie outside the meshed domain (outside every enclosed region or in a "
       "hole) and are not in the mesh, e.g. point " +
       std::to_string(example) + " at " + formatPoint(input.points[example]) +
-      "; the hull or box domain keeps them");
+      (domain == Domain::Enclosed ? "; the hull or box domain keeps those outside every region"
+                                  : ""));
   st.regions = carve.regions;
   st.outputVertices = res.mesh.vertices.size();
   st.outputTriangles = res.mesh.triangles.size();

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <utility>
 
 using namespace osm;
 
@@ -464,6 +465,43 @@ TEST(Mesher, DegenerateHullsFallBackToTheBox)
   r = meshAndValidate(p, "collinear");
   EXPECT_GE(r.stats.segmentsSplitAtVertices, 2u);
   EXPECT_TRUE(mentions(r.warnings, "collinear"));
+}
+
+TEST(Mesher, HullsThinnerThanRoundingFallBackToTheBox)
+{
+  // Found by an adversarial run: features 1e-15 high on a unit length lie
+  // within the rounding that snaps points onto segments, so the hull's
+  // segments collapsed onto the input's and the hull domain lost input
+  // points (exit 0) or came out empty. Such a hull has no area at double
+  // precision: the box domain keeps every point.
+  const auto everyPointKept = [](const Result& r) {
+    return std::all_of(r.inputVertex.begin(), r.inputVertex.end(), [](int v) { return v >= 0; });
+  };
+  Options hull;
+  hull.domain = Domain::Hull;
+  Pslg zigzag; // inner points near both hull chains
+  zigzag.points = { { 0, 0 }, { 0.25, 1e-15 }, { 0.5, 0 }, { 0.75, 1e-15 }, { 1, 0 } };
+  zigzag.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 4 } };
+  Pslg thin; // a hull corner near the opposite chain
+  thin.points = { { 0, 0 }, { 0.5, 1e-15 }, { 1, 0 } };
+  thin.segments = { { 0, 1 }, { 1, 2 } };
+  for (const auto& [input, name] : { std::pair{ zigzag, "zigzag" }, std::pair{ thin, "thin" } })
+  {
+    for (Domain domain : { Domain::Hull, Domain::Auto })
+    {
+      hull.domain = domain;
+      const Result r = meshAndValidate(input, name, hull);
+      EXPECT_TRUE(everyPointKept(r)) << name;
+      EXPECT_TRUE(mentions(r.warnings, "no area at double precision")) << name;
+    }
+  }
+  // Ten times higher, the hull has area: it is the domain, every point in it.
+  thin.points[1].y = 1e-14;
+  hull.domain = Domain::Hull;
+  const Result r = meshAndValidate(thin, "thin, 1e-14", hull);
+  EXPECT_TRUE(everyPointKept(r));
+  EXPECT_FALSE(mentions(r.warnings, "padded bounding box"));
+  EXPECT_NEAR(area(r.mesh), 0.5e-14, 1e-28);
 }
 
 TEST(Mesher, ExtremeMagnitudesAreMeshedOrRefusedClearly)
