@@ -259,6 +259,39 @@ int findByScan(const Array<Point>& P, const Array<Triangle>& tris, const Point& 
   return -1;
 }
 
+/// Whether edge i of triangle t is constrained (either side may say so).
+bool isConstrained(const KnownAdjacency& a, int t, int i)
+{
+  if ((a.constrained[t] >> i) & 1)
+    return true;
+  const int u = a.nbr[t][i];
+  for (int j = 0; u >= 0 && j < 3; ++j)
+    if (a.nbr[u][j] == t && ((a.constrained[u] >> j) & 1))
+      return true;
+  return false;
+}
+
+/// Whether q, in the closure of triangle t, lies on one of its constrained
+/// edges within rounding, or at one of its corners where a constrained edge
+/// ends (which may be another triangle's): then which side of the segment q
+/// removes is an accident of the search.
+bool onConstrainedEdge(const Array<Point>& P, const Array<Triangle>& tris, const KnownAdjacency& a,
+  int t, const Point& q, const Array<char>& constrainedEnd)
+{
+  for (int i = 0; i < 3; ++i)
+  {
+    if (P[tris[t][i]] == q && constrainedEnd[tris[t][i]])
+      return true;
+    if (!isConstrained(a, t, i))
+      continue;
+    const Point &b = P[tris[t][(i + 1) % 3]], &c = P[tris[t][(i + 2) % 3]];
+    const double length = std::hypot(c.x - b.x, c.y - b.y);
+    if (onLineWithinRounding(orient2d(b, c, q), q, length, length))
+      return true;
+  }
+  return false;
+}
+
 } // namespace
 
 Carving carveDomain(const Array<Point>& P, const Array<Triangle>& tris,
@@ -278,16 +311,27 @@ Carving carveDomain(const Array<Point>& P, const Array<Triangle>& tris,
   {
     // A few seeds are found faster by scanning than by building the grid.
     std::optional<TriangleGrid> grid;
+    Array<char> constrainedEnd; // per vertex, made for the first seed found
     if (holes.size() > kHoleSeedsScanned)
       grid.emplace(P, tris, component, removed);
     for (std::size_t h = 0; h < holes.size(); ++h)
     {
       const int t = grid ? grid->find(holes[h], component, removed)
                          : findByScan(P, tris, holes[h], component, removed);
-      if (t >= 0)
-        removed[component[t]] = 1;
-      else
+      if (t < 0)
+      {
         out.unusedHoles.push_back(static_cast<int>(h));
+        continue;
+      }
+      removed[component[t]] = 1;
+      if (constrainedEnd.empty())
+      {
+        constrainedEnd.assign(P.size(), char{ 0 });
+        for (const Segment& s : constrained)
+          constrainedEnd[s[0]] = constrainedEnd[s[1]] = 1;
+      }
+      if (onConstrainedEdge(P, tris, a, t, holes[h], constrainedEnd))
+        out.seedsOnSegments.push_back(static_cast<int>(h));
     }
   }
   // Regions are numbered in the order of their smallest triangle index: a

@@ -31,6 +31,9 @@ struct Carving
   Array<int> regionId; ///< per input triangle: its region, or -1 if removed
   std::size_t regions = 0;
   Array<int> unusedHoles; ///< hole seeds outside the remaining triangles
+  /// Hole seeds on a segment or at a segment's end (within rounding): the
+  /// region removed is the one on the side their triangle search met first.
+  Array<int> seedsOnSegments;
 };
 
 /// Up to this many hole seeds, carveDomain finds the triangle under each one

@@ -436,6 +436,13 @@ void Mesher::meshRounds(Work& w)
         "hole " +
         std::to_string(carve.unusedHoles.front()) + " at " +
         formatPoint(input.holes[carve.unusedHoles.front()]));
+    if (!carve.seedsOnSegments.empty())
+      res.warnings.push_back(std::to_string(carve.seedsOnSegments.size()) +
+        " hole point(s) lie on a segment or at its end, e.g. hole " +
+        std::to_string(carve.seedsOnSegments.front()) + " at " +
+        formatPoint(input.holes[carve.seedsOnSegments.front()]) +
+        ": the region on one side of it was removed, which side is not defined; move the "
+        "point into the hole");
     buildOutput(w, g, c, carve, overlay, edges, domain);
     return;
   }

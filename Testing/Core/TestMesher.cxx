@@ -309,6 +309,25 @@ TEST(Domain, HolesRemoveTheirRegion)
   EXPECT_EQ(r.stats.regions, 1u);
 }
 
+TEST(Mesher, HoleSeedOnASegmentIsSaid)
+{
+  // Which side of a segment a seed on it removes is an accident of the search
+  // (found by an adversarial run: no warning before).
+  Pslg p = square();
+  p.points.insert(
+    p.points.end(), { { 0.25, 0.25 }, { 0.75, 0.25 }, { 0.75, 0.75 }, { 0.25, 0.75 } });
+  p.segments.insert(p.segments.end(), { { 4, 5 }, { 5, 6 }, { 6, 7 }, { 7, 4 } });
+  for (const Point& seed : { Point{ 0.25, 0.5 }, Point{ 0.25, 0.25 }, Point{ 0.5, 0.25 } })
+  {
+    p.holes = { seed };
+    const Result r = meshAndValidate(p, "seed on a segment");
+    EXPECT_TRUE(mentions(r.warnings, "hole point(s) lie on a segment or at its end, e.g. hole 0"))
+      << seed.x << " " << seed.y;
+  }
+  p.holes = { { 0.5, 0.5 } };
+  EXPECT_FALSE(mentions(meshAndValidate(p, "seed inside").warnings, "lie on a segment"));
+}
+
 TEST(Mesher, SteinerCapGivesAClearError)
 {
   Options o;
