@@ -211,8 +211,10 @@ std::string describeCrossing(const Work& w, const SegmentCrossing& c, int expone
 std::string crossingError(const Work& w, const Array<SegmentCrossing>& crossings, int exponent)
 {
   std::string msg = describeCrossing(w, crossings.front(), exponent);
+  // At least: segments through one point are found as pairs in a chain, not
+  // every pair of them.
   if (crossings.size() > 1)
-    msg += " (and " + std::to_string(crossings.size() - 1) + " more crossing pair(s))";
+    msg += " (and at least " + std::to_string(crossings.size() - 1) + " more crossing pair(s))";
   return msg + "; enable resolving intersections to split them";
 }
 
