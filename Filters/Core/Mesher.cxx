@@ -438,6 +438,16 @@ void Mesher::meshRounds(Work& w)
         "hole " +
         std::to_string(carve.unusedHoles.front()) + " at " +
         formatPoint(input.holes[carve.unusedHoles.front()]));
+    // Say why the mesh is empty when the holes took all of it (a seed in the
+    // wrong region, or a merge tolerance that collapsed the input).
+    if (carve.regions == 0 && w.holes.size() > carve.unusedHoles.size())
+    {
+      std::size_t used = 0;
+      while (used < carve.unusedHoles.size() && carve.unusedHoles[used] == static_cast<int>(used))
+        ++used;
+      res.warnings.push_back("the hole point(s) removed every region, e.g. hole " +
+        std::to_string(used) + " at " + formatPoint(input.holes[used]) + ": the mesh is empty");
+    }
     if (!carve.seedsOnSegments.empty())
       res.warnings.push_back(std::to_string(carve.seedsOnSegments.size()) +
         " hole point(s) lie on a segment or at its end, e.g. hole " +

@@ -328,6 +328,18 @@ TEST(Mesher, HoleSeedOnASegmentIsSaid)
   EXPECT_FALSE(mentions(meshAndValidate(p, "seed inside").warnings, "lie on a segment"));
 }
 
+TEST(Mesher, HolesThatRemoveEveryRegionAreSaid)
+{
+  Pslg p = square();
+  p.holes = { { 5, 5 }, { 0.5, 0.5 } }; // the first lies outside, the second empties the square
+  const Result r = mesh(p);
+  EXPECT_TRUE(r.mesh.triangles.empty());
+  EXPECT_TRUE(mentions(r.warnings, "the hole point(s) removed every region, e.g. hole 1 at"))
+    << (r.warnings.empty() ? r.error : r.warnings.back());
+  p.holes = { { 5, 5 } };
+  EXPECT_FALSE(mentions(mesh(p).warnings, "removed every region"));
+}
+
 TEST(Mesher, SteinerCapGivesAClearError)
 {
   Options o;
