@@ -578,8 +578,7 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   mesh->Initialize();
   edges->Initialize();
   overlay->Initialize();
-  // Parallel runs (pvbatch, pvserver): every rank takes part in gathering the whole input
-  // on rank 0, which meshes it; the other ranks keep empty outputs (OverlayStitchGather.h).
+  // A composite input is one graph: this rank's polydata blocks, combined.
   if (auto* composite = vtkCompositeDataSet::SafeDownCast(inputObject))
   {
     std::vector<std::string> ignoredBlocks;
@@ -592,6 +591,8 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
                       << "); segments come from the polydata blocks, which are meshed together.");
     }
   }
+  // Parallel runs (pvbatch, pvserver): every rank takes part in gathering the whole input
+  // on rank 0, which meshes it; the other ranks keep empty outputs (OverlayStitchGather.h).
   vtkSmartPointer<vtkPolyData> gathered;
   if (!OverlayStitchGatherInput(vtkMultiProcessController::GetGlobalController(), local, gathered))
   {
