@@ -296,8 +296,9 @@ double ParseNumber(const std::string& option, const std::string& text)
   char* end = nullptr;
   errno = 0;
   const double value = std::strtod(begin, &end);
+  // strtod also reads hexadecimal ("0x10" is 16), which nobody means here.
   if (text.empty() || end != begin + text.size() ||
-    std::isspace(static_cast<unsigned char>(*begin)))
+    std::isspace(static_cast<unsigned char>(*begin)) || text.find_first_of("xX") != text.npos)
   {
     Fail(option + ": expected a number, got '" + text + "'", 2);
   }

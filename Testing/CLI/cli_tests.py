@@ -498,6 +498,8 @@ def group_errors():
         ([square, "--domain", "everywhere"], ["--domain", "'everywhere'"]),
         ([square, "--max-edge", "-1"], ["--max-edge"]),
         ([square, "--max-edge", "inf"], ["--max-edge"]),
+        ([square, "--max-edge", "0x10"], ["--max-edge: expected a number, got '0x10'"]),
+        ([square, "--merge-tolerance", "0X1p-3"], ["--merge-tolerance", "'0X1p-3'"]),
         ([square, "--merge-tolerance", "-0.1"], ["--merge-tolerance"]),
         ([square, "--max-steiner", "-3"], ["--max-steiner", "'-3'"]),
         ([square, "--max-steiner", "2.5"], ["--max-steiner"]),
