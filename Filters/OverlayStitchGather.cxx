@@ -92,6 +92,52 @@ vtkCellArray* CellsOfKind(vtkPolyData* polyData, int kind)
   }
 }
 
+/// Cells naming a point their piece does not have: counted, and the first (in
+/// piece, then cell id order, whatever order they are seen in) described.
+struct InvalidCells
+{
+  const char* PieceName;
+  vtkIdType Count = 0;
+  std::string First;
+  std::pair<std::size_t, vtkIdType> FirstAt;
+
+  /// Notes cell `cellId` (ids `ids[0..n)`) of piece `piece`, which has `points` points.
+  void Note(
+    vtkIdType n, const vtkIdType* ids, vtkIdType points, vtkIdType cellId, std::size_t piece)
+  {
+    const vtkIdType* bad =
+      std::find_if(ids, ids + n, [points](vtkIdType id) { return id < 0 || id >= points; });
+    if (bad == ids + n)
+    {
+      return;
+    }
+    if (Count++ == 0 || std::make_pair(piece, cellId) < FirstAt)
+    {
+      FirstAt = { piece, cellId };
+      First = "cell " + std::to_string(cellId) + " of " + PieceName + " " + std::to_string(piece) +
+        " refers to point " + std::to_string(*bad) + ", but that " + PieceName + " has " +
+        std::to_string(points) + " point(s)";
+    }
+  }
+
+  /// Notes every cell of a piece that has no points.
+  void NotePiecesCells(vtkPolyData* piece, std::size_t index)
+  {
+    vtkIdType cellId = 0;
+    for (int kind = 0; kind < 4; ++kind)
+    {
+      auto it = vtk::TakeSmartPointer(CellsOfKind(piece, kind)->NewIterator());
+      for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cellId)
+      {
+        vtkIdType n;
+        const vtkIdType* ids;
+        it->GetCurrentCell(n, ids);
+        Note(n, ids, 0, cellId, index);
+      }
+    }
+  }
+};
+
 /// Appends the hole seeds of `field` (a 3-component, or 2-component, numeric
 /// "HolePoints" array) to `seeds`, skipping exact repeats.
 void CollectHolePoints(vtkFieldData* field, std::vector<std::array<double, 3>>& seeds,
@@ -119,18 +165,27 @@ void CollectHolePoints(vtkFieldData* field, std::vector<std::array<double, 3>>& 
 
 //------------------------------------------------------------------------------
 vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
-  const std::vector<vtkSmartPointer<vtkDataObject>>& pieces, OverlayStitchGatherSummary* summary)
+  const std::vector<vtkSmartPointer<vtkDataObject>>& pieces, OverlayStitchGatherSummary* summary,
+  const char* pieceName)
 {
   auto combined = vtkSmartPointer<vtkPolyData>::New();
+  InvalidCells invalid{ pieceName };
 
   // The pieces with points; point and cell arrays are those common to all of them.
+  // A piece without points has no valid cell (its cells are reported, not lost).
   std::vector<vtkPolyData*> used;
-  for (const auto& piece : pieces)
+  std::vector<std::size_t> usedIndex;
+  for (std::size_t p = 0; p < pieces.size(); ++p)
   {
-    vtkPolyData* polyData = vtkPolyData::SafeDownCast(piece);
+    vtkPolyData* polyData = vtkPolyData::SafeDownCast(pieces[p]);
     if (polyData && polyData->GetNumberOfPoints() > 0)
     {
       used.push_back(polyData);
+      usedIndex.push_back(p);
+    }
+    else if (polyData)
+    {
+      invalid.NotePiecesCells(polyData, p);
     }
   }
   const int numberOfUsed = static_cast<int>(used.size());
@@ -269,14 +324,15 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
           const vtkIdType* pieceIds;
           it->GetCurrentCell(n, pieceIds);
           ids.resize(static_cast<std::size_t>(n));
+          const vtkIdType pointsInPiece = static_cast<vtkIdType>(newId[u].size());
           for (vtkIdType k = 0; k < n; ++k)
           {
             const vtkIdType id = pieceIds[k];
             ids[static_cast<std::size_t>(k)] =
-              (id >= 0 && id < static_cast<vtkIdType>(newId[u].size()))
-              ? newId[u][static_cast<std::size_t>(id)]
-              : -1; // an invalid id stays invalid (the mesher reports it)
+              (id >= 0 && id < pointsInPiece) ? newId[u][static_cast<std::size_t>(id)] : -1;
           }
+          // An invalid id stays invalid (-1); which one it was is said here.
+          invalid.Note(n, pieceIds, pointsInPiece, pieceCellId, usedIndex[u]);
           key.assign(ids.begin(), ids.end());
           reversed.assign(ids.rbegin(), ids.rend());
           if (reversed < key)
@@ -372,6 +428,8 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
     summary->SharedPointsMerged = sharedPoints;
     summary->SharedCellsDropped = sharedCells;
     summary->HolePoints = static_cast<vtkIdType>(seeds.size());
+    summary->InvalidCells = invalid.Count;
+    summary->FirstInvalidCell = invalid.First;
   }
   return combined;
 }
@@ -429,14 +487,18 @@ bool OverlayStitchGatherInput(vtkMultiProcessController* controller, vtkPolyData
     gathered = nullptr;
     return true;
   }
-  gathered = OverlayStitchCombinePieces(pieces, summary);
+  gathered = OverlayStitchCombinePieces(pieces, summary, "rank");
   return true;
 }
 
 //------------------------------------------------------------------------------
-vtkSmartPointer<vtkPolyData> OverlayStitchCombineBlocks(
-  vtkCompositeDataSet* input, std::vector<std::string>& ignored)
+vtkSmartPointer<vtkPolyData> OverlayStitchCombineBlocks(vtkCompositeDataSet* input,
+  std::vector<std::string>& ignored, OverlayStitchGatherSummary* summary)
 {
+  if (summary)
+  {
+    *summary = OverlayStitchGatherSummary();
+  }
   ignored.clear();
   std::vector<vtkSmartPointer<vtkDataObject>> blocks;
   auto it = vtkSmartPointer<vtkCompositeDataIterator>::Take(input->NewIterator());
@@ -459,5 +521,5 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombineBlocks(
   {
     return vtkPolyData::SafeDownCast(blocks.front());
   }
-  return OverlayStitchCombinePieces(blocks);
+  return OverlayStitchCombinePieces(blocks, summary, "polydata block");
 }

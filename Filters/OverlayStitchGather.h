@@ -50,6 +50,11 @@ struct OverlayStitchGatherSummary
   vtkIdType SharedPointsMerged = 0;    ///< points found again in a later piece
   vtkIdType SharedCellsDropped = 0;    ///< cells found again in a later piece
   vtkIdType HolePoints = 0;            ///< distinct hole seeds after the gather
+  /// Cells naming a point their own piece does not have: after combining, such
+  /// an id is -1 and says nothing, so the first is described here ("cell 3 of
+  /// rank 1 refers to point 57, ..."), for the caller to report.
+  vtkIdType InvalidCells = 0;
+  std::string FirstInvalidCell;
 };
 
 /// Collective over `controller`: every rank must call it once, in the same
@@ -62,10 +67,11 @@ bool OverlayStitchGatherInput(vtkMultiProcessController* controller, vtkPolyData
   vtkSmartPointer<vtkPolyData>& gathered, OverlayStitchGatherSummary* summary = nullptr);
 
 /// The combination done on rank 0, exposed for tests: `pieces` in rank order
-/// (null or non-polydata entries count as empty pieces).
+/// (null or non-polydata entries count as empty pieces). `pieceName` names a
+/// piece in the summary's FirstInvalidCell ("rank", "polydata block").
 vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
   const std::vector<vtkSmartPointer<vtkDataObject>>& pieces,
-  OverlayStitchGatherSummary* summary = nullptr);
+  OverlayStitchGatherSummary* summary = nullptr, const char* pieceName = "piece");
 
 /// A composite input (multiblock, partitioned) is one graph: its polydata
 /// leaves are combined as the ranks' pieces are (in the iteration order of the
@@ -73,8 +79,8 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
 /// equal to one of an earlier block are dropped). A single polydata leaf is
 /// returned as it is (no copy), so that it meshes as it would on its own.
 /// `ignored` receives the class names of non-empty leaves that are not
-/// polydata, one entry per leaf.
-vtkSmartPointer<vtkPolyData> OverlayStitchCombineBlocks(
-  vtkCompositeDataSet* input, std::vector<std::string>& ignored);
+/// polydata, one entry per leaf; `summary`, if given, what the combination did.
+vtkSmartPointer<vtkPolyData> OverlayStitchCombineBlocks(vtkCompositeDataSet* input,
+  std::vector<std::string>& ignored, OverlayStitchGatherSummary* summary = nullptr);
 
 #endif

@@ -579,10 +579,11 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   edges->Initialize();
   overlay->Initialize();
   // A composite input is one graph: this rank's polydata blocks, combined.
+  OverlayStitchGatherSummary combination;
   if (auto* composite = vtkCompositeDataSet::SafeDownCast(inputObject))
   {
     std::vector<std::string> ignoredBlocks;
-    local = OverlayStitchCombineBlocks(composite, ignoredBlocks);
+    local = OverlayStitchCombineBlocks(composite, ignoredBlocks, &combination);
     if (!ignoredBlocks.empty())
     {
       vtkWarningMacro(<< "Ignored " << ignoredBlocks.size()
@@ -593,12 +594,26 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   }
   // Parallel runs (pvbatch, pvserver): every rank takes part in gathering the whole input
   // on rank 0, which meshes it; the other ranks keep empty outputs (OverlayStitchGather.h).
+  // A rank whose blocks are invalid still takes part, or the others would wait for it.
   vtkSmartPointer<vtkPolyData> gathered;
-  if (!OverlayStitchGatherInput(vtkMultiProcessController::GetGlobalController(), local, gathered))
+  OverlayStitchGatherSummary gather;
+  const bool meshHere = OverlayStitchGatherInput(
+    vtkMultiProcessController::GetGlobalController(), local, gathered, &gather);
+  // Cells naming points their piece lacks: said with the piece's own ids (this
+  // rank's blocks first), since combining leaves such an id as -1.
+  const OverlayStitchGatherSummary& invalid =
+    combination.InvalidCells > 0 || !meshHere ? combination : gather;
+  if (invalid.InvalidCells > 0)
+  {
+    vtkErrorMacro("Cannot mesh the input: " << invalid.FirstInvalidCell << " ("
+                                            << invalid.InvalidCells
+                                            << " cell(s) refer to points that do not exist).");
+  }
+  vtkPolyData* input = gathered;
+  if (!meshHere || combination.InvalidCells > 0 || gather.InvalidCells > 0)
   {
     return 1;
   }
-  vtkPolyData* input = gathered;
   if (!input)
   {
     vtkErrorMacro("No input polydata.");

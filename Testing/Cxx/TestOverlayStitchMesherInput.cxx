@@ -538,6 +538,23 @@ int TestComposite()
     "a multiblock without polydata gives empty outputs and no error");
   none.Messages->Print("grid only");
   Check(none.Messages->HasWarning({ "not polydata" }), "with the warning about the block");
+
+  // A block whose cell names a point it does not have: the error gives the
+  // block's own ids (combined, the id would only be -1), and nothing is meshed.
+  auto broken = MakeLines({ { 0, 0, 0 }, { 2, 1, 0 } }, { { 0, 1 }, { 1, 5 } });
+  vtkNew<vtkMultiBlockDataSet> withBroken;
+  withBroken->SetNumberOfBlocks(2);
+  withBroken->SetBlock(0, outer);
+  withBroken->SetBlock(1, broken);
+  Harness invalid;
+  invalid.Mesher->SetInputData(withBroken);
+  invalid.Mesher->Update();
+  invalid.Messages->Print("invalid block");
+  Check(invalid.Messages->HasError(
+          { "cell 1 of polydata block 1 refers to point 5, but that polydata block has 2 point(s)",
+            "1 cell(s) refer to points that do not exist" }) &&
+      osmtest::AllOutputsEmpty(invalid.Mesher),
+    "a block's cell naming a point it lacks: an error with the block's ids, empty outputs");
   return 0;
 }
 

@@ -217,6 +217,29 @@ int main()
   ordered->GetCellPoints(0, ids);
   Check(line0 && line1 && ids->GetId(0) == 0, "cells follow the reordered points");
 
+  std::cout << "cells naming points their piece does not have\n";
+  Check(summary.InvalidCells == 0 && summary.FirstInvalidCell.empty(), "none in valid pieces");
+  // Piece 1's line 1 names point 7 of its 2; piece 2 has lines but no points.
+  auto badPiece1 =
+    MakePiece({ { 2, 0 }, { 3, 0 } }, { { 0, 1 }, { 1, 7 } }, {}, { 0, 1 }, { 0, 1 }, {});
+  auto pointless = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkCellArray> pointlessLines;
+  const vtkIdType pointlessIds[2] = { 0, 1 };
+  pointlessLines->InsertNextCell(2, pointlessIds);
+  pointless->SetLines(pointlessLines);
+  std::vector<vtkSmartPointer<vtkDataObject>> withBad = { piece0, badPiece1, pointless };
+  OverlayStitchCombinePieces(withBad, &summary, "rank");
+  Check(summary.InvalidCells == 2,
+    "both invalid cells counted (" + std::to_string(summary.InvalidCells) + ")");
+  Check(
+    summary.FirstInvalidCell == "cell 1 of rank 1 refers to point 7, but that rank has 2 point(s)",
+    "the first described with the piece's own ids: '" + summary.FirstInvalidCell + "'");
+  std::vector<vtkSmartPointer<vtkDataObject>> onlyPointless = { pointless };
+  OverlayStitchCombinePieces(onlyPointless, &summary, "polydata block");
+  Check(summary.FirstInvalidCell ==
+      "cell 0 of polydata block 0 refers to point 0, but that polydata block has 0 point(s)",
+    "a piece without points: '" + summary.FirstInvalidCell + "'");
+
   std::cout << "one process\n";
   vtkSmartPointer<vtkPolyData> same;
   const bool meshes = OverlayStitchGatherInput(nullptr, piece0, same, &summary);

@@ -5,7 +5,7 @@
         --shared ../shared/data/pslg --out DIR
 
 GROUP
-  bundled       project-made inputs (always run)
+  bundled       project-made inputs (always run), and a multiblock with an invalid point id
   realdata      inputs from --shared (exit 77, CTest's skip, when the folder is absent)
   clientserver  `mpirun -np 2 pvserver` on a free loopback port, pvpython client
   render        -np 2: ParaView's parallel .pvtp writer and renderer on the output
@@ -216,6 +216,51 @@ def bundled(runner):
             (2, name + "-3.vtm", "none", False),
             (3, name + "-3.vtm", "none", False),
         ])
+    invalid_block(runner)
+
+
+def write_lines_vtp(path, points, lines):
+    """A .vtp (ASCII XML) of points (x, y) and 2-point line cells."""
+    coords = " ".join("%r %r 0" % (x, y) for x, y in points)
+    ids = " ".join("%d %d" % line for line in lines)
+    offsets = " ".join(str(2 * (k + 1)) for k in range(len(lines)))
+    with open(path, "w") as f:
+        f.write('<?xml version="1.0"?>\n<VTKFile type="PolyData" version="1.0">\n<PolyData>\n'
+                '<Piece NumberOfPoints="%d" NumberOfLines="%d">\n'
+                '<Points><DataArray type="Float64" NumberOfComponents="3" format="ascii">'
+                '%s</DataArray></Points>\n<Lines>'
+                '<DataArray type="Int64" Name="connectivity" format="ascii">%s</DataArray>'
+                '<DataArray type="Int64" Name="offsets" format="ascii">%s</DataArray>'
+                '</Lines>\n</Piece>\n</PolyData>\n</VTKFile>\n' % (
+                    len(points), len(lines), coords, ids, offsets))
+
+
+def invalid_block(runner):
+    """A multiblock whose last block has a line naming a point it does not have:
+    every run ends (no rank waits for another), with empty outputs and an error
+    naming the cell and point by the ids of the block or rank that holds it."""
+    print("== invalid-ids", flush=True)
+    blocks = [([(0, 0), (10, 0), (10, 10)], [(0, 1), (1, 2)]),
+              ([(10, 10), (0, 10), (0, 0)], [(0, 1), (1, 2)]),
+              ([(2, 1), (3, 3)], [(0, 1), (1, 9)])]
+    vtm = os.path.join(runner.out, "invalid-ids.vtm")
+    with open(vtm, "w") as f:
+        f.write('<?xml version="1.0"?>\n<VTKFile type="vtkMultiBlockDataSet" version="1.0">\n'
+                ' <vtkMultiBlockDataSet>\n')
+        for k, (points, lines) in enumerate(blocks):
+            write_lines_vtp(os.path.join(runner.out, "invalid-ids_%d.vtp" % k), points, lines)
+            f.write('  <DataSet index="%d" file="invalid-ids_%d.vtp"/>\n' % (k, k))
+        f.write(" </vtkMultiBlockDataSet>\n</VTKFile>\n")
+    # Serial: block 2's own ids. -np 2: rank 1 holds block 2 alone; -np 3: rank 2 does.
+    expected = {1: "cell 1 of polydata block 2 refers to point 9, but that polydata block has 2",
+                2: "cell 1 of rank 1 refers to point 9, but that rank has 2",
+                3: "cell 1 of rank 2 refers to point 9, but that rank has 2"}
+    for ranks, text in sorted(expected.items()):
+        result = runner.mesh("invalid-ids-np%d" % ranks, ranks, vtm)
+        check(text in result["log"] and "1 cell(s) refer to points that do not exist" in
+              result["log"], "invalid ids -np %d: the error says '%s'" % (ranks, text))
+        check(all(o["cells"] == 0 for o in result["outputs"]),
+              "invalid ids -np %d: every output empty %s" % (ranks, result["outputs"]))
 
 
 def realdata(runner):
