@@ -267,6 +267,32 @@ void ReadSegments(
   }
 }
 
+/// The regional attributes of a .poly file, as vtkTrianglePolyReader puts them
+/// in the field data: "RegionAttributes", a tuple (x, y, attribute, maximum
+/// area) per region seed; (x, y, attribute) is read too. Returns a warning for
+/// an array of another shape, which is ignored.
+std::string ReadRegionAttributes(vtkPolyData* input, const osm::PlaneMap& map, osm::Pslg& pslg)
+{
+  vtkDataArray* regions = input->GetFieldData()->GetArray("RegionAttributes");
+  const int components = regions ? regions->GetNumberOfComponents() : 3;
+  if (components != 3 && components != 4)
+  {
+    return "The input's field data array RegionAttributes has " + std::to_string(components) +
+      " components (4 expected: x, y, attribute, maximum area): ignored.";
+  }
+  if (!regions)
+  {
+    return std::string();
+  }
+  for (vtkIdType i = 0; i < regions->GetNumberOfTuples(); ++i)
+  {
+    double tuple[4] = { 0.0, 0.0, 0.0, -1.0 };
+    regions->GetTuple(i, tuple);
+    pslg.regions.push_back({ map.seedXY(tuple[0], tuple[1]), tuple[2], tuple[3] });
+  }
+  return std::string();
+}
+
 /// Output arrays live in the core's huge-page mappings (HugePages.h), like the
 /// core's own arrays: a mesh of 10^6 triangles fills about 100 MB of them, and
 /// each first touch of a small page costs about 10 us on a virtual machine.
@@ -426,6 +452,13 @@ void FillMesh(const osm::Result& result, const osm::PlaneMap& map, vtkPolyData* 
   output->GetCellData()->AddArray(minAngle);
   output->GetCellData()->AddArray(maxAngle);
   output->GetCellData()->AddArray(regionId);
+  if (!result.regionAttribute.empty())
+  {
+    auto attribute = MakeArray<vtkDoubleArray>("RegionAttribute", numberOfTriangles);
+    std::copy(
+      result.regionAttribute.begin(), result.regionAttribute.end(), attribute->GetPointer(0));
+    output->GetCellData()->AddArray(attribute);
+  }
 
   for (const auto& item : result.stats.items())
   {
@@ -683,6 +716,11 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
                         << " components (3 expected: x, y, z): ignored.");
       }
     }
+  }
+  const std::string regionsWarning = ReadRegionAttributes(input, map, pslg);
+  if (!regionsWarning.empty())
+  {
+    vtkWarningMacro(<< regionsWarning);
   }
   if (this->GetAbortExecute())
   {

@@ -151,15 +151,15 @@ void FillOutput(const osm::PolyFile& file, vtkPolyData* output)
   firstIndex->InsertNextValue(file.firstIndex);
   output->GetFieldData()->AddArray(firstIndex);
 
-  if (!file.regions.empty())
+  if (!file.pslg.regions.empty())
   {
     vtkNew<vtkDoubleArray> regions;
     regions->SetName("RegionAttributes");
     regions->SetNumberOfComponents(4);
-    regions->SetNumberOfTuples(static_cast<vtkIdType>(file.regions.size()));
-    for (std::size_t r = 0; r < file.regions.size(); ++r)
+    regions->SetNumberOfTuples(static_cast<vtkIdType>(file.pslg.regions.size()));
+    for (std::size_t r = 0; r < file.pslg.regions.size(); ++r)
     {
-      const osm::RegionAttribute& region = file.regions[r];
+      const osm::RegionAttribute& region = file.pslg.regions[r];
       regions->SetTuple4(
         static_cast<vtkIdType>(r), region.seed.x, region.seed.y, region.attribute, region.maxArea);
     }

@@ -631,6 +631,7 @@ osm::Result ToResult(vtkPolyData* mesh, vtkPolyData* edges)
     }
   }
   vtkDataArray* region = mesh->GetCellData()->GetArray("RegionId");
+  vtkDataArray* attribute = mesh->GetCellData()->GetArray("RegionAttribute");
   auto cells = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
   vtkIdType cellId = mesh->GetNumberOfVerts() + mesh->GetNumberOfLines();
   for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell(), ++cellId)
@@ -645,6 +646,10 @@ osm::Result ToResult(vtkPolyData* mesh, vtkPolyData* edges)
     r.mesh.triangles.push_back(
       { static_cast<int>(ids[0]), static_cast<int>(ids[1]), static_cast<int>(ids[2]) });
     r.regionId.push_back(region ? static_cast<int>(region->GetComponent(cellId, 0)) : 0);
+    if (attribute)
+    {
+      r.regionAttribute.push_back(attribute->GetComponent(cellId, 0));
+    }
   }
 
   if (edges && edges->GetNumberOfPoints() > 0)

@@ -179,6 +179,15 @@ std::string cleanPslg(const Pslg& in, CleanPslg& out, Statistics& stats,
     return e;
   if (std::string e = checkFinite(in.holes, "hole point"); !e.empty())
     return e;
+  for (std::size_t r = 0; r < in.regions.size(); ++r)
+  {
+    const RegionAttribute& region = in.regions[r];
+    if (!std::isfinite(region.seed.x) || !std::isfinite(region.seed.y))
+      return "region " + std::to_string(r) + " has a non-finite coordinate " +
+        formatPoint(region.seed);
+    if (!std::isfinite(region.attribute))
+      return "region " + std::to_string(r) + " has a non-finite attribute";
+  }
   mergeDuplicates(in, out, stats, warnings, mergeTolerance);
   return mapSegments(in, out, stats, warnings);
 }

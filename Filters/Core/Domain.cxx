@@ -296,7 +296,7 @@ bool onConstrainedEdge(const Array<Point>& P, const Array<Triangle>& tris, const
 
 Carving carveDomain(const Array<Point>& P, const Array<Triangle>& tris,
   const Array<Segment>& constrained, bool removeExterior, const Array<Point>& holes,
-  KnownAdjacency known)
+  KnownAdjacency known, const Array<Point>& regionSeeds)
 {
   const KnownAdjacency a = adjacency(tris, constrained, std::move(known));
   Array<int> component = components(a);
@@ -307,17 +307,19 @@ Carving carveDomain(const Array<Point>& P, const Array<Triangle>& tris,
       if (a.nbr[t][0] < 0 || a.nbr[t][1] < 0 || a.nbr[t][2] < 0)
         removed[component[t]] = 1;
   Carving out;
+  // A few seeds are found faster by scanning than by building the grid.
+  std::optional<TriangleGrid> grid;
+  auto locate = [&](const Point& q) {
+    return grid ? grid->find(q, component, removed) : findByScan(P, tris, q, component, removed);
+  };
   if (!holes.empty())
   {
-    // A few seeds are found faster by scanning than by building the grid.
-    std::optional<TriangleGrid> grid;
     Array<char> constrainedEnd; // per vertex, made for the first seed found
     if (holes.size() > kHoleSeedsScanned)
       grid.emplace(P, tris, component, removed);
     for (std::size_t h = 0; h < holes.size(); ++h)
     {
-      const int t = grid ? grid->find(holes[h], component, removed)
-                         : findByScan(P, tris, holes[h], component, removed);
+      const int t = locate(holes[h]);
       if (t < 0)
       {
         out.unusedHoles.push_back(static_cast<int>(h));
@@ -334,6 +336,14 @@ Carving carveDomain(const Array<Point>& P, const Array<Triangle>& tris,
         out.seedsOnSegments.push_back(static_cast<int>(h));
     }
   }
+  // The grid skips the triangles removed when it was built, and no others.
+  if (!grid && regionSeeds.size() > kHoleSeedsScanned)
+    grid.emplace(P, tris, component, removed);
+  for (const Point& q : regionSeeds)
+  {
+    const int t = locate(q);
+    out.seedRegion.push_back(t < 0 ? -1 : t);
+  }
   // Regions are numbered in the order of their smallest triangle index: a
   // component's root comes before its other triangles, which take its id.
   int next = 0;
@@ -344,6 +354,8 @@ Carving carveDomain(const Array<Point>& P, const Array<Triangle>& tris,
     out.regionId[t] = root != t ? out.regionId[root] : removed[t] ? -1 : next++;
   }
   out.regions = static_cast<std::size_t>(next);
+  for (int& r : out.seedRegion)
+    r = r < 0 ? -1 : out.regionId[r];
   return out;
 }
 

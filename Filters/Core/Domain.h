@@ -34,6 +34,9 @@ struct Carving
   /// Hole seeds on a segment or at a segment's end (within rounding): the
   /// region removed is the one on the side their triangle search met first.
   Array<int> seedsOnSegments;
+  /// Per region seed (carveDomain's regionSeeds): its region, or -1 if it lies
+  /// outside the remaining triangles.
+  Array<int> seedRegion;
 };
 
 /// Up to this many hole seeds, carveDomain finds the triangle under each one
@@ -44,10 +47,11 @@ constexpr std::size_t kHoleSeedsScanned = 8;
 /// removeExterior: drop triangles reachable from the box boundary without
 /// crossing a constrained edge. constrained holds (lo, hi) vertex pairs.
 /// known, the adjacency of the first triangles, must agree with them; it spares
-/// matching those edges, and its arrays are reused (move it in).
+/// matching those edges, and its arrays are reused (move it in). regionSeeds
+/// are located after the holes are removed (Carving::seedRegion).
 Carving carveDomain(const Array<Point>& points, const Array<Triangle>& triangles,
   const Array<Segment>& constrained, bool removeExterior, const Array<Point>& holes,
-  KnownAdjacency known = {});
+  KnownAdjacency known = {}, const Array<Point>& regionSeeds = {});
 
 /// Convex hull of the points, counter-clockwise, without collinear vertices.
 Array<int> convexHull(const Array<Point>& points);

@@ -67,10 +67,22 @@ std::string writeTriangleFiles(const std::string& base, const Result& r)
       r.mesh.vertices[v].y, r.vertexOrigin[v] == VertexOrigin::Input ? 1 : 0);
     node << buf;
   }
-  ele << r.mesh.triangles.size() << " 3 1\n";
+  // Attributes: the regional attribute first when there is one (as Triangle's
+  // -A writes it), then the region id.
+  const bool attributes =
+    r.regionAttribute.size() == r.mesh.triangles.size() && !r.regionAttribute.empty();
+  ele << r.mesh.triangles.size() << (attributes ? " 3 2\n" : " 3 1\n");
   for (std::size_t t = 0; t < r.mesh.triangles.size(); ++t)
+  {
     ele << t + 1 << ' ' << r.mesh.triangles[t][0] + 1 << ' ' << r.mesh.triangles[t][1] + 1 << ' '
-        << r.mesh.triangles[t][2] + 1 << ' ' << r.regionId[t] << '\n';
+        << r.mesh.triangles[t][2] + 1 << ' ';
+    if (attributes)
+    {
+      std::snprintf(buf, sizeof buf, "%.17g ", r.regionAttribute[t]);
+      ele << buf;
+    }
+    ele << r.regionId[t] << '\n';
+  }
   const std::vector<std::array<int, 3>> edges = meshEdges(r);
   edge << edges.size() << " 1\n";
   for (std::size_t e = 0; e < edges.size(); ++e)

@@ -76,6 +76,7 @@ struct Work
   Array<Segment> segments;
   Array<int> segmentOrigin; ///< the user's segment index, -1 for hull edges
   Array<Point> holes;
+  Array<Point> regionSeeds;
 };
 
 /// Power-of-two scale bringing the largest coordinate into [0.5, 1): exact, so
@@ -126,6 +127,8 @@ std::string normalise(Work& w, const Pslg& input, const Array<int>& pointOf, int
     }
   }
   for (Point& p : w.holes)
+    scale(p);
+  for (Point& p : w.regionSeeds)
     scale(p);
   return {};
 }
@@ -233,6 +236,8 @@ private:
   Domain chooseDomain(const Work& w, Array<int>& hull);
   void buildOutput(const Work& w, const PlanarGraph& g, Completion& c, Carving& carve,
     const Overlay& overlay, Array<Edge>& edges, Domain domain);
+  void warnAboutRegionSeeds(const Carving& carve);
+  void assignRegionAttributes(const Carving& carve);
 
   const Pslg& input;
   const Options& options;
@@ -271,6 +276,8 @@ Result Mesher::execute()
   w.segments = std::move(clean.segments);
   w.segmentOrigin = std::move(clean.segmentOrigin);
   w.holes = input.holes;
+  for (const RegionAttribute& region : input.regions)
+    w.regionSeeds.push_back(region.seed);
   if (std::string e = normalise(w, input, clean.pointOf, exponent); !e.empty())
     throw Stop{ e };
   st.secondsClean = since(t0);
@@ -430,8 +437,9 @@ void Mesher::meshRounds(Work& w)
     t = Clock::now();
     run.phase("domain", 0.9, 1.0);
     Carving carve = carveDomain(g.points, c.triangles, c.constrainedEdges, domain != Domain::Box,
-      w.holes, std::move(g.intactAdjacency));
+      w.holes, std::move(g.intactAdjacency), w.regionSeeds);
     st.secondsDomain = since(t);
+    warnAboutRegionSeeds(carve);
     if (!carve.unusedHoles.empty())
       res.warnings.push_back(std::to_string(carve.unusedHoles.size()) +
         " hole point(s) lie outside the meshed domain or in a region already removed, e.g. "
@@ -458,6 +466,58 @@ void Mesher::meshRounds(Work& w)
     buildOutput(w, g, c, carve, overlay, edges, domain);
     return;
   }
+}
+
+/// Region seeds that give no triangle an attribute, and area limits, which
+/// are not applied, are said.
+void Mesher::warnAboutRegionSeeds(const Carving& carve)
+{
+  const Array<RegionAttribute>& regions = input.regions;
+  std::size_t outside = 0, overridden = 0, limits = 0;
+  int firstOutside = -1, firstOverridden = -1;
+  Array<char> claimed; // per region: a later seed gives its attribute
+  claimed.assign(carve.regions, char{ 0 });
+  for (std::size_t k = regions.size(); k-- > 0;)
+  {
+    const int region = carve.seedRegion[k];
+    limits += regions[k].maxArea > 0 ? 1 : 0;
+    if (region < 0 && ++outside)
+      firstOutside = static_cast<int>(k);
+    else if (region >= 0 && claimed[region] && ++overridden)
+      firstOverridden = static_cast<int>(k);
+    else if (region >= 0)
+      claimed[region] = 1;
+  }
+  if (outside > 0)
+    res.warnings.push_back(std::to_string(outside) +
+      " region point(s) lie outside the meshed domain or in a hole, e.g. region " +
+      std::to_string(firstOutside) + " at " + formatPoint(regions[firstOutside].seed) +
+      ": their attributes are given to no triangle");
+  if (overridden > 0)
+    res.warnings.push_back(std::to_string(overridden) +
+      " region point(s) share their region with a later one, whose attribute the region takes "
+      "(as Triangle does), e.g. region " +
+      std::to_string(firstOverridden) + " at " + formatPoint(regions[firstOverridden].seed));
+  if (limits > 0)
+    res.warnings.push_back(std::to_string(limits) +
+      " region(s) set a maximum triangle area, which is not applied: the mesher bounds edge "
+      "lengths (the maximum edge length option) over the whole domain");
+}
+
+/// The attribute of each kept triangle from the region seeds (res.regionId
+/// already compacted to the kept triangles).
+void Mesher::assignRegionAttributes(const Carving& carve)
+{
+  if (input.regions.empty())
+    return;
+  Array<double> ofRegion;
+  ofRegion.assign(carve.regions, 0.0);
+  for (std::size_t r = 0; r < input.regions.size(); ++r)
+    if (carve.seedRegion[r] >= 0)
+      ofRegion[carve.seedRegion[r]] = input.regions[r].attribute; // the last seed wins
+  res.regionAttribute.resize(res.regionId.size());
+  for (std::size_t t = 0; t < res.regionId.size(); ++t)
+    res.regionAttribute[t] = ofRegion[res.regionId[t]];
 }
 
 /// Smallest and largest angle of the mesh in degrees, exactly as angleAt gives
@@ -575,6 +635,7 @@ void Mesher::buildOutput(const Work& w, const PlanarGraph& g, Completion& c, Car
     tris.shrink_to_fit();
     region.shrink_to_fit();
   }
+  assignRegionAttributes(carve);
   // Points created by splitting crossing segments are neither input nor Steiner.
   for (std::size_t i = 0; i < w.points.size(); ++i)
   {

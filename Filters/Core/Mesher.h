@@ -106,6 +106,10 @@ struct Result
   TriMesh mesh;                     ///< the conforming triangulation
   Array<VertexOrigin> vertexOrigin; ///< per mesh vertex
   Array<int> regionId;              ///< per mesh triangle
+  /// Per mesh triangle when the input has regional attributes (else empty): the
+  /// attribute of the last region seed in its region, as Triangle's -A gives,
+  /// 0 in regions no seed lies in.
+  Array<double> regionAttribute;
   /// For each input point (by its index in the Pslg), its vertex in mesh, or -1 if
   /// it lies outside the returned domain (e.g. inside a hole).
   Array<int> inputVertex;

@@ -534,7 +534,7 @@ private:
     r.maxArea = r.attribute;
     if (!optionalReal(4, "maximum area", r.maxArea))
       return false;
-    out_.regions.push_back(r);
+    out_.pslg.regions.push_back(r);
     return true;
   }
 
@@ -546,7 +546,7 @@ private:
     long long n = 0;
     if (!count("regions", n))
       return false;
-    out_.regions.reserve(static_cast<std::size_t>(n));
+    out_.pslg.regions.reserve(static_cast<std::size_t>(n));
     return items("region", "regions", n, line, [&](long long) { return region(); });
   }
 

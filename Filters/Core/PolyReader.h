@@ -11,26 +11,17 @@
 namespace osm
 {
 
-/// A region line of a .poly file: a seed point, its attribute and area limit.
-struct RegionAttribute
-{
-  Point seed;
-  double attribute = 0.0;
-  double maxArea = -1.0;
-};
-
 struct PolyFile
 {
   bool ok = false;
   /// On failure: "<file>:<line>: <reason>", e.g. "a.poly:12: segment 4 refers to vertex 40, which
   /// does not exist".
   std::string error;
-  Pslg pslg;          ///< points renumbered from 0 in file order; holes from the file
+  Pslg pslg;          ///< points renumbered from 0 in file order; holes and regions from the file
   int firstIndex = 0; ///< 0 or 1: the numbering the file used
   std::vector<std::vector<double>> pointAttributes; ///< per point (may be empty)
   std::vector<int> pointMarkers;                    ///< per point, empty if the file has none
   std::vector<int> segmentMarkers;                  ///< per segment, empty if the file has none
-  std::vector<RegionAttribute> regions;
 };
 
 /// Read a .poly file (with a .node beside it when the .poly lists zero vertices)

@@ -10,6 +10,17 @@
 namespace osm
 {
 
+/// A regional attribute (a region line of Triangle's .poly format): every
+/// triangle of the region (bounded by segments) that holds `seed` gets
+/// `attribute`. maxArea is the file's area limit for the region (unused: the
+/// mesher bounds edge lengths, not areas), negative when none.
+struct RegionAttribute
+{
+  Point seed;
+  double attribute = 0.0;
+  double maxArea = -1.0;
+};
+
 /// Points plus segments (pairs of point indices) plus hole seed points.
 /// Segments must not cross, unless the mesher is allowed to split crossings.
 struct Pslg
@@ -18,6 +29,8 @@ struct Pslg
   Array<Segment> segments;
   /// Seeds: the region (bounded by segments) containing each one is removed.
   Array<Point> holes;
+  /// Regional attributes; with any, the mesh has an attribute per triangle.
+  Array<RegionAttribute> regions;
 };
 
 } // namespace osm

@@ -360,6 +360,30 @@ def group_formats():
         report = validate(odd, path, what="." + ext + ": 17-digit coordinates read back and valid")
         check(" 4 of 4 input points" in report,
               ".%s: the 4 input points keep their coordinates bit for bit" % ext, report)
+    # Regional attributes (a .poly's region lines, as Triangle's -A uses them):
+    # the .ele's first attribute, per triangle of each region; the area limit is
+    # said not to be applied.
+    regions = out("regions.poly")
+    with open(regions, "w") as f:
+        f.write(poly_text([(0, 0), (10, 0), (10, 10), (0, 10), (3, 3), (7, 3), (7, 7), (3, 7)],
+                          [(0, 1), (1, 2), (2, 3), (3, 0), (4, 5), (5, 6), (6, 7), (7, 4)]) +
+                "2\n0 1 1 -2.5\n1 5 5 0.125 4\n")
+    text = mesh_ok(regions, "-o", out("regions.node")).stderr
+    check("1 region(s) set a maximum triangle area, which is not applied" in text,
+          "regions: the area limits are said not to be applied", text)
+    with open(out("regions.ele")) as f:
+        rows = [l.split() for l in f if l.strip()]
+    rv, rt, _ = read_triangle_files(out("regions"))
+    check(rows[0][2] == "2", "regions: .ele has 2 attributes (regional attribute, region id)",
+          " ".join(rows[0]))
+
+    def inner(tri):
+        cx, cy = (sum(rv[i - 1][k] for i in tri) / 3 for k in (0, 1))
+        return 3 < cx < 7 and 3 < cy < 7
+    wrong = [r for r, tri in zip(rows[1:], rt) if float(r[4]) != (0.125 if inner(tri) else -2.5)]
+    check(any(inner(tri) for tri in rt) and not wrong,
+          "regions: every triangle has its region's attribute (-2.5 outside, 0.125 inside)",
+          str(wrong[:3]))
     # Uppercase extension and a .node output base in a sub-directory.
     os.makedirs(out("sub"), exist_ok=True)
     mesh_ok(square, "-o", out("sub/UPPER.VTP"))

@@ -340,6 +340,76 @@ TEST(Mesher, HolesThatRemoveEveryRegionAreSaid)
   EXPECT_FALSE(mentions(mesh(p).warnings, "removed every region"));
 }
 
+/// The unit square with an inner square (0.25..0.75), not a hole: two regions.
+Pslg squareInSquare()
+{
+  Pslg p = square();
+  p.points.insert(
+    p.points.end(), { { 0.25, 0.25 }, { 0.75, 0.25 }, { 0.75, 0.75 }, { 0.25, 0.75 } });
+  p.segments.insert(p.segments.end(), { { 4, 5 }, { 5, 6 }, { 6, 7 }, { 7, 4 } });
+  return p;
+}
+
+/// Whether triangle t of the mesh has its centroid inside the inner square.
+bool inInnerSquare(const Result& r, std::size_t t)
+{
+  Point c{ 0, 0 };
+  for (int v : r.mesh.triangles[t])
+    c = { c.x + r.mesh.vertices[v].x / 3, c.y + r.mesh.vertices[v].y / 3 };
+  return c.x > 0.25 && c.x < 0.75 && c.y > 0.25 && c.y < 0.75;
+}
+
+TEST(Mesher, RegionalAttributesGoToEveryTriangleOfTheirRegion)
+{
+  Pslg p = squareInSquare();
+  EXPECT_TRUE(meshAndValidate(p, "no regions").regionAttribute.empty());
+  p.regions = { { { 0.1, 0.1 }, 5.0 }, { { 0.5, 0.5 }, 9.0 } };
+  const Result r = meshAndValidate(p, "two regions");
+  ASSERT_EQ(r.regionAttribute.size(), r.mesh.triangles.size());
+  std::size_t inner = 0;
+  for (std::size_t t = 0; t < r.mesh.triangles.size(); ++t)
+  {
+    inner += inInnerSquare(r, t) ? 1 : 0;
+    EXPECT_EQ(r.regionAttribute[t], inInnerSquare(r, t) ? 9.0 : 5.0) << "triangle " << t;
+  }
+  EXPECT_GT(inner, 0u);
+  EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
+
+  // A region without a seed gets 0; a seed in a hole gives nothing and is said.
+  p.regions = { { { 0.5, 0.5 }, 9.0 } };
+  p.holes = { { 0.6, 0.6 } };
+  const Result holed = meshAndValidate(p, "seed in the hole");
+  ASSERT_EQ(holed.regionAttribute.size(), holed.mesh.triangles.size());
+  for (double a : holed.regionAttribute)
+    EXPECT_EQ(a, 0.0);
+  EXPECT_TRUE(mentions(holed.warnings,
+    "1 region point(s) lie outside the meshed domain or in a hole, e.g. region 0 at"));
+}
+
+TEST(Mesher, RegionalAttributesOfASharedRegionAreTheLastSeeds)
+{
+  // More seeds than the scan handles: the grid finds them. The last seed of a
+  // region gives its attribute, as in Triangle.
+  Pslg p = squareInSquare();
+  for (int k = 0; k < 12; ++k)
+    p.regions.push_back({ { 0.05 + 0.01 * k, 0.1 }, double(k), k == 3 ? 0.5 : -1.0 });
+  p.regions.push_back({ { 0.5, 0.5 }, 100.0 });
+  const Result r = meshAndValidate(p, "many seeds");
+  ASSERT_EQ(r.regionAttribute.size(), r.mesh.triangles.size());
+  for (std::size_t t = 0; t < r.mesh.triangles.size(); ++t)
+    EXPECT_EQ(r.regionAttribute[t], inInnerSquare(r, t) ? 100.0 : 11.0) << "triangle " << t;
+  EXPECT_TRUE(mentions(r.warnings,
+    "11 region point(s) share their region with a later one, whose attribute the region takes "
+    "(as Triangle does), e.g. region 0 at"));
+  EXPECT_TRUE(
+    mentions(r.warnings, "1 region(s) set a maximum triangle area, which is not applied"));
+
+  p.regions[4].seed = { std::nan(""), 0.0 };
+  const Result bad = mesh(p);
+  EXPECT_FALSE(bad.ok);
+  EXPECT_NE(bad.error.find("region 4 has a non-finite coordinate"), std::string::npos) << bad.error;
+}
+
 TEST(Mesher, SteinerCapGivesAClearError)
 {
   Options o;

@@ -80,7 +80,7 @@ TEST(PolyReader, MinimalFile)
   EXPECT_TRUE(f.pointAttributes.empty());
   EXPECT_TRUE(f.pointMarkers.empty());
   EXPECT_TRUE(f.segmentMarkers.empty());
-  EXPECT_TRUE(f.regions.empty());
+  EXPECT_TRUE(f.pslg.regions.empty());
 }
 
 TEST(PolyReader, CommentsBlankLinesAndWhitespace)
@@ -212,7 +212,7 @@ TEST(PolyReader, MissingHolesSectionMeansNoHoles)
   const PolyFile f = poly("3 2 0 0\n1 0 0\n2 9 0\n3 0 9\n1 0\n1 1 2\n# the end\n\n");
   ASSERT_TRUE(f.ok) << f.error;
   EXPECT_TRUE(f.pslg.holes.empty());
-  EXPECT_TRUE(f.regions.empty());
+  EXPECT_TRUE(f.pslg.regions.empty());
 }
 
 TEST(PolyReader, RegionalAttributesWithFourAndFiveTokens)
@@ -223,15 +223,15 @@ TEST(PolyReader, RegionalAttributesWithFourAndFiveTokens)
     "2 0.9 0.1 0.05\n"
     "3 0.9 0.9 -1 -1 extra\n");
   ASSERT_TRUE(f.ok) << f.error;
-  ASSERT_EQ(f.regions.size(), 3u);
-  EXPECT_EQ(f.regions[0].seed, (Point{ 0.1, 0.1 }));
-  EXPECT_EQ(f.regions[0].attribute, 7);
-  EXPECT_EQ(f.regions[0].maxArea, 0.25);
+  ASSERT_EQ(f.pslg.regions.size(), 3u);
+  EXPECT_EQ(f.pslg.regions[0].seed, (Point{ 0.1, 0.1 }));
+  EXPECT_EQ(f.pslg.regions[0].attribute, 7);
+  EXPECT_EQ(f.pslg.regions[0].maxArea, 0.25);
   // One value: Triangle uses it as both the attribute and the area limit.
-  EXPECT_EQ(f.regions[1].attribute, 0.05);
-  EXPECT_EQ(f.regions[1].maxArea, 0.05);
-  EXPECT_EQ(f.regions[2].attribute, -1);
-  EXPECT_EQ(f.regions[2].maxArea, -1);
+  EXPECT_EQ(f.pslg.regions[1].attribute, 0.05);
+  EXPECT_EQ(f.pslg.regions[1].maxArea, 0.05);
+  EXPECT_EQ(f.pslg.regions[2].attribute, -1);
+  EXPECT_EQ(f.pslg.regions[2].maxArea, -1);
   ASSERT_EQ(f.pslg.holes.size(), 1u);
 }
 
@@ -638,7 +638,7 @@ TEST_F(PolyReaderData, ExactCounts)
     EXPECT_EQ(f.pslg.points.size(), e.vertices);
     EXPECT_EQ(f.pslg.segments.size(), e.segments);
     EXPECT_EQ(f.pslg.holes.size(), e.holes);
-    EXPECT_EQ(f.regions.size(), e.regions);
+    EXPECT_EQ(f.pslg.regions.size(), e.regions);
   }
 }
 
@@ -650,9 +650,9 @@ TEST_F(PolyReaderData, DetailsOfSelectedFiles)
   EXPECT_EQ(la.firstIndex, 1);
   EXPECT_EQ(la.pslg.points[1], (Point{ 41.8893, 0 }));
   EXPECT_EQ(la.pointMarkers[0], 101);
-  EXPECT_EQ(la.regions[0].seed, (Point{ 6, -0.2 }));
-  EXPECT_EQ(la.regions[0].attribute, 0.05);
-  EXPECT_EQ(la.regions[0].maxArea, 0.05);
+  EXPECT_EQ(la.pslg.regions[0].seed, (Point{ 6, -0.2 }));
+  EXPECT_EQ(la.pslg.regions[0].attribute, 0.05);
+  EXPECT_EQ(la.pslg.regions[0].maxArea, 0.05);
   // A.poly has one attribute per vertex; face.poly has markers and trailing comments.
   const PolyFile a = read("A.poly");
   ASSERT_TRUE(a.ok) << a.error;

@@ -9,6 +9,7 @@
 //   non-coplanar     points off one plane: an error naming the farthest point
 //   project-xy       ProjectToXYPlane meshes the XY projection at the mean z
 //   field-holes      hole seeds from the input's field data "HolePoints"
+//   field-regions    regional attributes from the field data "RegionAttributes"
 //   ignored-cells    cells that give no segment: ONE warning counting them by kind
 //   progress         progress through every phase, monotone, ending at 1
 //   abort            an abort requested from a progress observer on a big input
@@ -390,6 +391,61 @@ int TestProjectToXY()
 }
 
 //------------------------------------------------------------------------------
+/// Adds the field data array "RegionAttributes" with the given tuples.
+void AddFieldRegions(vtkPolyData* input, int components, const std::vector<double>& values)
+{
+  vtkNew<vtkDoubleArray> regions;
+  regions->SetName("RegionAttributes");
+  regions->SetNumberOfComponents(components);
+  for (double v : values)
+  {
+    regions->InsertNextValue(v);
+  }
+  input->GetFieldData()->AddArray(regions);
+}
+
+int TestFieldRegions()
+{
+  // The inner square (3..7) gets 9 from its seed, the ring 5 (a 3-component tuple).
+  auto input = SquareWithInnerSquares({ { 3, 7 } });
+  Harness h;
+  vtkPolyData* mesh = h.Run(input, "no regional attributes");
+  Check(h.NoError() && !mesh->GetCellData()->GetArray("RegionAttribute"),
+    "without RegionAttributes the mesh has no RegionAttribute array");
+  AddFieldRegions(input, 4, { 1, 1, 5, -1, 5, 5, 9, 2 });
+  mesh = h.Run(input, "RegionAttributes with 4 components");
+  vtkDataArray* attribute = mesh->GetCellData()->GetArray("RegionAttribute");
+  Check(attribute && attribute->GetNumberOfTuples() == mesh->GetNumberOfCells(),
+    "a RegionAttribute cell array, one value per triangle");
+  vtkIdType wrong = 0;
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; attribute && c < mesh->GetNumberOfCells(); ++c)
+  {
+    mesh->GetCellPoints(c, ids);
+    double centroid[2] = { 0, 0 };
+    for (vtkIdType k = 0; k < 3; ++k)
+    {
+      double p[3];
+      mesh->GetPoint(ids->GetId(k), p);
+      centroid[0] += p[0] / 3;
+      centroid[1] += p[1] / 3;
+    }
+    const bool inner = centroid[0] > 3 && centroid[0] < 7 && centroid[1] > 3 && centroid[1] < 7;
+    wrong += attribute->GetTuple1(c) != (inner ? 9.0 : 5.0) ? 1 : 0;
+  }
+  Check(attribute && wrong == 0, "each triangle has its region's attribute (9 inside, 5 outside)");
+  Check(h.Messages->HasWarning({ "1 region(s) set a maximum triangle area, which is not applied" }),
+    "the area limit of the inner region is said not to be applied");
+
+  auto bad = SquareWithInnerSquares({ { 3, 7 } });
+  AddFieldRegions(bad, 2, { 1, 1 });
+  mesh = h.Run(bad, "RegionAttributes with 2 components");
+  Check(h.NoError() && !mesh->GetCellData()->GetArray("RegionAttribute") &&
+      h.Messages->HasWarning({ "RegionAttributes has 2 components", "ignored" }),
+    "a 2-component RegionAttributes array is ignored with a warning");
+  return 0;
+}
+
 int TestFieldHoles()
 {
   auto input = SquareWithInnerSquares({ { 3, 7 } });
@@ -938,6 +994,7 @@ int main(int argc, char* argv[])
     { "non-coplanar", TestNonCoplanar },
     { "project-xy", TestProjectToXY },
     { "field-holes", TestFieldHoles },
+    { "field-regions", TestFieldRegions },
     { "ignored-cells", TestIgnoredCells },
     { "progress", TestProgress },
     { "abort", [points] { return TestAbort(points); } },
