@@ -27,6 +27,7 @@
 #include "vtkStringArray.h"
 #include "vtkTypeInt32Array.h"
 #include "vtkUnsignedCharArray.h"
+#include "vtkVersionMacros.h"
 
 #include "Geometry.h"
 #include "HugePages.h"
@@ -53,9 +54,33 @@ vtkStandardNewMacro(vtkOverlayStitchMesher);
 namespace
 {
 
+/// Whether the run must stop, by VTK's convention: the filter's AbortExecute
+/// (or, through CheckAbort, an upstream filter's) is set. CheckAbort also marks
+/// the outputs ABORTED, so that the run after the caller clears the flag meshes
+/// again; the flag is the caller's and stays set. VTK before CheckAbort (9.1)
+/// has only the filter's own flag.
+bool AbortRequested(vtkAlgorithm* filter)
+{
+#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 2, 20230101)
+  return filter->CheckAbort();
+#else
+  return filter->GetAbortExecute() != 0;
+#endif
+}
+
+/// The outputs of a run that meshes nothing. Empty points, not none: a point
+/// set without points keeps reporting its old bounds.
+void ClearOutputs(std::initializer_list<vtkPolyData*> outputs)
+{
+  for (vtkPolyData* output : outputs)
+  {
+    output->Initialize();
+    output->SetPoints(vtkNew<vtkPoints>());
+  }
+}
+
 /// Forwards the core's progress to the algorithm, mapped into [begin, end] of
-/// the whole run, and polls its abort flag (GetAbortExecute rather than
-/// CheckAbort, which VTK 9.1 does not have).
+/// the whole run, and polls the abort flag.
 class ProgressAdapter : public osm::Progress
 {
 public:
@@ -77,11 +102,9 @@ public:
 
   bool aborted() override
   {
-    this->Aborted = this->Aborted || this->Filter->GetAbortExecute() != 0;
+    this->Aborted = this->Aborted || AbortRequested(this->Filter);
     return this->Aborted;
   }
-
-  bool WasAborted() const { return this->Aborted; }
 
 private:
   vtkOverlayStitchMesher* Filter;
@@ -608,9 +631,7 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
     return 0;
   }
   // Outputs stay empty unless meshing succeeds.
-  mesh->Initialize();
-  edges->Initialize();
-  overlay->Initialize();
+  ClearOutputs({ mesh, edges, overlay });
   // A composite input is one graph: this rank's polydata blocks, combined.
   OverlayStitchGatherSummary combination;
   if (auto* composite = vtkCompositeDataSet::SafeDownCast(inputObject))
@@ -722,10 +743,9 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   {
     vtkWarningMacro(<< regionsWarning);
   }
-  if (this->GetAbortExecute())
+  if (AbortRequested(this))
   {
     vtkErrorMacro("Meshing failed: aborted by the user");
-    this->AbortExecute = 0; // the executive does not reset it: the next run must not abort
     return 1;
   }
   this->UpdateProgress(0.05);
@@ -771,12 +791,6 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   {
     vtkWarningMacro(<< ExplainSegments(warning, segmentSources));
   }
-  if (progress.WasAborted())
-  {
-    // Handled: the executive does not reset the flag, and the next run must not abort.
-    // (Assigned directly: SetAbortExecute() would mark the filter modified.)
-    this->AbortExecute = 0;
-  }
   if (!result.ok)
   {
     vtkErrorMacro("Meshing failed: " << ExplainSegments(result.error, segmentSources));
@@ -786,15 +800,12 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   // Phase "output": the three polydata, built in bulk; the abort flag is
   // polled between them (an abort empties every output).
   auto aborted = [&]() {
-    if (!this->GetAbortExecute())
+    if (!AbortRequested(this))
     {
       return false;
     }
-    mesh->Initialize();
-    edges->Initialize();
-    overlay->Initialize();
+    ClearOutputs({ mesh, edges, overlay });
     vtkErrorMacro("Meshing failed: aborted by the user");
-    this->AbortExecute = 0;
     return true;
   };
   this->SetProgressText("output");
@@ -831,12 +842,11 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   {
     MakeTriangles(result.overlay, map, overlay);
   }
-  if (aborted())
-  {
-    return 1;
-  }
   this->SetProgressText(nullptr);
   this->UpdateProgress(1.0);
+  // An abort requested by the last progress report still counts: the flag
+  // stays set, so a mesh kept here would make the next run fail instead.
+  aborted();
   return 1;
 }
 

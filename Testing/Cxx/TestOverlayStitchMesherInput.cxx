@@ -24,6 +24,7 @@
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkIdList.h"
+#include "vtkInformation.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
 #include "vtkPartitionedDataSet.h"
@@ -756,9 +757,30 @@ int TestAbort(int points)
     Check(h.Messages->Errors.size() == 1 && h.Messages->HasError({ "aborted by the user" }),
       row + ": the run ends with the error 'aborted by the user'");
     Check(osmtest::AllOutputsEmpty(h.Mesher), row + ": all outputs are empty");
+    double bounds[6];
+    h.Mesher->GetOutput(0)->GetBounds(bounds);
+    Check(bounds[0] > bounds[1], row + ": the empty mesh reports no bounds (not the last mesh's)");
+    // VTK's convention (vtkShrinkFilter's): the flag is the caller's and stays
+    // set, the outputs are marked ABORTED, and clearing the flag re-runs.
+    Check(h.Mesher->GetAbortExecute() != 0, row + ": AbortExecute stays set");
+    Check(h.Mesher->GetOutputInformation(0)->Get(vtkAlgorithm::ABORTED()) == 1,
+      row + ": the output is marked ABORTED");
+    h.Messages->Clear();
+    h.Mesher->SetAbortExecute(0);
+    h.Mesher->Update();
+    vtkPolyData* again = vtkPolyData::SafeDownCast(h.Mesher->GetOutputDataObject(0));
+    Check(h.NoError() && again && again->GetNumberOfCells() > 0 &&
+        !h.Mesher->GetOutputInformation(0)->Get(vtkAlgorithm::ABORTED()),
+      row + ": clearing the flag and updating meshes again, with no other change (" +
+        std::to_string(again ? again->GetNumberOfCells() : 0) + " triangles)");
   }
 
-  // The flag was handled: the next run is not aborted.
+  // An abort set before the run stops it at once.
+  h.Mesher->SetAbortExecute(1);
+  h.Run(SquareWithInnerSquares({ { 3, 7 } }), "an abort set before the run");
+  Check(h.Messages->HasError({ "aborted by the user" }) && osmtest::AllOutputsEmpty(h.Mesher),
+    "an abort set before the run: the error, empty outputs");
+  h.Mesher->SetAbortExecute(0);
   vtkPolyData* mesh = h.Run(SquareWithInnerSquares({ { 3, 7 } }), "the run after the aborts");
   Check(h.NoError() && mesh->GetNumberOfCells() > 0, "the next run meshes normally");
   return 0;
