@@ -709,6 +709,23 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   {
     vtkWarningMacro(<< ignored.Describe());
   }
+  // In a plane that contains the z direction, an (x, y) seed names a whole
+  // vertical line of the plane: refused rather than placed at some height.
+  vtkFieldData* field = input->GetFieldData();
+  vtkDataArray* fieldHoles = this->UseInputHolePoints ? field->GetArray("HolePoints") : nullptr;
+  const char* xySeeds = !this->HolePoints.empty()            ? "the HolePoints property"
+    : fieldHoles && fieldHoles->GetNumberOfComponents() == 2 ? "the input's 2-component HolePoints"
+    : field->GetArray("RegionAttributes")                    ? "the input's RegionAttributes"
+                                                             : nullptr;
+  if (xySeeds && !map.seedXYDefined())
+  {
+    vtkErrorMacro("Cannot mesh the input: its points lie in a plane that contains the z "
+                  "direction, where a seed given as (x, y), as in "
+      << xySeeds
+      << ", names no single point; give hole seeds as the input's field data HolePoints "
+         "with 3 components (x, y, z).");
+    return 1;
+  }
   for (std::size_t i = 0; i + 1 < this->HolePoints.size(); i += 2)
   {
     pslg.holes.push_back(map.seedXY(this->HolePoints[i], this->HolePoints[i + 1]));

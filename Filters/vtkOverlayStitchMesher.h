@@ -28,7 +28,8 @@
  * is on, from the input's field data array "HolePoints" (3 components, x y z;
  * as written by the .poly reader). For input meshed in a fitted plane, field
  * data seeds are projected orthogonally onto that plane and property seeds
- * (x, y) are moved along z onto it.
+ * (x, y) are moved along z onto it; in a plane that contains the z direction
+ * (x = c, y = c) an (x, y) seed names no single point, and the run fails.
  *
  * The mesher runs in three phases: an overlay Delaunay mesh of the input
  * points whose angles are at least MinimumAngle (θ1); stitching, which keeps

@@ -6,6 +6,7 @@
 #include "Geometry.h"
 #include "HugePages.h"
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -101,6 +102,9 @@ public:
   Point toPlane(const Vec3& p) const { return fitted ? frame.toPlane(p) : Point{ p.x, p.y }; }
   /// A hole seed given as (x, y): moved along z onto a fitted plane.
   Point seedXY(double x, double y) const { return fitted ? frame.liftXY(x, y) : Point{ x, y }; }
+  /// Whether seedXY names one point: not in a plane that contains the z
+  /// direction (x = c, y = c), where (x, y) leaves the height undefined.
+  bool seedXYDefined() const { return !fitted || std::fabs(frame.normal.z) >= 1e-9; }
 
   /// Remembers which 2D points are the input's (the first of equal ones), so
   /// that toSpace() returns their original coordinates.

@@ -405,6 +405,28 @@ void AddFieldRegions(vtkPolyData* input, int components, const std::vector<doubl
   input->GetFieldData()->AddArray(regions);
 }
 
+/// Hole seeds for input in a vertical plane (y = 0.3): an (x, y) seed leaves
+/// the height undefined and is refused (it was placed at mid-height, and
+/// removed the wrong region with no message); (x, y, z) seeds work.
+void CheckSeedsInAVerticalPlane(Harness& h)
+{
+  auto xz = MakeLines({ { 0, 0.3, 0 }, { 10, 0.3, 0 }, { 10, 0.3, 10 }, { 0, 0.3, 10 },
+                        { 2, 0.3, 1 }, { 4, 0.3, 1 }, { 4, 0.3, 3 }, { 2, 0.3, 3 } },
+    { { 0, 1, 2, 3, 0 }, { 4, 5, 6, 7, 4 } });
+  h.Mesher->AddHolePoint(3, 0.3);
+  vtkPolyData* mesh = h.Run(xz, "an (x, y) hole seed, input in the plane y = 0.3");
+  Check(h.Messages->HasError({ "a plane that contains the z direction", "the HolePoints property",
+          "3 components (x, y, z)" }) &&
+      osmtest::AllOutputsEmpty(h.Mesher),
+    "vertical plane: an (x, y) seed is refused with an error, empty outputs");
+  h.Mesher->RemoveAllHolePoints();
+  AddFieldHoles(xz, { { 3, 0.3, 2 } });
+  mesh = h.Run(xz, "an (x, y, z) hole seed, input in the plane y = 0.3");
+  const double area = osmtest::TotalArea(mesh);
+  Check(h.NoError() && std::fabs(area - 96.0) < 1e-9,
+    "vertical plane: an (x, y, z) field data seed cuts its hole (area " + Num(area) + ", 96)");
+}
+
 int TestFieldRegions()
 {
   // The inner square (3..7) gets 9 from its seed, the ring 5 (a 3-component tuple).
@@ -444,6 +466,7 @@ int TestFieldRegions()
   Check(h.NoError() && !mesh->GetCellData()->GetArray("RegionAttribute") &&
       h.Messages->HasWarning({ "RegionAttributes has 2 components", "ignored" }),
     "a 2-component RegionAttributes array is ignored with a warning");
+  CheckSeedsInAVerticalPlane(h);
   return 0;
 }
 
