@@ -1167,19 +1167,29 @@ def targets(data, profile):
 
     # 1b. per triangle at most 1.5x CGAL CDT per triangle
     rel = []
+    long_runs = set()
     for o in osm_runs:
         c = by.get(("cgal-cdt", o["input"]))
-        if ok(c) and median_wall(c) >= SHORT_RUN:
+        if ok(c):
             rel.append((o["name"], per_triangle(o) / per_triangle(c)))
+            if median_wall(c) >= SHORT_RUN:
+                long_runs.add(o["name"])
     if rel:
+        # The target holds on every input: the short runs count too (they are
+        # timed by their shortest wall time, as in the Mesh_2 target).
         worst = max(rel, key=lambda r: r[1])
         best = min(rel, key=lambda r: r[1])
+        over = sorted((r for r in rel if r[1] > 1.5), key=lambda r: -r[1])
+        long_rel = [r[1] for r in rel if r[0] in long_runs]
         out.append(("Time per output triangle ≤ 1.5× CGAL CDT's per triangle",
-                    "OSM / CDT per triangle: geometric mean %s, from %s (%s) to %s (%s); "
-                    "over the inputs on which the CDT takes at least %g s (shorter runs are "
-                    "timed too coarsely here)" % (
-                        fmt(geomean([r[1] for r in rel]), 2), fmt(best[1], 2), best[0],
-                        fmt(worst[1], 2), worst[0], SHORT_RUN),
+                    "OSM / CDT per triangle on all %d inputs: geometric mean %s, from %s (%s) "
+                    "to %s (%s); above 1.5 on %d: %s%s" % (
+                        len(rel), fmt(geomean([r[1] for r in rel]), 2), fmt(best[1], 2),
+                        best[0], fmt(worst[1], 2), worst[0], len(over),
+                        ", ".join("%s %s" % (r[0], fmt(r[1], 2)) for r in over) or "none",
+                        "; on the %d inputs on which the CDT takes at least %g s: at most %s" % (
+                            len(long_rel), SHORT_RUN, fmt(max(long_rel), 2))
+                        if long_rel else ""),
                     worst[1] <= 1.5))
 
     # 2. per triangle flat within 1.5x from 1e4 to 1e7 triangles (generated families)
@@ -1415,8 +1425,12 @@ def write_report(data, profile, md_path, png_path, plot_note):
         w("Load average (1, 5, 15 min) at the start of the suite: %.2f, %.2f, %.2f; at its "
           "end: %.2f, %.2f, %.2f. On 2 cores, anything above about 1 means that other jobs "
           "(other builds in the same tree) competed with the benchmark; each figure is the "
-          "median of several runs, and every tool ran interleaved with the others on the same "
-          "input, so the ratios suffer less than the absolute times." % (tuple(ls) + tuple(le)))
+          "median of several runs. In the main pass each tool's runs on an input follow one "
+          "another, tool after tool (they are not interleaved run by run): a slow phase of "
+          "the machine, which can last minutes, may fall on one tool's runs and not the "
+          "other's, so a single ratio can be off by up to about 2 (us48.poly's Mesh_2 / OSM "
+          "was 4.4 here and 1.4-2.5 in runs alternated by hand); the repeated-calls pass "
+          "and the vtkDelaunay2D pairs alternate." % (tuple(ls) + tuple(le)))
     if meta.get("dirty"):
         w("")
         w("The drivers were built from the working tree, which other sessions were editing: "
@@ -1530,14 +1544,20 @@ def write_report(data, profile, md_path, png_path, plot_note):
     w("## Results")
     w("")
     w("*CPU s*: median process CPU time of the meshing call only (no reading, generating or "
-      "converting), over the runs counted in *runs*; *wall s*: the median wall time of the "
+      "converting), over the runs counted in *runs*, or for runs under %g s wall their "
+      "shortest wall time (see *Method*); *wall s*: the median wall time of the "
       "same calls (inflated by the other jobs on the machine). Each run is a separate "
       "process with a limit of %d CPU seconds. "
       "*missing*: input segments that are not a chain of output edges (checked "
-      "independently of every tool, from exact input coordinates); *out*: segments "
-      "outside the domain the tool meshed (legitimately absent). *peak*: peak RSS during "
+      "from exact input coordinates by the suite's own walk, the same for every tool); "
+      "*out*: segments outside the domain the tool meshed (legitimately absent; which "
+      "input points lie outside is taken from each tool's own output, so a tool that "
+      "wrongly dropped a region would count its segments here, not as missing; OSM and "
+      "Mesh_2 agree on every input). The output check does not test that the triangles "
+      "cover the domain without overlap (the project's own validator does that for OSM, "
+      "in the tests). *peak*: peak RSS during "
       "the call (its increase over the RSS before it, per output triangle, in "
-      "*B/tri*)." % args_timeout(data))
+      "*B/tri*)." % (SHORT_RUN, args_timeout(data)))
     w("")
     w("| input | tool | runs | CPU s | wall s | ns / triangle | vertices | triangles | "
       "min angle | max angle | missing | out | peak MB | B/tri | status |")
@@ -1772,8 +1792,8 @@ def notes_text(data, plot_note):
             "present" if meta["data_present"] else "absent here: skipped", SEED,
             "; ".join("%s %s" % (k, ", ".join(human(n) for n in v)) for k, v in fams.items())),
         "- **Caps** (to keep the suite near an hour on 2 shared cores): spread stops at 1e4 "
-        "input vertices (OSM makes 4.4 million triangles there; at 1e5 it made 45 million "
-        "in an earlier trial, 8.4 GB); random segments go to 1.2e6 vertices so that OSM "
+        "input vertices (OSM makes about 4 million triangles there; at 1e5 it made 45 million "
+        "in an earlier trial, 8.4 GB); random segments go to 1.4e6 vertices so that OSM "
         "reaches 1e7 output triangles; vtkDelaunay2D runs up to %s vertices (1e5 segments), "
         "the VTK filter up to %s, the VTK filter and osm-mesh on random segments and the "
         "real inputs only. After a time-out or a crash a tool is not run on the larger "
@@ -1783,7 +1803,8 @@ def notes_text(data, plot_note):
         "of the meshing call (median over the runs), not its wall time: the machine was "
         "shared with other builds (see the load average above), and a process waiting for "
         "a core is not working. Runs under %g s wall use their shortest wall time instead "
-        "(this machine's process CPU clock sometimes reads 0 for them). Wall times are in "
+        "(the process CPU clock lags by up to a scheduler tick under the suite's own RLIMIT_CPU, "
+        "which arms a process-wide CPU timer: a 1 ms call can read 0 or 4 ms). Wall times are in "
         "the table too. osm-mesh's CPU time is GNU time's user + system time (0.01 s "
         "resolution)." % SHORT_RUN,
         "- **Runs.** %d runs when one takes under %g CPU s, else %d; fewer when they would "
