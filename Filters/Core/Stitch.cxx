@@ -227,6 +227,13 @@ void Walker::addCrossing(int edge, int piece, const Point& A, const Point& B)
   if (!c.resolved)
     c.s = crossingFraction(B, dx, dy, p0, p1, edgeLength, c.resolved);
   c.p = { p0.x + c.s * ex, p0.y + c.s * ey };
+  // On a horizontal or vertical segment the point takes the segment's own
+  // coordinate: placed along the overlay edge it is off the segment by
+  // rounding (y = -8.9e-16 on y = 0), which a user selecting y == 0 misses.
+  if (A.y == B.y)
+    c.p.y = A.y;
+  if (A.x == B.x)
+    c.p.x = A.x;
   const double sine = std::fabs(cross(dx, dy, ex, ey)) / (segmentLength * edgeLength);
   c.good = sine > sinTheta1;
   out.crossings.push_back(c);

@@ -410,6 +410,36 @@ TEST(Mesher, RegionalAttributesOfASharedRegionAreTheLastSeeds)
   EXPECT_NE(bad.error.find("region 4 has a non-finite coordinate"), std::string::npos) << bad.error;
 }
 
+TEST(Mesher, StitchPointsLieExactlyOnHorizontalAndVerticalSegments)
+{
+  // Placed along the overlay edge they crossed, stitch points were off such
+  // segments by rounding (square_hole.poly at --max-edge 0.1: 178 vertices
+  // at y = -8.9e-16 and the like), found by a review.
+  Pslg p = squareInSquare();
+  for (Point& q : p.points)
+    q = { q.x * 10 + 0.1, q.y * 10 - 0.3 }; // coordinates that do not round to short binaries
+  Options o;
+  o.maxEdgeLength = 0.37;
+  const Result r = meshAndValidate(p, "square in square, max edge 0.37", o);
+  std::size_t onLines = 0, off = 0;
+  for (const Point& v : r.mesh.vertices)
+    for (const Segment& s : p.segments)
+    {
+      const Point &a = p.points[s[0]], &b = p.points[s[1]];
+      const bool horizontal = a.y == b.y, vertical = a.x == b.x;
+      const double along = horizontal ? v.x : v.y,
+                   lo = horizontal ? std::min(a.x, b.x) : std::min(a.y, b.y);
+      const double hi = horizontal ? std::max(a.x, b.x) : std::max(a.y, b.y);
+      const double gap = horizontal ? v.y - a.y : vertical ? v.x - a.x : 1.0;
+      if (along < lo || along > hi || std::fabs(gap) > 1e-9)
+        continue;
+      ++onLines;
+      off += gap != 0 ? 1 : 0;
+    }
+  EXPECT_GT(onLines, 100u);
+  EXPECT_EQ(off, 0u) << "of " << onLines << " vertices on the segments' lines";
+}
+
 TEST(Mesher, SteinerCapGivesAClearError)
 {
   Options o;
