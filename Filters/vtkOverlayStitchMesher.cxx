@@ -43,6 +43,7 @@
 #include <cstdint>
 #include <cstring>
 #include <exception>
+#include <functional>
 #include <limits>
 #include <sstream>
 #include <string>
@@ -425,7 +426,10 @@ vtkSmartPointer<ArrayT> MakeArray(const char* name, vtkIdType size)
   return array;
 }
 
-void FillMesh(const osm::Result& result, const osm::PlaneMap& map, vtkPolyData* output)
+/// Fills the Mesh output. poll(fraction) is called every 2^16 triangles of the
+/// angle arrays (the longest part) and stops the filling when it returns true.
+void FillMesh(const osm::Result& result, const osm::PlaneMap& map, vtkPolyData* output,
+  const std::function<bool(double)>& poll)
 {
   // Each mesh vertex that is an input point gets that point's original
   // coordinates (the first of merged points): by index, not by a round trip.
@@ -459,6 +463,10 @@ void FillMesh(const osm::Result& result, const osm::PlaneMap& map, vtkPolyData* 
   const auto& v = result.mesh.vertices;
   for (vtkIdType t = 0; t < numberOfTriangles; ++t)
   {
+    if ((t & 0xffff) == 0xffff && poll(static_cast<double>(t) / numberOfTriangles))
+    {
+      return;
+    }
     const osm::Triangle& tri = result.mesh.triangles[static_cast<std::size_t>(t)];
     double lo = 0.0;
     double hi = 0.0;
@@ -831,7 +839,14 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   {
     return 1;
   }
-  FillMesh(result, map, mesh);
+  FillMesh(result, map, mesh, [this](double fraction) {
+    this->UpdateProgress(0.9 + 0.05 * fraction);
+    return AbortRequested(this);
+  });
+  if (aborted())
+  {
+    return 1;
+  }
   auto addCount = [mesh](const char* name, double value) {
     auto array = MakeArray<vtkDoubleArray>(name, 1);
     array->SetValue(0, value);

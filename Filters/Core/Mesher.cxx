@@ -381,6 +381,7 @@ void Mesher::meshRounds(Work& w)
     OverlayEdges ov = compactOverlay(overlay.mesh);
     for (Segment& s : segments)
       s = { overlay.inputVertex[s[0]], overlay.inputVertex[s[1]] };
+    run.phase("stitch", 0.62, 0.7); // compaction done: the walks
     Walk walk = walkSegments(ov, overlay, segments, sinTheta1, run);
     st.secondsStitch += since(t);
     if (!walk.segmentCrossings.empty())
@@ -423,6 +424,7 @@ void Mesher::meshRounds(Work& w)
       res.overlay.triangles = ov.tris;
     }
     Array<Edge> edges;
+    run.phase("stitch", 0.7, 0.75); // the walks done: the planar graph
     PlanarGraph g = stitch(std::move(ov), std::move(overlay.mesh.points), overlay.isInput, walk,
       options.keepEdges ? &edges : nullptr, st);
     st.secondsStitch += since(t);
@@ -463,6 +465,7 @@ void Mesher::meshRounds(Work& w)
         formatPoint(input.holes[carve.seedsOnSegments.front()]) +
         ": the region on one side of it was removed, which side is not defined; move the "
         "point into the hole");
+    run.phase("domain", 0.95, 1.0); // carved: the output arrays
     buildOutput(w, g, c, carve, overlay, edges, domain);
     return;
   }

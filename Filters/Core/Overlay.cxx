@@ -171,6 +171,8 @@ private:
   int findInFan(const Point& q, int v, const Array<int>& fan) const;
   void countSteiner();
   double pointsForMaxEdge() const;
+  /// The refinement's progress in [0, 1], never decreasing.
+  double progressOf(double forMaxEdge);
 
   // The input points in Hilbert order: the buckets of a triangle then hold
   // points that are near in memory too. original[i] is input point i's index
@@ -198,6 +200,7 @@ private:
   SizeQueue<Item> queue;
   std::size_t inserted = 0;
   std::size_t hardCap = 0;
+  double lastProgress = 0;
   // Scratch.
   Triangulation::Cavity cavity;
   Array<int> created;
@@ -302,7 +305,7 @@ Overlay Refiner::refine()
     // Yielding or splitting the box may leave this triangle standing: retry it.
     if (mesh.points.size() > before && standing(item))
       enqueueIfNeeded(item.tri);
-    run.tick(input.empty() ? 1.0 : double(inserted) / double(input.size()));
+    run.tick(progressOf(forMaxEdge));
   }
   out.inputVertex.assign(input.size(), -1);
   for (std::size_t i = 0; i < input.size(); ++i)
@@ -315,6 +318,24 @@ Overlay Refiner::refine()
   mesh.releaseInsertionScratch();
   renumberAlongHilbertCurve(out);
   return std::move(out);
+}
+
+double Refiner::progressOf(double forMaxEdge)
+{
+  const double n = static_cast<double>(input.size());
+  double fraction = n == 0 ? 1.0 : double(inserted) / n;
+  // With a size bound that asks for more points than the input has, the
+  // Steiner points are most of the work: count all points against the
+  // expected total (about 2.2 times the bound's lower bound, as measured on
+  // squares refined to 10^6 points), not only the input points.
+  if (forMaxEdge > n)
+  {
+    const double steiner = static_cast<double>(out.steinerPoints);
+    fraction = std::min(
+      fraction, (double(inserted) + steiner) / (n + std::max(1.05 * steiner, 2.2 * forMaxEdge)));
+  }
+  lastProgress = std::max(lastProgress, fraction); // never backwards
+  return lastProgress;
 }
 
 double Refiner::pointsForMaxEdge() const
