@@ -335,61 +335,95 @@ def paired_ratios(v):
     return [c / p for c, p in zip(cpu, v.get("paired_osm_cpu", [])) if c and p]
 
 
-def measure(exe, spec, args, timeout, pair=None):
-    """First run with the output check, then timed repeats. Returns one result.
+class Measurement:
+    """One tool's runs on one input: a first run with the output check, then
+    timed repeats, one per call of repeat(), so that the tools meshing the same
+    input can take turns (a slow phase of the machine, which lasts minutes,
+    then falls on all of them alike).
     pair: a bench_osm to run PAIR_RUNS times before the first run and after
     each run, so that each long run is compared with the short runs on both
     sides of it, seconds apart, not minutes (see paired_ratios)."""
-    result = {"seconds": [], "cpu": [], "phases": []}
 
-    def run_pair():
+    def __init__(self, exe, spec, args, timeout, pair=None):
+        self.exe, self.spec, self.args, self.timeout, self.pair = exe, spec, args, timeout, pair
+        self.result = {"seconds": [], "cpu": [], "phases": []}
+        self.done = False
+        self.core = None
+
+    def run_pair(self):
         # PAIR_RUNS runs, their mean: one run of a second samples this machine's
         # speed in that second, where the long run it is paired with averages
         # over a minute (a mean, so the median, lower on a skewed spread, would
         # favour OSM).
-        if pair:
+        if self.pair:
             cpu = []
             for _ in range(PAIR_RUNS):
-                r = run_once(pair, spec, ["--no-check"], timeout)
+                r = run_once(self.pair, self.spec, ["--no-check"], self.timeout)
                 cpu.append(r.get("cpu_seconds") if r["status"] == "ok" else None)
-            result.setdefault("paired_osm_runs", []).append(cpu)
-            result.setdefault("paired_osm_cpu", []).append(
+            self.result.setdefault("paired_osm_runs", []).append(cpu)
+            self.result.setdefault("paired_osm_cpu", []).append(
                 statistics.mean(cpu) if all(cpu) else None)
 
-    if pair:
-        # A long run can meet a slow phase of this machine that the runs right
-        # after it miss: bracket it, with runs before it as well.
-        result["paired_bracketed"] = True
-        run_pair()
-    first = run_once(exe, spec, args, timeout)
-    result["first"] = first
-    if first["status"] != "ok":
-        return result
-    run_pair()
-    result["seconds"].append(first["seconds"])
-    result["cpu"].append(first.get("cpu_seconds"))
-    result["phases"].append(phases_of(first))
-    c = first.get("cpu_seconds") or first["seconds"]
-    target = RUNS_FAST if c < FAST_SECONDS else RUNS
-    spent = first["wall"]
-    last = first["wall"]
-    core = [first["core_seconds"]] if "core_seconds" in first else None
-    while len(result["seconds"]) < target and spent + last <= REPEAT_BUDGET:
-        again = run_once(exe, spec, args + ["--no-check"], timeout)
-        spent += again["wall"]
-        last = again["wall"]
+    def add(self, record):
+        self.result["seconds"].append(record["seconds"])
+        self.result["cpu"].append(record.get("cpu_seconds"))
+        self.result["phases"].append(phases_of(record))
+        if self.core is not None:
+            self.core.append(record["core_seconds"])
+
+    def first(self):
+        if self.pair:
+            # A long run can meet a slow phase of this machine that the runs right
+            # after it miss: bracket it, with runs before it as well.
+            self.result["paired_bracketed"] = True
+            self.run_pair()
+        first = run_once(self.exe, self.spec, self.args, self.timeout)
+        self.result["first"] = first
+        if first["status"] != "ok":
+            self.done = True
+            return
+        self.run_pair()
+        self.core = [] if "core_seconds" in first else None
+        self.add(first)
+        c = first.get("cpu_seconds") or first["seconds"]
+        self.target = RUNS_FAST if c < FAST_SECONDS else RUNS
+        self.spent = self.last = first["wall"]
+        self.repeat(run=False)
+
+    def repeat(self, run=True):
+        """One more timed run, unless the runs are complete (then done)."""
+        if self.done or not (len(self.result["seconds"]) < self.target
+                             and self.spent + self.last <= REPEAT_BUDGET):
+            self.done = True
+            return
+        if not run:
+            return
+        again = run_once(self.exe, self.spec, self.args + ["--no-check"], self.timeout)
+        self.spent += again["wall"]
+        self.last = again["wall"]
         if again["status"] != "ok":
-            result["repeat_failure"] = again
-            break
-        run_pair()
-        result["seconds"].append(again["seconds"])
-        result["cpu"].append(again.get("cpu_seconds"))
-        result["phases"].append(phases_of(again))
-        if core is not None:
-            core.append(again["core_seconds"])
-    if core is not None:
-        result["core_seconds"] = core
-    return result
+            self.result["repeat_failure"] = again
+            self.done = True
+            return
+        self.run_pair()
+        self.add(again)
+        self.repeat(run=False)
+
+    def finish(self):
+        if self.core is not None:
+            self.result["core_seconds"] = self.core
+        return self.result
+
+
+def measure_in_turns(measurements):
+    """First runs tool after tool, then the repeats in rounds, one run of each
+    tool per round, until every tool has its runs."""
+    for m in measurements:
+        m.first()
+    while not all(m.done for m in measurements):
+        for m in measurements:
+            m.repeat()
+    return [m.finish() for m in measurements]
 
 
 def phases_of(record):
@@ -474,33 +508,38 @@ def run_suite(args):
         "timeout": args.timeout,
         "families": families,
         "caps": CAPS,
+        "tools_take_turns": True,
     }
     for spec, cls, name, n in inputs(data_dir, families):
+        # The tools take turns on each input (Measurement); the vtkDelaunay2D
+        # target's runs, a minute each, are paired with OSM runs instead.
+        turns, paired = [], []
         for tool in TOOL_ORDER:
             if tool not in found or not tool_applies(tool, cls, n):
                 continue
             entry = {"tool": tool, "input": spec, "class": cls, "name": name, "n": n}
+            results.append(entry)
             if (tool, cls) in failed_at and cls != "real":
                 entry["skipped"] = "%s at %s input vertices" % (
                     failed_at[(tool, cls)][1], human(failed_at[(tool, cls)][0]))
-                results.append(entry)
                 print("%-15s %-28s skipped (%s)" % (tool, name, entry["skipped"]), flush=True)
                 continue
-            # The vtkDelaunay2D target's runs take a minute each: each is paired
-            # with PAIR_RUNS OSM runs before it and after it.
-            pair = found["osm"] if (tool == "vtk-delaunay2d" and cls == "random-segments"
-                                    and n == VTK_TARGET_N) else None
-            r = measure(found[tool], spec, TOOLS[tool][1], args.timeout, pair)
+            if tool == "vtk-delaunay2d" and cls == "random-segments" and n == VTK_TARGET_N:
+                paired.append((entry, Measurement(found[tool], spec, TOOLS[tool][1],
+                                                  args.timeout, found["osm"])))
+            else:
+                turns.append((entry, Measurement(found[tool], spec, TOOLS[tool][1],
+                                                 args.timeout)))
+        measure_in_turns([m for _, m in turns])
+        for entry, m in paired:
+            measure_in_turns([m])
+        for entry, m in turns + paired:
+            tool = entry["tool"]
+            r = m.finish()
             entry.update(r)
             status = r["first"]["status"]
             if status in ("timeout", "crash") and n is not None:
                 failed_at[(tool, cls)] = (n, status)
-            results.append(entry)
-            if args.partial:
-                meta["suite_seconds"] = time.monotonic() - started
-                meta["load_end"] = os.getloadavg()
-                with open(args.partial, "w") as f:
-                    json.dump({"meta": meta, "results": results, "partial": True}, f)
             if status == "ok":
                 print("%-15s %-28s %9.4f s CPU %9.4f s wall  x%d  %10d triangles" % (
                     tool, name, median_seconds(entry), median_wall(entry), len(r["seconds"]),
@@ -508,6 +547,11 @@ def run_suite(args):
             else:
                 print("%-15s %-28s %s: %s" % (tool, name, status,
                                                r["first"].get("detail", "")), flush=True)
+        if args.partial:
+            meta["suite_seconds"] = time.monotonic() - started
+            meta["load_end"] = os.getloadavg()
+            with open(args.partial, "w") as f:
+                json.dump({"meta": meta, "results": results, "partial": True}, f)
     scaling = run_scaling_pass(found["osm"], results, args)
     repeated = run_repeat_pass(found, results, args)
     meta["suite_seconds"] = time.monotonic() - started
@@ -741,9 +785,11 @@ def find_cli(build):
 
 
 def git_dirty():
-    """Uncommitted changes to the sources that the drivers compile (Filters/)."""
+    """Uncommitted changes to the sources that the drivers compile (Filters/ and
+    the drivers' own, Testing/Benchmarks/)."""
     try:
-        out = subprocess.run(["git", "-C", ROOT, "status", "--short", "--", "Filters"],
+        out = subprocess.run(["git", "-C", ROOT, "status", "--short", "--", "Filters",
+                              "Testing/Benchmarks/*.cxx", "Testing/Benchmarks/*.h"],
                              capture_output=True, text=True, check=True).stdout
         return [l[3:] + (" (new)" if l.startswith("??") else "")
                 for l in out.splitlines() if l[:2].strip() in ("M", "MM", "A", "AM", "??")]
@@ -1425,12 +1471,16 @@ def write_report(data, profile, md_path, png_path, plot_note):
         w("Load average (1, 5, 15 min) at the start of the suite: %.2f, %.2f, %.2f; at its "
           "end: %.2f, %.2f, %.2f. On 2 cores, anything above about 1 means that other jobs "
           "(other builds in the same tree) competed with the benchmark; each figure is the "
-          "median of several runs. In the main pass each tool's runs on an input follow one "
-          "another, tool after tool (they are not interleaved run by run): a slow phase of "
-          "the machine, which can last minutes, may fall on one tool's runs and not the "
-          "other's, so a single ratio can be off by up to about 2 (us48.poly's Mesh_2 / OSM "
-          "was 4.4 here and 1.4-2.5 in runs alternated by hand); the repeated-calls pass "
-          "and the vtkDelaunay2D pairs alternate." % (tuple(ls) + tuple(le)))
+          "median of several runs. " % (tuple(ls) + tuple(le)) + (
+              "In the main pass the tools meshing an input take turns: their first runs one "
+              "after another, then one repeat of each per round, so that a slow phase of the "
+              "machine (it can last minutes) falls on all of them alike."
+              if meta.get("tools_take_turns") else
+              "In the main pass each tool's runs on an input follow one "
+              "another, tool after tool (they are not interleaved run by run): a slow phase of "
+              "the machine, which can last minutes, may fall on one tool's runs and not the "
+              "other's, so a single ratio can be off by up to about 2 (us48.poly's Mesh_2 / OSM "
+              "was 4.4 here and 1.4-2.5 in runs alternated by hand)."))
     if meta.get("dirty"):
         w("")
         w("The drivers were built from the working tree, which other sessions were editing: "
