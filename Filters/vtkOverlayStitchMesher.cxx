@@ -183,6 +183,41 @@ struct SegmentSource
   vtkIdType B;
 };
 
+/// Whether a message names a point, segment, cell or hole by its number
+/// ("point 4", "segment 12"), as opposed to counting them ("3 point(s)").
+bool NamesNumberedItems(const std::string& message)
+{
+  for (const char* word : { "point ", "segment ", "cell ", "hole " })
+  {
+    for (std::size_t at = message.find(word); at != std::string::npos;
+         at = message.find(word, at + 1))
+    {
+      const std::size_t next = at + std::strlen(word);
+      if (next < message.size() && std::isdigit(static_cast<unsigned char>(message[next])))
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+/// The messages count points, segments and cells from 0 in input order; when
+/// the input comes from a .poly or .node file that counts from 1 (the reader's
+/// field data FileFirstIndex), those naming one say so.
+std::string NumberingNote(vtkPolyData* input)
+{
+  vtkDataArray* first = input->GetFieldData()->GetArray("FileFirstIndex");
+  return first && first->GetNumberOfTuples() == 1 && first->GetComponent(0, 0) == 1.0
+    ? " (point, segment and cell numbers in this message count from 0; the input counts from 1)"
+    : "";
+}
+
+std::string Numbered(const std::string& message, const std::string& note)
+{
+  return NamesNumberedItems(message) ? message + note : message;
+}
+
 /// The core names segments by their index in the PSLG ("input segment 7"):
 /// append which cell and points each named segment is.
 std::string ExplainSegments(const std::string& text, const osm::Array<SegmentSource>& sources)
@@ -692,9 +727,10 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   {
     inputError = map.choose(points, this->ProjectToXYPlane != 0);
   }
+  const std::string numbering = NumberingNote(input);
   if (!inputError.empty())
   {
-    vtkErrorMacro("Cannot mesh the input: " << inputError);
+    vtkErrorMacro("Cannot mesh the input: " << Numbered(inputError, numbering));
     return 1;
   }
   osm::Pslg pslg;
@@ -814,11 +850,12 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
 
   for (const std::string& warning : result.warnings)
   {
-    vtkWarningMacro(<< ExplainSegments(warning, segmentSources));
+    vtkWarningMacro(<< Numbered(ExplainSegments(warning, segmentSources), numbering));
   }
   if (!result.ok)
   {
-    vtkErrorMacro("Meshing failed: " << ExplainSegments(result.error, segmentSources));
+    vtkErrorMacro(
+      "Meshing failed: " << Numbered(ExplainSegments(result.error, segmentSources), numbering));
     return 1;
   }
 

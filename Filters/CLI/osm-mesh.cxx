@@ -168,25 +168,6 @@ std::string CleanMessage(const char* raw)
   return line;
 }
 
-/// Whether a message names a point, segment, cell or hole by its number
-/// ("point 4", "segment 12"), as opposed to counting them ("3 point(s)").
-bool NamesNumberedItems(const std::string& message)
-{
-  for (const char* word : { "point ", "segment ", "cell ", "hole " })
-  {
-    for (std::size_t at = message.find(word); at != std::string::npos;
-         at = message.find(word, at + 1))
-    {
-      const std::size_t next = at + std::strlen(word);
-      if (next < message.size() && std::isdigit(static_cast<unsigned char>(message[next])))
-      {
-        return true;
-      }
-    }
-  }
-  return false;
-}
-
 /// Replaces VTK's output window: warnings go to stderr with our prefix, the
 /// first error is kept for the one-line failure message, the rest is dropped.
 class OsmOutputWindow : public vtkOutputWindow
@@ -223,18 +204,24 @@ public:
   }
 
   std::vector<std::string> Warnings;
-  /// Appended to the messages that name numbered items: how the input file
-  /// numbers them, when that differs from the mesher's count from 0.
-  std::string Numbering;
+  /// The input file's path, named in the filter's note on a file that counts
+  /// from 1 ("...; the input counts from 1)").
+  std::string InputPath;
 
 protected:
   OsmOutputWindow() = default;
   ~OsmOutputWindow() override = default;
 
 private:
-  std::string Numbered(const std::string& message) const
+  std::string Numbered(std::string message) const
   {
-    return NamesNumberedItems(message) ? message + this->Numbering : message;
+    const std::string generic = "; the input counts from 1)";
+    const std::size_t at = message.find(generic);
+    if (at != std::string::npos && !this->InputPath.empty())
+    {
+      message.replace(at, generic.size(), "; " + this->InputPath + " counts from 1)");
+    }
+    return message;
   }
 
   void Warn(const char* text)
@@ -826,18 +813,9 @@ int Run(int argc, char* argv[], OsmOutputWindow* window)
   window->Check(ext == ".poly" || ext == ".node" ? "" : "cannot read '" + args.input + "': ",
     "the reader failed");
 
-  // The mesher numbers points, segments and cells from 0 in input order; its
-  // errors and warnings say so when the .poly/.node file counts from 1, as
-  // Triangle's files often do.
-  if (vtkDataObject* read = reader->GetOutputDataObject(0))
-  {
-    vtkDataArray* first = read->GetFieldData()->GetArray("FileFirstIndex");
-    if (first && first->GetNumberOfTuples() == 1 && first->GetComponent(0, 0) == 1.0)
-    {
-      window->Numbering = " (point, segment and cell numbers in this message count from 0; " +
-        args.input + " counts from 1)";
-    }
-  }
+  // The filter's messages say when the .poly/.node file counts from 1; they
+  // name the file.
+  window->InputPath = args.input;
 
   vtkNew<vtkOverlayStitchMesher> mesher;
   mesher->SetInputConnection(reader->GetOutputPort());

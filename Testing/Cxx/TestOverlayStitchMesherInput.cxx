@@ -10,6 +10,7 @@
 //   project-xy       ProjectToXYPlane meshes the XY projection at the mean z
 //   field-holes      hole seeds from the input's field data "HolePoints"
 //   field-regions    regional attributes from the field data "RegionAttributes"
+//   numbering        messages say when the input file counts from 1 (FileFirstIndex)
 //   ignored-cells    cells that give no segment: ONE warning counting them by kind
 //   progress         progress through every phase, monotone, ending at 1
 //   abort            an abort requested from a progress observer on a big input
@@ -25,6 +26,7 @@
 #include "vtkFieldData.h"
 #include "vtkIdList.h"
 #include "vtkInformation.h"
+#include "vtkIntArray.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
 #include "vtkPartitionedDataSet.h"
@@ -425,6 +427,27 @@ void CheckSeedsInAVerticalPlane(Harness& h)
   const double area = osmtest::TotalArea(mesh);
   Check(h.NoError() && std::fabs(area - 96.0) < 1e-9,
     "vertical plane: an (x, y, z) field data seed cuts its hole (area " + Num(area) + ", 96)");
+}
+
+int TestNumbering()
+{
+  // A square whose point 4 repeats point 0: the warning names both.
+  auto input = MakeLines(
+    { { 0, 0, 0 }, { 10, 0, 0 }, { 10, 10, 0 }, { 0, 10, 0 }, { 0, 0, 0 } }, { { 0, 1, 2, 3, 4 } });
+  Harness h;
+  h.Run(input, "a repeated point, no FileFirstIndex");
+  Check(h.Messages->HasWarning({ "point 4" }) && !h.Messages->HasWarning({ "counts from 1" }),
+    "without FileFirstIndex the warning names point 4 and says nothing of the numbering");
+  vtkNew<vtkIntArray> first;
+  first->SetName("FileFirstIndex");
+  first->InsertNextValue(1);
+  input->GetFieldData()->AddArray(first);
+  h.Run(input, "a repeated point, FileFirstIndex 1");
+  Check(h.Messages->HasWarning({ "point 4",
+          "(point, segment and cell numbers in this message count from 0; the input counts "
+          "from 1)" }),
+    "with FileFirstIndex 1 (a .poly counting from 1) the warning says how it counts");
+  return 0;
 }
 
 int TestFieldRegions()
@@ -1066,6 +1089,7 @@ int main(int argc, char* argv[])
     { "project-xy", TestProjectToXY },
     { "field-holes", TestFieldHoles },
     { "field-regions", TestFieldRegions },
+    { "numbering", TestNumbering },
     { "ignored-cells", TestIgnoredCells },
     { "progress", TestProgress },
     { "abort", [points] { return TestAbort(points); } },
