@@ -333,15 +333,15 @@ void ReadSegments(
 std::string ReadRegionAttributes(vtkPolyData* input, const osm::PlaneMap& map, osm::Pslg& pslg)
 {
   vtkDataArray* regions = input->GetFieldData()->GetArray("RegionAttributes");
-  const int components = regions ? regions->GetNumberOfComponents() : 3;
+  if (!regions)
+  {
+    return std::string();
+  }
+  const int components = regions->GetNumberOfComponents();
   if (components != 3 && components != 4)
   {
     return "The input's field data array RegionAttributes has " + std::to_string(components) +
       " components (4 expected: x, y, attribute, maximum area): ignored.";
-  }
-  if (!regions)
-  {
-    return std::string();
   }
   for (vtkIdType i = 0; i < regions->GetNumberOfTuples(); ++i)
   {

@@ -480,15 +480,22 @@ void Mesher::warnAboutRegionSeeds(const Carving& carve)
   int firstOutside = -1, firstOverridden = -1;
   Array<char> claimed; // per region: a later seed gives its attribute
   claimed.assign(carve.regions, char{ 0 });
+  // From the last seed back, so that the first seed of each kind is noted last.
   for (std::size_t k = regions.size(); k-- > 0;)
   {
     const int region = carve.seedRegion[k];
     limits += regions[k].maxArea > 0 ? 1 : 0;
-    if (region < 0 && ++outside)
+    if (region < 0)
+    {
+      ++outside;
       firstOutside = static_cast<int>(k);
-    else if (region >= 0 && claimed[region] && ++overridden)
+    }
+    else if (claimed[region])
+    {
+      ++overridden;
       firstOverridden = static_cast<int>(k);
-    else if (region >= 0)
+    }
+    else
       claimed[region] = 1;
   }
   if (outside > 0)

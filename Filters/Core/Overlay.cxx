@@ -171,7 +171,7 @@ private:
   int findInFan(const Point& q, int v, const Array<int>& fan) const;
   void countSteiner();
   double pointsForMaxEdge() const;
-  /// The refinement's progress in [0, 1], never decreasing.
+  /// The refinement's progress in [0, 1], never decreasing between calls.
   double progressOf(double forMaxEdge);
 
   // The input points in Hilbert order: the buckets of a triangle then hold
@@ -305,7 +305,7 @@ Overlay Refiner::refine()
     // Yielding or splitting the box may leave this triangle standing: retry it.
     if (mesh.points.size() > before && standing(item))
       enqueueIfNeeded(item.tri);
-    run.tick(progressOf(forMaxEdge));
+    run.tickWith([&] { return progressOf(forMaxEdge); });
   }
   out.inputVertex.assign(input.size(), -1);
   for (std::size_t i = 0; i < input.size(); ++i)

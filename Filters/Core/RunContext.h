@@ -46,6 +46,13 @@ public:
     if (progress && ++ticks % every == 0)
       report(fraction);
   }
+  /// The same, with the fraction computed only when it is reported.
+  template <typename Fraction>
+  void tickWith(Fraction&& fraction, unsigned every = 4096)
+  {
+    if (progress && ++ticks % every == 0)
+      report(fraction());
+  }
 
 private:
   Progress* progress;

@@ -388,15 +388,17 @@ class Measurement:
         c = first.get("cpu_seconds") or first["seconds"]
         self.target = RUNS_FAST if c < FAST_SECONDS else RUNS
         self.spent = self.last = first["wall"]
-        self.repeat(run=False)
+        self.update_done()
 
-    def repeat(self, run=True):
-        """One more timed run, unless the runs are complete (then done)."""
-        if self.done or not (len(self.result["seconds"]) < self.target
-                             and self.spent + self.last <= REPEAT_BUDGET):
-            self.done = True
-            return
-        if not run:
+    def update_done(self):
+        """Done once the target number of runs is reached, or one more would
+        exceed the wall-time budget."""
+        self.done = self.done or not (len(self.result["seconds"]) < self.target
+                                      and self.spent + self.last <= REPEAT_BUDGET)
+
+    def repeat(self):
+        """One more timed run, unless the runs are complete."""
+        if self.done:
             return
         again = run_once(self.exe, self.spec, self.args + ["--no-check"], self.timeout)
         self.spent += again["wall"]
@@ -407,7 +409,7 @@ class Measurement:
             return
         self.run_pair()
         self.add(again)
-        self.repeat(run=False)
+        self.update_done()
 
     def finish(self):
         if self.core is not None:
