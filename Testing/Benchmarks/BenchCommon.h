@@ -12,6 +12,7 @@
 
 #include "Generators.h"
 #include "PolyReader.h"
+#include "Predicates.h"
 #include "Pslg.h"
 
 #include <algorithm>
@@ -184,12 +185,60 @@ struct Quality
 {
   double minAngleDeg = 0.0;
   double maxAngleDeg = 0.0;
-  std::size_t degenerate = 0;      ///< triangles with a zero area (in double arithmetic)
-  std::size_t usedVertices = 0;    ///< vertices referenced by at least one triangle
-  std::size_t missingSegments = 0; ///< not a chain of mesh edges, though inside the domain
-  std::size_t outsideSegments = 0; ///< an endpoint lies outside the tool's domain
-  std::size_t missingVertices = 0; ///< input points inside the domain that are not mesh vertices
+  std::size_t degenerate = 0;       ///< triangles with a zero area (in double arithmetic)
+  std::size_t usedVertices = 0;     ///< vertices referenced by at least one triangle
+  std::size_t missingSegments = 0;  ///< not a chain of mesh edges, though inside the domain
+  std::size_t outsideSegments = 0;  ///< an endpoint lies outside the tool's domain
+  std::size_t missingVertices = 0;  ///< input points inside the domain that are not mesh vertices
+  std::size_t nonManifoldEdges = 0; ///< edges of three or more triangles
+  std::size_t foldedEdges = 0;      ///< edges whose two triangles lie on the same side
 };
+
+/// Edges that show triangles overlapping, whatever the tool's orientation: an
+/// edge in three or more triangles, or one whose two triangles' third vertices
+/// lie strictly on the same side of it (exact test). It does not see overlaps
+/// between triangles that share no edge (two separate sheets), which a tool
+/// would have to make on purpose.
+inline void countOverlapEdges(const MeshOut& mesh, Quality& q)
+{
+  // Row u lists (w, apex) for each triangle edge u-w with u < w.
+  const std::size_t nv = mesh.vertices.size();
+  std::vector<std::size_t> start(nv + 1, 0);
+  for (const osm::Triangle& t : mesh.triangles)
+    for (int i = 0; i < 3; ++i)
+      ++start[std::min(t[i], t[(i + 1) % 3]) + 1];
+  for (std::size_t v = 0; v < nv; ++v)
+    start[v + 1] += start[v];
+  std::vector<std::pair<int, int>> row(start[nv]);
+  std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+  for (const osm::Triangle& t : mesh.triangles)
+    for (int i = 0; i < 3; ++i)
+    {
+      const int u = t[i], w = t[(i + 1) % 3];
+      row[fill[std::min(u, w)]++] = { std::max(u, w), t[(i + 2) % 3] };
+    }
+  for (std::size_t u = 0; u < nv; ++u)
+  {
+    std::sort(row.begin() + start[u], row.begin() + start[u + 1]);
+    for (std::size_t k = start[u]; k < start[u + 1];)
+    {
+      std::size_t end = k + 1;
+      while (end < start[u + 1] && row[end].first == row[k].first)
+        ++end;
+      if (end - k > 2)
+        ++q.nonManifoldEdges;
+      else if (end - k == 2)
+      {
+        const osm::Point &a = mesh.vertices[u], &b = mesh.vertices[row[k].first];
+        const double s1 = osm::orient2d(a, b, mesh.vertices[row[k].second]);
+        const double s2 = osm::orient2d(a, b, mesh.vertices[row[k + 1].second]);
+        if ((s1 > 0 && s2 > 0) || (s1 < 0 && s2 < 0))
+          ++q.foldedEdges;
+      }
+      k = end;
+    }
+  }
+}
 
 /// Angle at b of triangle abc in degrees, from atan2(|cross|, dot): accurate near 0 and 180.
 inline double angleDeg(const osm::Point& a, const osm::Point& b, const osm::Point& c)
@@ -246,6 +295,7 @@ inline Quality inspect(
     q.minAngleDeg = q.maxAngleDeg = 0.0;
   for (char u : used)
     q.usedVertices += u ? 1 : 0;
+  countOverlapEdges(mesh, q);
 
   // Vertex adjacency (compressed rows; an edge may be listed twice, which is harmless).
   std::vector<std::size_t> start(nv + 1, 0);
@@ -491,7 +541,9 @@ inline int driverMain(int argc, char** argv, const char* tool,
       .add("degenerate", q.degenerate)
       .add("missing_segments", q.missingSegments)
       .add("outside_segments", q.outsideSegments)
-      .add("missing_vertices", q.missingVertices);
+      .add("missing_vertices", q.missingVertices)
+      .add("nonmanifold_edges", q.nonManifoldEdges)
+      .add("folded_edges", q.foldedEdges);
   }
   std::string extra = out.extra.str();
   std::string text = line.str();

@@ -1103,11 +1103,23 @@ def geomean(values):
     return prod
 
 
+def overlap_edges(e):
+    """Edges of the tool's mesh that show overlapping triangles (in three or more
+    triangles, or folded); None where the driver did not check (older results)."""
+    f = e.get("first", {}) if e is not None else {}
+    if "nonmanifold_edges" not in f:
+        return None
+    return f["nonmanifold_edges"] + f.get("folded_edges", 0)
+
+
 def status_text(e):
     if "skipped" in e:
         return "skipped (%s)" % e["skipped"]
     f = e["first"]
     if f["status"] == "ok":
+        if overlap_edges(e):
+            return "ok, **overlapping**: %s edge(s) in 3+ triangles, %s folded" % (
+                fmt_int(f["nonmanifold_edges"]), fmt_int(f.get("folded_edges", 0)))
         return "ok"
     if f["status"] == "timeout":
         return "**time-out**: %s" % f.get("detail", "")
@@ -1147,11 +1159,17 @@ def headline(data):
         vtk_timeouts = 0
         m2_failures = 0
         missing = {"osm": 0, "cgal-mesh2": 0, "vtk-delaunay2d": 0}
+        overlapping = {"osm": 0, "cgal-mesh2": 0, "vtk-delaunay2d": 0}
         for s in members:
             for tool in missing:
                 e = by.get((tool, s))
                 if ok(e):
                     missing[tool] += e["first"].get("missing_segments", 0)
+                    over = overlap_edges(e)
+                    if over is None or overlapping[tool] is None:
+                        overlapping[tool] = None  # results from before the check
+                    else:
+                        overlapping[tool] += 1 if over else 0
             o = by.get(("osm", s))
             if not ok(o):
                 continue
@@ -1169,7 +1187,7 @@ def headline(data):
             elif vd is not None and vd.get("first", {}).get("status") == "timeout":
                 vtk_timeouts += 1
         rows.append((cls, len(members), r_mesh2, r_tris, r_mesh2_tri, r_cdt, r_vtk, vtk_timeouts,
-                     missing, m2_failures))
+                     missing, overlapping, m2_failures))
     return rows
 
 
@@ -1322,6 +1340,8 @@ def targets(data, profile):
         o = by.get(("osm", v["input"]))
         if ok(o):
             om = o["first"].get("missing_segments")
+            # Overlapping triangles break a mesh as surely as a missing segment.
+            o_over, v_over = overlap_edges(o), overlap_edges(v)
             if ok(v):
                 ratio = median_seconds(v) / median_seconds(o)
                 vm = v["first"].get("missing_segments")
@@ -1349,23 +1369,33 @@ def targets(data, profile):
                                fmt(max(paired), 3), fmt(median_seconds(v)),
                                fmt(median_seconds(o)),
                                fmt(median_seconds(v) / median_seconds(o), 3), om, vm)
-                good = ratio >= 50 and om == 0
+                if v_over is not None:
+                    text += "; overlapping edges: OSM %s, vtkDelaunay2D %s" % (
+                        fmt_int(o_over), fmt_int(v_over))
+                good = ratio >= 50 and om == 0 and not o_over
             elif v["first"]["status"] == "timeout":
                 ratio = args_timeout(data) / median_seconds(o)
                 text = "vtkDelaunay2D timed out (> %d s): OSM at least %s× faster; OSM missing " \
                        "segments: %s" % (args_timeout(data), fmt(ratio, 2), om)
-                good = ratio >= 50 and om == 0
+                good = ratio >= 50 and om == 0 and not o_over
             else:
                 text = "vtkDelaunay2D: " + status_text(v)
-                good = om == 0
+                good = om == 0 and not o_over
             real_missing = sum(e["first"].get("missing_segments", 0) for e in results
                                if e["tool"] == "vtk-delaunay2d" and e["class"] == "real" and ok(e))
             real_inputs = sum(1 for e in results if e["tool"] == "vtk-delaunay2d"
                               and e["class"] == "real" and ok(e)
                               and e["first"].get("missing_segments", 0) > 0)
+            real_overlapping = [e["name"] for e in results
+                                if e["tool"] == "vtk-delaunay2d" and e["class"] == "real"
+                                and ok(e) and overlap_edges(e)]
             if real_missing:
                 text += " (on the real inputs vtkDelaunay2D misses %s segments on %d inputs, " \
-                        "OSM none)" % (fmt_int(real_missing), real_inputs)
+                        "OSM none" % (fmt_int(real_missing), real_inputs)
+                if real_overlapping:
+                    text += "; its meshes overlap themselves on %d: %s" % (
+                        len(real_overlapping), ", ".join(real_overlapping))
+                text += ")"
             out.append(("≥ 50× faster than vtkDelaunay2D at 1e5 segments, zero missing segments",
                         text, good))
     return out
@@ -1499,13 +1529,17 @@ def write_report(data, profile, md_path, png_path, plot_note):
     w("Per input class: geometric mean over its inputs, with the range (min – max). "
       "*Mesh_2 time / OSM time* and *vtkDelaunay2D time / OSM time* above 1 favour OSM; "
       "the per-triangle columns are OSM's time per output triangle divided by the other "
-      "tool's (below 1 favours OSM). Missing segments are summed over the class.")
+      "tool's (below 1 favours OSM). Missing segments are summed over the class; "
+      "*overlapping meshes* counts the inputs on which the tool's mesh has an edge in three "
+      "or more triangles or two triangles on the same side of an edge (see *Results*).")
     w("")
     w("| inputs | count | Mesh_2 time / OSM time | OSM / Mesh_2 triangles | "
       "OSM / Mesh_2 per triangle | OSM / CGAL CDT per triangle | "
-      "vtkDelaunay2D time / OSM time | missing segments: OSM, Mesh_2, vtkDelaunay2D |")
-    w("|---|---:|---:|---:|---:|---:|---:|---|")
-    for cls, count, r_m2, r_tris, r_m2t, r_cdt, r_vtk, vto, missing, m2f in headline(data):
+      "vtkDelaunay2D time / OSM time | missing segments: OSM, Mesh_2, vtkDelaunay2D | "
+      "overlapping meshes: OSM, Mesh_2, vtkDelaunay2D |")
+    w("|---|---:|---:|---:|---:|---:|---:|---|---|")
+    for (cls, count, r_m2, r_tris, r_m2t, r_cdt, r_vtk, vto, missing, overlapping,
+         m2f) in headline(data):
         m2text = range_text(r_m2)
         if m2f:
             m2text += " + %d Mesh_2 time-out(s)/crash(es)" % m2f
@@ -1514,10 +1548,13 @@ def write_report(data, profile, md_path, png_path, plot_note):
             vt += " + %d time-out(s)" % vto
         if cls == "points":
             vt += " (no constraints)"
-        w("| %s | %d | %s | %s | %s | %s | %s | %s |" % (
+        tools = ("osm", "cgal-mesh2", "vtk-delaunay2d")
+        w("| %s | %d | %s | %s | %s | %s | %s | %s | %s |" % (
             CLASS_LABEL.get(cls, cls), count, m2text, range_text(r_tris),
             range_text(r_m2t), range_text(r_cdt), vt,
-            ", ".join(fmt_int(missing[t]) for t in ("osm", "cgal-mesh2", "vtk-delaunay2d"))))
+            ", ".join(fmt_int(missing[t]) for t in tools),
+            ", ".join("not checked" if overlapping[t] is None else fmt_int(overlapping[t])
+                      for t in tools)))
     w("")
     layers = []
     for tool, label in (("vtk-osm", "VTK filter `Update()` / core"),
@@ -1605,9 +1642,12 @@ def write_report(data, profile, md_path, png_path, plot_note):
       "*out*: segments outside the domain the tool meshed (legitimately absent; which "
       "input points lie outside is taken from each tool's own output, so a tool that "
       "wrongly dropped a region would count its segments here, not as missing; OSM and "
-      "Mesh_2 agree on every input). The output check does not test that the triangles "
-      "cover the domain without overlap (the project's own validator does that for OSM, "
-      "in the tests). *peak*: peak RSS during "
+      "Mesh_2 agree on every input). *status* says **overlapping** where a tool's mesh has an "
+      "edge in three or more triangles or an edge whose two triangles' third vertices lie "
+      "on the same side of it (exact orientation tests): the triangles then overlap. That "
+      "check sees every overlap of triangles joined by edges, not two separate sheets "
+      "lying over each other; the project's own validator checks OSM's meshes fully, in "
+      "the tests. *peak*: peak RSS during "
       "the call (its increase over the RSS before it, per output triangle, in "
       "*B/tri*)." % (SHORT_RUN, args_timeout(data)))
     w("")
@@ -1958,7 +1998,8 @@ def write_csv(data, path):
     import csv
     cols = ["input", "class", "tool", "status", "runs", "cpu_s", "wall_s", "input_vertices",
             "input_segments", "out_vertices", "out_triangles", "min_angle", "max_angle",
-            "missing_segments", "outside_segments", "peak_rss_bytes", "bytes_per_triangle"]
+            "missing_segments", "outside_segments", "overlap_edges", "peak_rss_bytes",
+            "bytes_per_triangle"]
     with open(path, "w", newline="") as f:
         out = csv.writer(f)
         out.writerow(cols)
@@ -1978,6 +2019,7 @@ def write_csv(data, path):
                 "%.6g" % fr["max_angle"] if good and "max_angle" in fr else "",
                 fr.get("missing_segments", "") if good else "",
                 fr.get("outside_segments", "") if good else "",
+                overlap_edges(e) if good and overlap_edges(e) is not None else "",
                 peak_bytes(fr) or "" if good else "",
                 "%.4g" % bytes_per_triangle(e) if good and bytes_per_triangle(e) else ""])
 
