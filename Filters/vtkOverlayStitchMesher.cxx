@@ -834,6 +834,11 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   options.maxSteinerPoints = static_cast<std::size_t>(this->MaximumSteinerPoints);
   options.keepEdges = this->GenerateEdges != 0;
   options.keepOverlay = this->GenerateOverlay != 0;
+  if (map.isFitted())
+  {
+    // Points named in messages in the input's 3D coordinates, not the plane's 2D frame.
+    options.pointFormat = [&map](const osm::Point& p) { return osm::formatPoint3(map.toSpace(p)); };
+  }
 
   // The core's phases (clean, overlay, stitch, complete, domain).
   ProgressAdapter progress(this, 0.05, 0.9);

@@ -90,8 +90,8 @@ Array<int> nearRepresentatives(const Array<Point>& pts, double tol)
 }
 
 /// Merge equal (or, with a tolerance, close) points into their representative.
-void mergeDuplicates(
-  const Pslg& in, CleanPslg& out, Statistics& stats, std::vector<std::string>& warnings, double tol)
+void mergeDuplicates(const Pslg& in, CleanPslg& out, Statistics& stats,
+  std::vector<std::string>& warnings, double tol, const PointFormat& format)
 {
   const std::size_t n = in.points.size();
   const Array<int> representative =
@@ -119,7 +119,7 @@ void mergeDuplicates(
   if (stats.duplicatePointsMerged > 0)
     warnings.push_back("merged " + std::to_string(stats.duplicatePointsMerged) +
       " duplicate point(s), e.g. point " + std::to_string(example) + " with point " +
-      std::to_string(representative[example]) + " at " + formatPoint(in.points[example]));
+      std::to_string(representative[example]) + " at " + formatPoint(in.points[example], format));
 }
 
 std::string mapSegments(
@@ -172,7 +172,7 @@ std::string mapSegments(
 } // namespace
 
 std::string cleanPslg(const Pslg& in, CleanPslg& out, Statistics& stats,
-  std::vector<std::string>& warnings, double mergeTolerance)
+  std::vector<std::string>& warnings, double mergeTolerance, const PointFormat& format)
 {
   out = CleanPslg{};
   if (std::string e = checkFinite(in.points, "point"); !e.empty())
@@ -188,7 +188,7 @@ std::string cleanPslg(const Pslg& in, CleanPslg& out, Statistics& stats,
     if (!std::isfinite(region.attribute))
       return "region " + std::to_string(r) + " has a non-finite attribute";
   }
-  mergeDuplicates(in, out, stats, warnings, mergeTolerance);
+  mergeDuplicates(in, out, stats, warnings, mergeTolerance, format);
   return mapSegments(in, out, stats, warnings);
 }
 

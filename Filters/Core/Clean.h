@@ -26,10 +26,16 @@ struct CleanPslg
 /// offending item (a non-finite coordinate, an index out of range).
 /// Points within mergeTolerance of an earlier point are merged into it.
 std::string cleanPslg(const Pslg& in, CleanPslg& out, Statistics& stats,
-  std::vector<std::string>& warnings, double mergeTolerance = 0.0);
+  std::vector<std::string>& warnings, double mergeTolerance = 0.0, const PointFormat& format = {});
 
 /// "(x, y)" with enough digits to tell nearby points apart.
 std::string formatPoint(const Point& p);
+
+/// The point written by format, or by formatPoint when format is empty.
+inline std::string formatPoint(const Point& p, const PointFormat& format)
+{
+  return format ? format(p) : formatPoint(p);
+}
 
 } // namespace osm
 

@@ -81,7 +81,8 @@ struct Work
 
 /// Power-of-two scale bringing the largest coordinate into [0.5, 1): exact, so
 /// input vertices come back bit for bit, and the predicates cannot overflow.
-std::string normalise(Work& w, const Pslg& input, const Array<int>& pointOf, int& exponent)
+std::string normalise(
+  Work& w, const Pslg& input, const Array<int>& pointOf, const PointFormat& format, int& exponent)
 {
   double maxAbs = 0;
   for (const Point& p : w.points)
@@ -121,7 +122,7 @@ std::string normalise(Work& w, const Pslg& input, const Array<int>& pointOf, int
     {
       const auto user = std::find(pointOf.begin(), pointOf.end(), static_cast<int>(i));
       return "point " + std::to_string(user - pointOf.begin()) + " at " +
-        formatPoint(input.points[user - pointOf.begin()]) +
+        formatPoint(input.points[user - pointOf.begin()], format) +
         " is too small next to the largest coordinate (" + std::to_string(maxAbs) +
         ") for exact arithmetic in double precision";
     }
@@ -200,7 +201,8 @@ void mergeEqualPoints(Work& w)
 }
 
 /// "input segment A and input segment B cross near (x, y)", in user coordinates.
-std::string describeCrossing(const Work& w, const SegmentCrossing& c, int exponent)
+std::string describeCrossing(
+  const Work& w, const SegmentCrossing& c, int exponent, const PointFormat& format)
 {
   const Point p{ std::ldexp(c.p.x, exponent), std::ldexp(c.p.y, exponent) };
   auto name = [&](int s) {
@@ -208,12 +210,13 @@ std::string describeCrossing(const Work& w, const SegmentCrossing& c, int expone
       ? "input segment " + std::to_string(w.segmentOrigin[s])
       : std::string("an edge of the convex hull");
   };
-  return name(c.a) + " and " + name(c.b) + " cross near " + formatPoint(p);
+  return name(c.a) + " and " + name(c.b) + " cross near " + formatPoint(p, format);
 }
 
-std::string crossingError(const Work& w, const Array<SegmentCrossing>& crossings, int exponent)
+std::string crossingError(
+  const Work& w, const Array<SegmentCrossing>& crossings, int exponent, const PointFormat& format)
 {
-  std::string msg = describeCrossing(w, crossings.front(), exponent);
+  std::string msg = describeCrossing(w, crossings.front(), exponent, format);
   // At least: segments through one point are found as pairs in a chain, not
   // every pair of them.
   if (crossings.size() > 1)
@@ -268,7 +271,9 @@ Result Mesher::execute()
   if (!(options.mergeTolerance >= 0.0) || !std::isfinite(options.mergeTolerance))
     throw Stop{ "the merge tolerance must be finite and at least 0" };
   run.phase("clean", 0.0, 0.02);
-  if (std::string e = cleanPslg(input, clean, st, res.warnings, options.mergeTolerance); !e.empty())
+  if (std::string e =
+        cleanPslg(input, clean, st, res.warnings, options.mergeTolerance, options.pointFormat);
+      !e.empty())
     throw Stop{ e };
   Work w; // from here on only clean.pointOf is read
   w.points = std::move(clean.points);
@@ -278,7 +283,7 @@ Result Mesher::execute()
   w.holes = input.holes;
   for (const RegionAttribute& region : input.regions)
     w.regionSeeds.push_back(region.seed);
-  if (std::string e = normalise(w, input, clean.pointOf, exponent); !e.empty())
+  if (std::string e = normalise(w, input, clean.pointOf, options.pointFormat, exponent); !e.empty())
     throw Stop{ e };
   st.secondsClean = since(t0);
   if (w.points.empty())
@@ -295,7 +300,8 @@ Result Mesher::execute()
   {
     if (stop.located)
       stop.reason += " near " +
-        formatPoint({ std::ldexp(stop.at.x, exponent), std::ldexp(stop.at.y, exponent) });
+        formatPoint({ std::ldexp(stop.at.x, exponent), std::ldexp(stop.at.y, exponent) },
+          options.pointFormat);
     throw;
   }
   st.secondsTotal = since(t0);
@@ -387,12 +393,13 @@ void Mesher::meshRounds(Work& w)
     if (!walk.segmentCrossings.empty())
     {
       if (!options.resolveCrossings)
-        throw Stop{ crossingError(w, walk.segmentCrossings, exponent) };
+        throw Stop{ crossingError(w, walk.segmentCrossings, exponent, options.pointFormat) };
       if (round >= 4)
         throw Stop{ "could not resolve all crossings after 5 rounds: " +
-          crossingError(w, walk.segmentCrossings, exponent) };
+          crossingError(w, walk.segmentCrossings, exponent, options.pointFormat) };
       if (st.crossingsSplit == 0)
-        firstCrossing = describeCrossing(w, walk.segmentCrossings.front(), exponent);
+        firstCrossing =
+          describeCrossing(w, walk.segmentCrossings.front(), exponent, options.pointFormat);
       splitCrossings(w, walk.segmentCrossings, st);
       mergeEqualPoints(w);
       continue;
@@ -447,7 +454,7 @@ void Mesher::meshRounds(Work& w)
         " hole point(s) lie outside the meshed domain or in a region already removed, e.g. "
         "hole " +
         std::to_string(carve.unusedHoles.front()) + " at " +
-        formatPoint(input.holes[carve.unusedHoles.front()]));
+        formatPoint(input.holes[carve.unusedHoles.front()], options.pointFormat));
     // Say why the mesh is empty when the holes took all of it (a seed in the
     // wrong region, or a merge tolerance that collapsed the input).
     if (carve.regions == 0 && w.holes.size() > carve.unusedHoles.size())
@@ -456,13 +463,14 @@ void Mesher::meshRounds(Work& w)
       while (used < carve.unusedHoles.size() && carve.unusedHoles[used] == static_cast<int>(used))
         ++used;
       res.warnings.push_back("the hole point(s) removed every region, e.g. hole " +
-        std::to_string(used) + " at " + formatPoint(input.holes[used]) + ": the mesh is empty");
+        std::to_string(used) + " at " + formatPoint(input.holes[used], options.pointFormat) +
+        ": the mesh is empty");
     }
     if (!carve.seedsOnSegments.empty())
       res.warnings.push_back(std::to_string(carve.seedsOnSegments.size()) +
         " hole point(s) lie on a segment or at its end, e.g. hole " +
         std::to_string(carve.seedsOnSegments.front()) + " at " +
-        formatPoint(input.holes[carve.seedsOnSegments.front()]) +
+        formatPoint(input.holes[carve.seedsOnSegments.front()], options.pointFormat) +
         ": the region on one side of it was removed, which side is not defined; move the "
         "point into the hole");
     run.phase("domain", 0.95, 1.0); // carved: the output arrays
@@ -501,13 +509,15 @@ void Mesher::warnAboutRegionSeeds(const Carving& carve)
   if (outside > 0)
     res.warnings.push_back(std::to_string(outside) +
       " region point(s) lie outside the meshed domain or in a hole, e.g. region " +
-      std::to_string(firstOutside) + " at " + formatPoint(regions[firstOutside].seed) +
+      std::to_string(firstOutside) + " at " +
+      formatPoint(regions[firstOutside].seed, options.pointFormat) +
       ": their attributes are given to no triangle");
   if (overridden > 0)
     res.warnings.push_back(std::to_string(overridden) +
       " region point(s) share their region with a later one, whose attribute the region takes "
       "(as Triangle does), e.g. region " +
-      std::to_string(firstOverridden) + " at " + formatPoint(regions[firstOverridden].seed));
+      std::to_string(firstOverridden) + " at " +
+      formatPoint(regions[firstOverridden].seed, options.pointFormat));
   if (limits > 0)
     res.warnings.push_back(std::to_string(limits) +
       " region(s) set a maximum triangle area, which is not applied: the mesher bounds edge "
@@ -668,7 +678,7 @@ void Mesher::buildOutput(const Work& w, const PlanarGraph& g, Completion& c, Car
     res.warnings.push_back(std::to_string(outside) +
       " input point(s) lie outside the meshed domain (outside every enclosed region or in a "
       "hole) and are not in the mesh, e.g. point " +
-      std::to_string(example) + " at " + formatPoint(input.points[example]) +
+      std::to_string(example) + " at " + formatPoint(input.points[example], options.pointFormat) +
       (domain == Domain::Enclosed ? "; the hull or box domain keeps those outside every region"
                                   : ""));
   st.regions = carve.regions;

@@ -40,6 +40,9 @@ struct Options
   /// Keep the phase-1 overlay and the classified edges in the result (for inspection).
   bool keepOverlay = true;
   bool keepEdges = true;
+  /// Writes the coordinates of points named in warnings and errors (input
+  /// points, crossings, seeds); empty: "(x, y)" in the input's coordinates.
+  PointFormat pointFormat;
 };
 
 /// Receives progress and may ask the mesher to stop.

@@ -5,6 +5,8 @@
 #include "Geometry.h"
 #include "HugePages.h"
 
+#include <functional>
+#include <string>
 #include <vector>
 
 namespace osm
@@ -20,6 +22,11 @@ struct RegionAttribute
   double attribute = 0.0;
   double maxArea = -1.0;
 };
+
+/// Writes a point's coordinates into a message. A caller that mapped its
+/// input into the plane (the VTK filter, for points in a tilted plane) passes
+/// one that writes the input's own coordinates; empty: "(x, y)".
+using PointFormat = std::function<std::string(const Point&)>;
 
 /// Points plus segments (pairs of point indices) plus hole seed points.
 /// Segments must not cross, unless the mesher is allowed to split crossings.

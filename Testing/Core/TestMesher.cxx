@@ -181,6 +181,32 @@ TEST(Clean, MergesDuplicatePoints)
   EXPECT_EQ(r.inputVertex[4], r.inputVertex[2]);
 }
 
+TEST(Clean, MessagesWritePointsWithTheCallersFormat)
+{
+  Pslg p = square();
+  p.points.push_back({ 1, 1 }); // same as point 2
+  p.holes.push_back({ 5, 5 });  // outside the square
+  Options o;
+  o.pointFormat = [](const Point& q) {
+    return "[" + std::to_string(q.x) + " " + std::to_string(q.y) + "]";
+  };
+  const Result r = mesh(p, o);
+  ASSERT_TRUE(r.ok) << r.error;
+  EXPECT_TRUE(mentions(r.warnings, "with point 2 at [1.000000 1.000000]"));
+  EXPECT_TRUE(mentions(r.warnings, "at [5.000000 5.000000]"));
+  for (const std::string& w : r.warnings)
+    EXPECT_EQ(w.find("(1, 1)"), std::string::npos) << w;
+
+  Pslg crossing = square();
+  crossing.segments.push_back({ 0, 2 });
+  crossing.segments.push_back({ 1, 3 });
+  o.resolveCrossings = false;
+  const Result refused = mesh(crossing, o);
+  EXPECT_FALSE(refused.ok);
+  EXPECT_NE(refused.error.find("cross near [0.500000 0.500000]"), std::string::npos)
+    << refused.error;
+}
+
 TEST(Clean, DropsZeroLengthSegments)
 {
   Pslg p = square();

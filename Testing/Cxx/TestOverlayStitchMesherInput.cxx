@@ -329,6 +329,15 @@ int TestTiltedPlane()
   const double holed2 = osmtest::TotalArea(mesh);
   Check(h.NoError() && std::fabs(holed2 - 84.0) < 1e-9,
     "a property seed (x, y) is lifted onto the plane: the hole is cut (area " + Num(holed2) + ")");
+
+  // Messages name points by their 3D coordinates, not by the plane's own 2D frame.
+  h.Mesher->RemoveAllHolePoints();
+  const Xyz corner = tilt.At(0, 0); // point 0
+  input->GetPoints()->InsertNextPoint(corner[0], corner[1], corner[2]);
+  mesh = h.Run(input, "tilted plane, duplicate point");
+  Check(h.NoError() &&
+      h.Messages->HasWarning({ "merged 1 duplicate point(s)", "with point 0 at (3, -2, 5)" }),
+    "a warning gives a point of a tilted plane in the input's 3D coordinates");
   return 0;
 }
 
