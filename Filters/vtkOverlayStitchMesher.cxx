@@ -386,10 +386,27 @@ void Allocate(ArrayT* array, vtkIdType tuples)
   array->SetArrayFreeFunction(&FreeMapping);
 }
 
+/// Reports the fraction done of one step of the output and returns true to
+/// stop it (an abort): the step then returns nothing. Steps poll every 2^16
+/// items, so that an abort is seen within milliseconds at any size.
+using Poll = std::function<bool(double)>;
+
+/// The part [a, b] of poll's range, for a sub-step.
+Poll Part(const Poll& poll, double a, double b)
+{
+  return [&poll, a, b](double fraction) { return poll(a + (b - a) * fraction); };
+}
+
+/// Whether item i of n is one to poll at, and poll says stop.
+bool Stop(std::size_t i, std::size_t n, const Poll& poll)
+{
+  return (i & 0xffff) == 0xffff && poll(static_cast<double>(i) / static_cast<double>(n));
+}
+
 /// Builds a vtkCellArray in bulk from offsets and connectivity of type IdArray.
 template <typename IdArray, typename VertexOf>
 vtkSmartPointer<vtkCellArray> FillCells(
-  std::size_t numberOfCells, int cellSize, const VertexOf& vertexOf)
+  std::size_t numberOfCells, int cellSize, const VertexOf& vertexOf, const Poll& poll)
 {
   using Id = typename IdArray::ValueType;
   vtkNew<IdArray> offsets;
@@ -399,6 +416,10 @@ vtkSmartPointer<vtkCellArray> FillCells(
   Id next = 0;
   for (std::size_t c = 0; c < numberOfCells; ++c)
   {
+    if (Stop(c, numberOfCells, poll))
+    {
+      return nullptr;
+    }
     offsets->SetValue(static_cast<vtkIdType>(c), next);
     for (int k = 0; k < cellSize; ++k)
     {
@@ -416,25 +437,29 @@ vtkSmartPointer<vtkCellArray> FillCells(
 /// triangles then holds 160 MB less. VTK's filters and writers take either.
 template <typename VertexOf>
 vtkSmartPointer<vtkCellArray> MakeCells(
-  std::size_t numberOfCells, int cellSize, const VertexOf& vertexOf)
+  std::size_t numberOfCells, int cellSize, const VertexOf& vertexOf, const Poll& poll)
 {
   const std::size_t ids = numberOfCells * static_cast<std::size_t>(cellSize);
   if (ids <= static_cast<std::size_t>(std::numeric_limits<vtkTypeInt32>::max()))
   {
-    return FillCells<vtkTypeInt32Array>(numberOfCells, cellSize, vertexOf);
+    return FillCells<vtkTypeInt32Array>(numberOfCells, cellSize, vertexOf, poll);
   }
-  return FillCells<vtkIdTypeArray>(numberOfCells, cellSize, vertexOf);
+  return FillCells<vtkIdTypeArray>(numberOfCells, cellSize, vertexOf, poll);
 }
 
 /// The output points, in bulk; inputOf[i] is the input point that vertex i is, or -1.
 vtkSmartPointer<vtkPoints> MakePoints(const osm::Array<osm::Point>& vertices,
-  const osm::PlaneMap& map, const osm::Array<long long>* inputOf = nullptr)
+  const osm::PlaneMap& map, const Poll& poll, const osm::Array<long long>* inputOf = nullptr)
 {
   vtkNew<vtkDoubleArray> coordinates;
   coordinates->SetNumberOfComponents(3);
   Allocate(coordinates.Get(), static_cast<vtkIdType>(vertices.size()));
   for (std::size_t i = 0; i < vertices.size(); ++i)
   {
+    if (Stop(i, vertices.size(), poll))
+    {
+      return nullptr;
+    }
     const osm::Vec3 q = map.toSpace(vertices[i], inputOf ? (*inputOf)[i] : -1);
     const double p[3] = { q.x, q.y, q.z };
     coordinates->SetTypedTuple(static_cast<vtkIdType>(i), p);
@@ -444,12 +469,26 @@ vtkSmartPointer<vtkPoints> MakePoints(const osm::Array<osm::Point>& vertices,
   return points;
 }
 
-void MakeTriangles(const osm::TriMesh& mesh, const osm::PlaneMap& map, vtkPolyData* output,
-  const osm::Array<long long>* inputOf = nullptr)
+/// Points, then triangles, each half of poll's range; false if stopped.
+bool MakeTriangles(const osm::TriMesh& mesh, const osm::PlaneMap& map, vtkPolyData* output,
+  const Poll& poll, const osm::Array<long long>* inputOf = nullptr)
 {
-  output->SetPoints(MakePoints(mesh.vertices, map, inputOf));
-  output->SetPolys(MakeCells(mesh.triangles.size(), 3,
-    [&mesh](std::size_t c, int k) { return static_cast<vtkIdType>(mesh.triangles[c][k]); }));
+  auto points = MakePoints(mesh.vertices, map, Part(poll, 0.0, 0.5), inputOf);
+  if (!points || poll(0.5))
+  {
+    return false;
+  }
+  output->SetPoints(points);
+  auto cells = MakeCells(
+    mesh.triangles.size(), 3,
+    [&mesh](std::size_t c, int k) { return static_cast<vtkIdType>(mesh.triangles[c][k]); },
+    Part(poll, 0.5, 1.0));
+  if (!cells)
+  {
+    return false;
+  }
+  output->SetPolys(cells);
+  return true;
 }
 
 template <typename ArrayT>
@@ -461,10 +500,9 @@ vtkSmartPointer<ArrayT> MakeArray(const char* name, vtkIdType size)
   return array;
 }
 
-/// Fills the Mesh output. poll(fraction) is called every 2^16 triangles of the
-/// angle arrays (the longest part) and stops the filling when it returns true.
-void FillMesh(const osm::Result& result, const osm::PlaneMap& map, vtkPolyData* output,
-  const std::function<bool(double)>& poll)
+/// Fills the Mesh output; stops early when poll says so.
+void FillMesh(
+  const osm::Result& result, const osm::PlaneMap& map, vtkPolyData* output, const Poll& poll)
 {
   // Each mesh vertex that is an input point gets that point's original
   // coordinates (the first of merged points): by index, not by a round trip.
@@ -477,7 +515,10 @@ void FillMesh(const osm::Result& result, const osm::PlaneMap& map, vtkPolyData* 
       inputOf[static_cast<std::size_t>(v)] = static_cast<long long>(i);
     }
   }
-  MakeTriangles(result.mesh, map, output, &inputOf);
+  if (!MakeTriangles(result.mesh, map, output, Part(poll, 0.0, 0.4), &inputOf))
+  {
+    return;
+  }
 
   const auto numberOfVertices = static_cast<vtkIdType>(result.mesh.vertices.size());
   auto origin = MakeArray<vtkUnsignedCharArray>("VertexOrigin", numberOfVertices);
@@ -496,9 +537,10 @@ void FillMesh(const osm::Result& result, const osm::PlaneMap& map, vtkPolyData* 
   auto regionId = MakeArray<vtkIntArray>("RegionId", numberOfTriangles);
   const double degrees = 180.0 / std::acos(-1.0);
   const auto& v = result.mesh.vertices;
+  const Poll arrays = Part(poll, 0.4, 1.0);
   for (vtkIdType t = 0; t < numberOfTriangles; ++t)
   {
-    if ((t & 0xffff) == 0xffff && poll(static_cast<double>(t) / numberOfTriangles))
+    if (Stop(static_cast<std::size_t>(t), static_cast<std::size_t>(numberOfTriangles), arrays))
     {
       return;
     }
@@ -534,12 +576,27 @@ void FillMesh(const osm::Result& result, const osm::PlaneMap& map, vtkPolyData* 
   }
 }
 
-void FillEdges(const osm::Result& result, const osm::PlaneMap& map, vtkPolyData* output)
+/// Fills the Edges output; stops early when poll says so.
+void FillEdges(
+  const osm::Result& result, const osm::PlaneMap& map, vtkPolyData* output, const Poll& poll)
 {
-  output->SetPoints(MakePoints(result.edgeVertices, map));
-  output->SetLines(MakeCells(result.edges.size(), 2, [&result](std::size_t c, int k) {
-    return static_cast<vtkIdType>(k == 0 ? result.edges[c].a : result.edges[c].b);
-  }));
+  auto points = MakePoints(result.edgeVertices, map, Part(poll, 0.0, 0.2));
+  if (!points)
+  {
+    return;
+  }
+  output->SetPoints(points);
+  auto cells = MakeCells(
+    result.edges.size(), 2,
+    [&result](std::size_t c, int k) {
+      return static_cast<vtkIdType>(k == 0 ? result.edges[c].a : result.edges[c].b);
+    },
+    Part(poll, 0.2, 0.5));
+  if (!cells)
+  {
+    return;
+  }
+  output->SetLines(cells);
 
   const auto numberOfEdges = static_cast<vtkIdType>(result.edges.size());
   auto overlay = MakeArray<vtkUnsignedCharArray>("Overlay", numberOfEdges);
@@ -547,8 +604,13 @@ void FillEdges(const osm::Result& result, const osm::PlaneMap& map, vtkPolyData*
   auto discarded = MakeArray<vtkUnsignedCharArray>("Discarded", numberOfEdges);
   auto isInput = MakeArray<vtkUnsignedCharArray>("Input", numberOfEdges);
   auto edgeClass = MakeArray<vtkUnsignedCharArray>("EdgeClass", numberOfEdges);
+  const Poll arrays = Part(poll, 0.5, 1.0);
   for (vtkIdType e = 0; e < numberOfEdges; ++e)
   {
+    if (Stop(static_cast<std::size_t>(e), static_cast<std::size_t>(numberOfEdges), arrays))
+    {
+      return;
+    }
     const std::uint8_t flags = result.edges[static_cast<std::size_t>(e)].flags;
     overlay->SetValue(e, (flags & osm::EdgeOverlay) ? 1 : 0);
     kept->SetValue(e, (flags & osm::EdgeKept) ? 1 : 0);
@@ -905,7 +967,10 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   }
   if (this->GenerateEdges)
   {
-    FillEdges(result, map, edges);
+    FillEdges(result, map, edges, [this](double fraction) {
+      this->UpdateProgress(0.95 + 0.03 * fraction);
+      return AbortRequested(this);
+    });
   }
   this->UpdateProgress(0.98);
   if (aborted())
@@ -914,7 +979,10 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   }
   if (this->GenerateOverlay)
   {
-    MakeTriangles(result.overlay, map, overlay);
+    MakeTriangles(result.overlay, map, overlay, [this](double fraction) {
+      this->UpdateProgress(0.98 + 0.02 * fraction);
+      return AbortRequested(this);
+    });
   }
   this->SetProgressText(nullptr);
   this->UpdateProgress(1.0);

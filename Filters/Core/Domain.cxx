@@ -296,10 +296,13 @@ bool onConstrainedEdge(const Array<Point>& P, const Array<Triangle>& tris, const
 
 Carving carveDomain(const Array<Point>& P, const Array<Triangle>& tris,
   const Array<Segment>& constrained, bool removeExterior, const Array<Point>& holes,
-  KnownAdjacency known, const Array<Point>& regionSeeds)
+  KnownAdjacency known, const Array<Point>& regionSeeds, RunContext& run)
 {
+  // Each step is linear in the triangles; an abort is polled between them.
   const KnownAdjacency a = adjacency(tris, constrained, std::move(known));
+  run.report(0.4);
   Array<int> component = components(a);
+  run.report(0.7);
   Array<char> removed; // per component
   removed.assign(tris.size(), char{ 0 });
   if (removeExterior)
@@ -346,6 +349,7 @@ Carving carveDomain(const Array<Point>& P, const Array<Triangle>& tris,
   }
   // Regions are numbered in the order of their smallest triangle index: a
   // component's root comes before its other triangles, which take its id.
+  run.report(0.85);
   int next = 0;
   out.regionId = std::move(component);
   for (int t = 0; t < static_cast<int>(tris.size()); ++t)

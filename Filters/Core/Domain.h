@@ -6,6 +6,7 @@
 
 #include "Geometry.h"
 #include "HugePages.h"
+#include "RunContext.h"
 
 #include <array>
 #include <cstdint>
@@ -51,7 +52,8 @@ constexpr std::size_t kHoleSeedsScanned = 8;
 /// are located after the holes are removed (Carving::seedRegion).
 Carving carveDomain(const Array<Point>& points, const Array<Triangle>& triangles,
   const Array<Segment>& constrained, bool removeExterior, const Array<Point>& holes,
-  KnownAdjacency known = {}, const Array<Point>& regionSeeds = {});
+  KnownAdjacency known = {}, const Array<Point>& regionSeeds = {},
+  RunContext& run = RunContext::silent());
 
 /// Convex hull of the points, counter-clockwise, without collinear vertices.
 Array<int> convexHull(const Array<Point>& points);

@@ -380,11 +380,11 @@ void Mesher::meshRounds(Work& w)
     st.secondsOverlay += since(t);
 
     t = Clock::now();
-    run.phase("stitch", 0.6, 0.75);
+    run.phase("stitch", 0.6, 0.62);
     // From here on the compact copy serves: the refinement's triangles are
     // freed, and their pages (kept by the Reuse scope) hold the later phases'
     // arrays.
-    OverlayEdges ov = compactOverlay(overlay.mesh);
+    OverlayEdges ov = compactOverlay(overlay.mesh, run);
     for (Segment& s : segments)
       s = { overlay.inputVertex[s[0]], overlay.inputVertex[s[1]] };
     run.phase("stitch", 0.62, 0.7); // compaction done: the walks
@@ -433,7 +433,7 @@ void Mesher::meshRounds(Work& w)
     Array<Edge> edges;
     run.phase("stitch", 0.7, 0.75); // the walks done: the planar graph
     PlanarGraph g = stitch(std::move(ov), std::move(overlay.mesh.points), overlay.isInput, walk,
-      options.keepEdges ? &edges : nullptr, st);
+      options.keepEdges ? &edges : nullptr, st, run);
     st.secondsStitch += since(t);
     overlay.mesh = Triangulation();
     walk = Walk();
@@ -444,9 +444,9 @@ void Mesher::meshRounds(Work& w)
     st.secondsComplete = since(t);
 
     t = Clock::now();
-    run.phase("domain", 0.9, 1.0);
+    run.phase("domain", 0.9, 0.95);
     Carving carve = carveDomain(g.points, c.triangles, c.constrainedEdges, domain != Domain::Box,
-      w.holes, std::move(g.intactAdjacency), w.regionSeeds);
+      w.holes, std::move(g.intactAdjacency), w.regionSeeds, run);
     st.secondsDomain = since(t);
     warnAboutRegionSeeds(carve);
     if (!carve.unusedHoles.empty())
@@ -545,7 +545,8 @@ void Mesher::assignRegionAttributes(const Carving& carve)
 /// angles that cannot reach either extreme, and only the others get atan2.
 /// The filter compares cos|cos| (monotone in the cosine) multiplied out,
 /// dot|dot| against bound * |u|^2 |v|^2: no square root or division per angle.
-void angleExtremes(const TriMesh& mesh, double& minDeg, double& maxDeg)
+/// Polls run (in the phase's [0.6, 0.85]) for an abort as it goes.
+void angleExtremes(const TriMesh& mesh, double& minDeg, double& maxDeg, RunContext& run)
 {
   const double deg = 180.0 / series::kPi;
   // Far above the rounding of the filter's products and of the conversions.
@@ -555,8 +556,10 @@ void angleExtremes(const TriMesh& mesh, double& minDeg, double& maxDeg)
   maxDeg = 0.0;
   // Skip an angle whose cos|cos| is strictly between these (none at first).
   double below = -4, above = 4;
+  const double n = static_cast<double>(mesh.triangles.size());
   for (const Triangle& t : mesh.triangles)
   {
+    run.tickWith([&] { return 0.6 + 0.25 * double(&t - mesh.triangles.data()) / n; }, 1u << 16);
     const Point& p0 = mesh.vertices[t[0]];
     const Point& p1 = mesh.vertices[t[1]];
     const Point& p2 = mesh.vertices[t[2]];
@@ -630,6 +633,7 @@ void Mesher::buildOutput(const Work& w, const PlanarGraph& g, Completion& c, Car
   std::size_t kept = 0;
   for (std::size_t t = 0; t < tris.size(); ++t)
   {
+    run.tickWith([&] { return 0.5 * double(t) / double(tris.size()); }, 1u << 16);
     if (region[t] < 0)
       continue;
     Triangle tri = tris[t];
@@ -684,7 +688,9 @@ void Mesher::buildOutput(const Work& w, const PlanarGraph& g, Completion& c, Car
   st.regions = carve.regions;
   st.outputVertices = res.mesh.vertices.size();
   st.outputTriangles = res.mesh.triangles.size();
-  angleExtremes(res.mesh, st.minAngleDeg, st.maxAngleDeg);
+  run.report(0.6);
+  angleExtremes(res.mesh, st.minAngleDeg, st.maxAngleDeg, run);
+  run.report(0.85);
   if (options.keepEdges)
   {
     res.edgeVertices.reserve(g.points.size());

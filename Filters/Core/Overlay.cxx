@@ -85,7 +85,9 @@ Array<Point> permuted(const Array<Point>& points, const Array<int>& order)
 /// Renumber the vertices after the box corners along a Hilbert curve, so that
 /// the later phases, which visit vertices and triangles by index, touch memory
 /// in spatial order (refinement creates them in a scattered order).
-void renumberAlongHilbertCurve(Overlay& overlay)
+/// fraction: the overlay's progress, reported between the steps (each
+/// linear in the vertices or triangles) to poll for an abort.
+void renumberAlongHilbertCurve(Overlay& overlay, RunContext& run, double fraction)
 {
   Triangulation& mesh = overlay.mesh;
   const int n = static_cast<int>(mesh.points.size());
@@ -93,6 +95,7 @@ void renumberAlongHilbertCurve(Overlay& overlay)
     return;
   // The box corners stay 0..3; the others follow the curve.
   const Array<int> order = hilbertOrder(mesh.points.data() + 4, n - 4);
+  run.report(fraction);
   Array<int> newIndex;
   newIndex.assign(n, 0);
   for (int v = 0; v < 4; ++v)
@@ -110,6 +113,7 @@ void renumberAlongHilbertCurve(Overlay& overlay)
   }
   mesh.points.swap(points);
   overlay.isInput.swap(isInput);
+  run.report(fraction);
   for (Triangulation::Slot& t : mesh.tri)
     if (t.v[0] >= 0)
       for (int& v : t.v)
@@ -287,6 +291,19 @@ Overlay Refiner::refine()
                             "would need ") +
       need + " points, and a mesh can index " + std::to_string(static_cast<long long>(indexable)) };
   }
+  // A size bound may ask for many more points than the input has: about 2.2
+  // times forMaxEdge (measured on squares), so room for 2.5 times spares
+  // copying the growing arrays (0.25 s at 5e6 triangles, unpolled).
+  if (const double bounded = 2.5 * forMaxEdge; bounded > double(expected))
+  {
+    try
+    {
+      mesh.reserve(static_cast<std::size_t>(bounded), 2 * static_cast<std::size_t>(bounded));
+      out.isInput.reserve(static_cast<std::size_t>(bounded));
+    }
+    catch (const std::bad_alloc&)
+    {}
+  }
   hardCap = steinerCap > 0
     ? steinerCap
     : 1000 * input.size() + 1000000 + static_cast<std::size_t>(8 * forMaxEdge);
@@ -316,7 +333,8 @@ Overlay Refiner::refine()
     out.inputVertex[original[i]] = vertexOf[i];
   }
   mesh.releaseInsertionScratch();
-  renumberAlongHilbertCurve(out);
+  run.report(lastProgress);
+  renumberAlongHilbertCurve(out, run, lastProgress);
   return std::move(out);
 }
 

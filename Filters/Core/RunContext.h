@@ -23,9 +23,19 @@ public:
   explicit RunContext(Progress* p)
     : progress(p)
   {}
+
+  /// A context without progress, for phases called on their own (tests):
+  /// nothing in it changes, so every thread may share it.
+  static RunContext& silent()
+  {
+    static RunContext none(nullptr);
+    return none;
+  }
   /// Report progress of the current phase, which spans [begin, end] of the run.
   void phase(const char* name, double begin, double end)
   {
+    if (!progress)
+      return;
     phaseName = name;
     phaseBegin = begin;
     phaseEnd = end;

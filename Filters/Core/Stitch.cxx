@@ -12,7 +12,7 @@
 namespace osm
 {
 
-OverlayEdges compactOverlay(Triangulation& mesh)
+OverlayEdges compactOverlay(Triangulation& mesh, RunContext& run)
 {
   // The core's peak memory is here, where the slots and their compact copy
   // both live, and nothing else should: a slot's mark (the cavity search's stamp, unused from here
@@ -25,9 +25,17 @@ OverlayEdges compactOverlay(Triangulation& mesh)
   };
   Array<int> start;
   start.assign(mesh.points.size() + 1, 0);
+  // Four passes over the triangles, each polling for an abort.
+  const double slots = mesh.slots();
+  auto poll = [&](int pass, int t) {
+    run.tickWith([&] { return (pass + t / slots) / 4; }, 1u << 16);
+  };
   for (int t = 0; t < mesh.slots(); ++t)
+  {
+    poll(0, t);
     if (mesh.alive(t))
       ++start[lowest(t) + 1];
+  }
   for (std::size_t v = 0; v + 1 < start.size(); ++v)
     start[v + 1] += start[v];
   // Stitching makes the intact triangles and their adjacency out of tris and
@@ -44,6 +52,7 @@ OverlayEdges compactOverlay(Triangulation& mesh)
   ov.tris.resize(n);
   for (int t = 0; t < mesh.slots(); ++t)
   {
+    poll(1, t);
     if (!mesh.alive(t))
       continue;
     const int c = start[lowest(t)]++;
@@ -54,6 +63,7 @@ OverlayEdges compactOverlay(Triangulation& mesh)
   ov.nbr.resize(ov.tris.size());
   for (int t = 0; t < mesh.slots(); ++t)
   {
+    poll(2, t);
     if (!mesh.alive(t))
       continue;
     std::array<int, 3>& nbr = ov.nbr[mesh.tri[t].mark];
@@ -67,8 +77,11 @@ OverlayEdges compactOverlay(Triangulation& mesh)
   // In this order, near in space, vtri is written near in memory too.
   ov.vtri.assign(mesh.points.size(), -1);
   for (int c = 0; c < static_cast<int>(ov.tris.size()); ++c)
+  {
+    poll(3, c);
     for (int v : ov.tris[c])
       ov.vtri[v] = c;
+  }
   return ov;
 }
 
@@ -545,7 +558,7 @@ Array<int> numberIntact(const Array<std::uint8_t>& flags, int& count)
 /// themselves. Takes over ov.tris and ov.nbr: an intact triangle only ever
 /// moves down, over a place already read, so both are filtered in place.
 void listIntact(OverlayEdges& ov, const Array<std::uint8_t>& flags, const Array<int>& intactIndex,
-  int count, const Walk& walk, PlanarGraph& g)
+  int count, const Walk& walk, PlanarGraph& g, RunContext& run)
 {
   Array<Triangle> tris = std::move(ov.tris);
   Array<std::array<int, 3>> nbrs = std::move(ov.nbr);
@@ -553,6 +566,7 @@ void listIntact(OverlayEdges& ov, const Array<std::uint8_t>& flags, const Array<
   known.constrained.reserve(static_cast<std::size_t>(count));
   for (std::size_t c = 0; c < tris.size(); ++c)
   {
+    run.tickWith([&] { return 0.8 + 0.2 * double(c) / double(tris.size()); }, 1u << 16);
     const int k = intactIndex[c];
     if (k < 0)
       continue;
@@ -587,7 +601,7 @@ void listIntact(OverlayEdges& ov, const Array<std::uint8_t>& flags, const Array<
 } // namespace
 
 PlanarGraph stitch(OverlayEdges ov, Array<Point> points, const Array<char>& isInput,
-  const Walk& walk, Array<Edge>* inspect, Statistics& stats)
+  const Walk& walk, Array<Edge>* inspect, Statistics& stats, RunContext& run)
 {
   PlanarGraph g;
   // Each crossing may add a stitch vertex, and each overlay edge, crossing
@@ -640,6 +654,7 @@ PlanarGraph stitch(OverlayEdges ov, Array<Point> points, const Array<char>& isIn
   Array<int> stitchVertex(walk.crossings.size(), -1);
   for (int e = 0; e < static_cast<int>(ne); ++e)
   {
+    run.tickWith([&] { return 0.8 * e / double(ne); }, 1u << 16);
     if (!ov.isEdge(e))
       continue;
     // This edge's crossings are order[first, next).
@@ -697,7 +712,7 @@ PlanarGraph stitch(OverlayEdges ov, Array<Point> points, const Array<char>& isIn
     if (inspect)
       inspect->push_back({ ends[0], ends[1], edgeFlags });
   }
-  listIntact(ov, flags, intactIndex, intactCount, walk, g);
+  listIntact(ov, flags, intactIndex, intactCount, walk, g, run);
   stats.stitchVertices = g.points.size() - overlayVertices;
 
   // Input subsegments: each piece, split at its kept crossings. A piece along

@@ -61,7 +61,7 @@ struct OverlayEdges
 /// The overlay's live triangles in compact form. Releases the mesh's
 /// triangles and vertex links (its points stay): nothing after this walks or
 /// inserts into the overlay.
-OverlayEdges compactOverlay(Triangulation& mesh);
+OverlayEdges compactOverlay(Triangulation& mesh, RunContext& run = RunContext::silent());
 
 /// A maximal part of a segment between two overlay vertices.
 struct Piece
@@ -142,7 +142,8 @@ struct PlanarGraph
 /// The graph is built in the arrays of ov and of the overlay's points (isInput
 /// per point): move them in, or copy what must outlive the call.
 PlanarGraph stitch(OverlayEdges ov, Array<Point> points, const Array<char>& isInput,
-  const Walk& walk, Array<Edge>* inspect, Statistics& stats);
+  const Walk& walk, Array<Edge>* inspect, Statistics& stats,
+  RunContext& run = RunContext::silent());
 
 } // namespace osm
 

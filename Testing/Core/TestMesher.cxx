@@ -605,6 +605,46 @@ TEST(Mesher, ReportsProgressAndHonoursAbort)
   EXPECT_NE(r.error.find("aborted"), std::string::npos);
 }
 
+TEST(Mesher, EveryLongStepPollsForAnAbort)
+{
+  // Compaction, building the stitched graph, carving and the output each
+  // take a few tenths of a second at 5e6 triangles: an abort must not wait
+  // for them to end. Every one of them reports inside its own range.
+  struct Recorder : Progress
+  {
+    std::vector<std::pair<std::string, double>> seen;
+    double lo = 2, hi = 2; // abort at the first report strictly inside (lo, hi)
+    bool stop = false;
+    void report(double f, const char* phase) override
+    {
+      seen.emplace_back(phase, f);
+      stop = stop || (f > lo && f < hi);
+    }
+    bool aborted() override { return stop; }
+  };
+  Pslg p = square();
+  Options o;
+  o.maxEdgeLength = 0.004; // about 190,000 triangles
+  Recorder all;
+  const Result r = mesh(p, o, &all);
+  ASSERT_TRUE(r.ok) << r.error;
+  EXPECT_GT(r.mesh.triangles.size(), 150000u);
+  const std::pair<double, double> steps[] = { { 0.6, 0.62 }, { 0.7, 0.75 }, { 0.9, 0.95 },
+    { 0.95, 1.0 } };
+  for (const auto& [lo, hi] : steps)
+  {
+    const auto inside = std::count_if(all.seen.begin(), all.seen.end(),
+      [&](const auto& s) { return s.second > lo && s.second < hi; });
+    EXPECT_GE(inside, 2) << "reports inside (" << lo << ", " << hi << ")";
+    Recorder stopper;
+    stopper.lo = lo;
+    stopper.hi = hi;
+    const Result aborted = mesh(p, o, &stopper);
+    EXPECT_FALSE(aborted.ok) << "an abort inside (" << lo << ", " << hi << ")";
+    EXPECT_NE(aborted.error.find("aborted"), std::string::npos) << aborted.error;
+  }
+}
+
 TEST(Mesher, DegenerateHullsFallBackToTheBox)
 {
   Pslg p;
