@@ -134,24 +134,134 @@ std::string normalise(
   return {};
 }
 
+/// Where crossing c lies along segment s (a multiple of the projection).
+double along(const Work& w, int s, const Point& p)
+{
+  const Point& a = w.points[w.segments[s][0]];
+  const Point& b = w.points[w.segments[s][1]];
+  return (p.x - a.x) * (b.x - a.x) + (p.y - a.y) * (b.y - a.y);
+}
+
+/// Per crossing, the member of its class (root[k], the class's smallest
+/// index) whose point lies nearest to every segment of the class: where the
+/// segments meet at a point that double precision holds (two axes and a
+/// diagonal through the origin), that point.
+Array<int> representatives(
+  const Work& w, const Array<SegmentCrossing>& crossings, const Array<int>& root)
+{
+  Array<int> byClass(crossings.size());
+  for (std::size_t k = 0; k < byClass.size(); ++k)
+    byClass[k] = static_cast<int>(k);
+  std::stable_sort(byClass.begin(), byClass.end(), [&](int x, int y) { return root[x] < root[y]; });
+  Array<int> best(crossings.size());
+  Array<int> lines;
+  for (std::size_t i = 0; i < byClass.size();)
+  {
+    std::size_t end = i;
+    lines.clear();
+    for (; end < byClass.size() && root[byClass[end]] == root[byClass[i]]; ++end)
+      for (int s : { crossings[byClass[end]].a, crossings[byClass[end]].b })
+        if (s < static_cast<int>(w.segments.size()))
+          lines.push_back(s);
+    // The largest distance of p from the class's lines.
+    auto offLines = [&](const Point& p) {
+      double worst = 0;
+      for (int s : lines)
+      {
+        const Point &a = w.points[w.segments[s][0]], &b = w.points[w.segments[s][1]];
+        worst = std::max(worst, std::fabs(orient2d(a, b, p)) / std::sqrt(dist2(a, b)));
+      }
+      return worst;
+    };
+    int chosen = byClass[i];
+    double chosenOff = end - i > 1 ? offLines(crossings[chosen].p) : 0.0;
+    for (std::size_t j = i + 1; j < end; ++j)
+      if (const double off = offLines(crossings[byClass[j]].p); off < chosenOff)
+      {
+        chosen = byClass[j];
+        chosenOff = off;
+      }
+    for (std::size_t j = i; j < end; ++j)
+      best[byClass[j]] = chosen;
+    i = end;
+  }
+  return best;
+}
+
+/// Per crossing, the crossing whose point it takes: crossings next to each
+/// other along a segment and within 1e-12 of its length or coordinates are
+/// one point. Three or more segments through one point (the medians of a
+/// triangle, roads at a junction) give a crossing per pair, rounded apart by
+/// a few units in the last place; kept apart, they would be features far
+/// below what double precision can mesh.
+Array<int> mergeNearCrossings(const Work& w, const Array<SegmentCrossing>& crossings)
+{
+  Array<int> root(crossings.size());
+  for (std::size_t k = 0; k < root.size(); ++k)
+    root[k] = static_cast<int>(k);
+  auto find = [&](int k) {
+    while (root[k] != k)
+      k = root[k] = root[root[k]];
+    return k;
+  };
+  struct Cut
+  {
+    int segment;
+    double t;
+    int crossing;
+  };
+  Array<Cut> cuts;
+  for (std::size_t k = 0; k < crossings.size(); ++k)
+    for (int s : { crossings[k].a, crossings[k].b })
+      if (s < static_cast<int>(w.segments.size())) // not a hull edge
+        cuts.push_back({ s, along(w, s, crossings[k].p), static_cast<int>(k) });
+  std::sort(cuts.begin(), cuts.end(), [](const Cut& x, const Cut& y) {
+    return x.segment != y.segment ? x.segment < y.segment : x.t < y.t;
+  });
+  for (std::size_t i = 1; i < cuts.size(); ++i)
+  {
+    if (cuts[i].segment != cuts[i - 1].segment)
+      continue;
+    const Point& p = crossings[cuts[i - 1].crossing].p;
+    const Point& q = crossings[cuts[i].crossing].p;
+    const Segment& s = w.segments[cuts[i].segment];
+    const double tolerance = 1e-12 *
+      std::max(
+        { std::sqrt(dist2(w.points[s[0]], w.points[s[1]])), std::fabs(p.x), std::fabs(p.y) });
+    if (dist2(p, q) <= tolerance * tolerance)
+    {
+      // The smaller index is the root: the first crossing's point serves.
+      const int a = find(cuts[i - 1].crossing), b = find(cuts[i].crossing);
+      root[std::max(a, b)] = std::min(a, b);
+    }
+  }
+  for (std::size_t k = 0; k < root.size(); ++k)
+    root[k] = find(static_cast<int>(k));
+  return representatives(w, crossings, root);
+}
+
 /// Split every segment at the points where others cross it.
 void splitCrossings(Work& w, const Array<SegmentCrossing>& crossings, Statistics& stats)
 {
+  const Array<int> same = mergeNearCrossings(w, crossings);
+  Array<int> vertexOf(crossings.size(), -1);
   Array<Array<std::pair<double, int>>> cuts(w.segments.size());
-  for (const SegmentCrossing& c : crossings)
+  for (std::size_t k = 0; k < crossings.size(); ++k)
   {
-    const int v = static_cast<int>(w.points.size());
-    w.points.push_back(c.p);
-    w.isCrossingPoint.push_back(1);
+    const SegmentCrossing& c = crossings[k];
+    int& v = vertexOf[same[k]];
+    if (v < 0)
+    {
+      v = static_cast<int>(w.points.size());
+      w.points.push_back(crossings[same[k]].p);
+      w.isCrossingPoint.push_back(1);
+    }
     for (int s : { c.a, c.b })
     {
       // Hull edges (numbered after the input's) are recomputed next round.
       if (s >= static_cast<int>(w.segments.size()))
         continue;
-      const Point& a = w.points[w.segments[s][0]];
-      const Point& b = w.points[w.segments[s][1]];
-      const double t = (c.p.x - a.x) * (b.x - a.x) + (c.p.y - a.y) * (b.y - a.y);
-      cuts[s].push_back({ t, v });
+      cuts[s].push_back({ along(w, s, w.points[v]), v });
     }
     ++stats.crossingsSplit;
   }
@@ -161,6 +271,10 @@ void splitCrossings(Work& w, const Array<SegmentCrossing>& crossings, Statistics
     if (cuts[s].empty())
       continue;
     std::sort(cuts[s].begin(), cuts[s].end());
+    // Merged crossings cut a segment once.
+    cuts[s].erase(std::unique(cuts[s].begin(), cuts[s].end(),
+                    [](const auto& x, const auto& y) { return x.second == y.second; }),
+      cuts[s].end());
     int prev = w.segments[s][0];
     const int last = w.segments[s][1];
     for (std::size_t k = 0; k < cuts[s].size(); ++k)

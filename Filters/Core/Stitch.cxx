@@ -338,7 +338,16 @@ Point intersection(const Point& a, const Point& b, const Point& c, const Point& 
   const double da = orient2dAccurate(c, d, a), db = orient2dAccurate(c, d, b);
   const double t = da / (da - db);
   const double s = std::isfinite(t) ? std::min(1.0, std::max(0.0, t)) : 0.5;
-  return { a.x + s * (b.x - a.x), a.y + s * (b.y - a.y) };
+  Point p{ a.x + s * (b.x - a.x), a.y + s * (b.y - a.y) };
+  // On a horizontal or vertical segment the point can lie exactly on it.
+  for (const auto& [u, v] : { std::pair{ a, b }, std::pair{ c, d } })
+  {
+    if (u.y == v.y)
+      p.y = u.y;
+    if (u.x == v.x)
+      p.x = u.x;
+  }
+  return p;
 }
 
 void Walker::markDuplicates()

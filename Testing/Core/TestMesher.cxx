@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <numeric>
 #include <random>
 #include <utility>
 
@@ -260,6 +261,77 @@ TEST(Clean, SplitsCrossingSegments)
   // The repair is said, naming the two segments and where they cross.
   EXPECT_TRUE(mentions(r.warnings, "split 1 crossing(s)")) << r.warnings.size();
   EXPECT_TRUE(mentions(r.warnings, "input segment 4 and input segment 5 cross near"));
+}
+
+TEST(Clean, SegmentsThroughOnePointMeetAtOneVertex)
+{
+  // Found by an adversarial run: each pair of segments through one point
+  // crossed at its own rounded point, a few units in the last place from the
+  // others, and meshing failed ("closer together than double precision").
+  auto verticesNear = [](const Result& r, const Point& q) {
+    return std::count_if(r.mesh.vertices.begin(), r.mesh.vertices.end(),
+      [&](const Point& v) { return std::hypot(v.x - q.x, v.y - q.y) < 1e-9; });
+  };
+  auto withMedians = [](Point a, Point b, Point c) {
+    Pslg p;
+    p.points = { a, b, c, { (b.x + c.x) / 2, (b.y + c.y) / 2 },
+      { (c.x + a.x) / 2, (c.y + a.y) / 2 }, { (a.x + b.x) / 2, (a.y + b.y) / 2 } };
+    p.segments = { { 0, 5 }, { 5, 1 }, { 1, 3 }, { 3, 2 }, { 2, 4 }, { 4, 0 }, { 0, 3 }, { 1, 4 },
+      { 2, 5 } };
+    return p;
+  };
+  const Result medians = meshAndValidate(withMedians({ 0, 0 }, { 1, 0 }, { 0, 1 }), "medians");
+  EXPECT_EQ(verticesNear(medians, { 1.0 / 3, 1.0 / 3 }), 1);
+  EXPECT_EQ(medians.stats.regions, 6u);
+
+  // Two axes and a diagonal: they meet at a point double precision holds.
+  Pslg axes;
+  axes.points = { { 0, -0.4 }, { 0, 0.4 }, { -0.4, 0 }, { 0.4, 0 }, { -0.4, -0.4 }, { 0.4, 0.4 } };
+  axes.segments = { { 0, 1 }, { 2, 3 }, { 4, 5 } };
+  Options hull;
+  hull.domain = Domain::Hull;
+  const Result r = meshAndValidate(axes, "axes", hull);
+  EXPECT_EQ(verticesNear(r, { 0, 0 }), 1);
+  EXPECT_EQ(std::count(r.mesh.vertices.begin(), r.mesh.vertices.end(), Point{ 0, 0 }), 1);
+
+  // Random integer triangles with their medians, and fans of segments with
+  // integer directions through the origin.
+  std::mt19937 rng(5);
+  std::uniform_int_distribution<int> coordinate(0, 20), direction(-20, 20), reach(1, 3);
+  for (int k = 0; k < 100; ++k)
+  {
+    const Point a{ double(coordinate(rng)), double(coordinate(rng)) };
+    const Point b{ double(coordinate(rng)), double(coordinate(rng)) };
+    const Point c{ double(coordinate(rng)), double(coordinate(rng)) };
+    if (orient2d(a, b, c) == 0)
+      continue;
+    const Result m = meshAndValidate(withMedians(a, b, c), "medians " + std::to_string(k));
+    EXPECT_EQ(verticesNear(m, { (a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3 }), 1) << k;
+  }
+  for (int n : { 3, 5, 10, 20 })
+  {
+    Pslg fan;
+    std::vector<std::pair<int, int>> used;
+    while (fan.segments.size() < static_cast<std::size_t>(n))
+    {
+      int x = direction(rng), y = direction(rng);
+      const int g = std::gcd(x, y);
+      if (g == 0)
+        continue;
+      x /= g;
+      y /= g;
+      if (std::count(used.begin(), used.end(), std::pair{ x, y }) ||
+        std::count(used.begin(), used.end(), std::pair{ -x, -y }))
+        continue;
+      used.push_back({ x, y });
+      const int i = static_cast<int>(fan.points.size()), s = reach(rng), t = reach(rng);
+      fan.points.push_back({ double(x * s), double(y * s) });
+      fan.points.push_back({ double(-x * t), double(-y * t) });
+      fan.segments.push_back({ i, i + 1 });
+    }
+    const Result f = meshAndValidate(fan, "fan of " + std::to_string(n), hull);
+    EXPECT_EQ(std::count(f.mesh.vertices.begin(), f.mesh.vertices.end(), Point{ 0, 0 }), 1) << n;
+  }
 }
 
 TEST(Clean, RefusesCrossingsWhenAskedTo)
