@@ -239,17 +239,23 @@ int vtkTrianglePolyReader::RequestData(vtkInformation* vtkNotUsed(request),
     return 1;
   }
 
+  // A file that cannot be read gives an error and an empty output, not a
+  // failed request: the other pieces cannot know of it (they do not open the
+  // file), and under MPI a filter downstream that gathers (the mesher) would
+  // wait forever for the rank whose request failed.
   if (!this->FileName || !*this->FileName)
   {
     vtkErrorMacro("No file name: set FileName to a .poly or .node file.");
-    return 0;
+    AddHolePoints(nullptr, output);
+    return 1;
   }
 
   const osm::PolyFile file = osm::readPolyFile(this->FileName);
   if (!file.ok)
   {
     vtkErrorMacro(<< file.error);
-    return 0;
+    AddHolePoints(nullptr, output);
+    return 1;
   }
   FillOutput(file, output);
   return 1;

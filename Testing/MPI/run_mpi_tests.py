@@ -217,6 +217,23 @@ def bundled(runner):
             (3, name + "-3.vtm", "none", False),
         ])
     invalid_block(runner)
+    unreadable_poly(runner)
+
+
+def unreadable_poly(runner):
+    """A .poly file the plugin's reader refuses (a NaN coordinate): rank 0's
+    reader says why; every rank finishes, with empty outputs (the reader's
+    failed request used to leave the other ranks waiting in the gather)."""
+    print("== unreadable-poly", flush=True)
+    path = os.path.join(runner.out, "unreadable.poly")
+    with open(path, "w") as f:
+        f.write("3 2 0 0\n1 0 0\n2 1 nan\n3 0 1\n3 0\n1 1 2\n2 2 3\n3 3 1\n0\n")
+    for ranks in (1, 2):
+        result = runner.mesh("unreadable-np%d" % ranks, ranks, path)
+        check("nan" in result["log"].lower() and "unreadable.poly" in result["log"],
+              "unreadable .poly -np %d: the reader's error names the file and the NaN" % ranks)
+        check(all(o["cells"] == 0 for o in result["outputs"]),
+              "unreadable .poly -np %d: every output empty %s" % (ranks, result["outputs"]))
 
 
 def write_lines_vtp(path, points, lines):
