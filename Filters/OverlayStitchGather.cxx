@@ -114,9 +114,46 @@ struct InvalidCells
     if (Count++ == 0 || std::make_pair(piece, cellId) < FirstAt)
     {
       FirstAt = { piece, cellId };
-      First = "cell " + std::to_string(cellId) + " of " + PieceName + " " + std::to_string(piece) +
-        " refers to point " + std::to_string(*bad) + ", but that " + PieceName + " has " +
+      // A single input (PieceName null) is not named as a piece.
+      First = "cell " + std::to_string(cellId) +
+        (PieceName ? std::string(" of ") + PieceName + " " + std::to_string(piece) : "") +
+        " refers to point " + std::to_string(*bad) + ", but " +
+        (PieceName ? std::string("that ") + PieceName : std::string("the input")) + " has " +
         std::to_string(points) + " point(s)";
+    }
+  }
+
+  /// Notes every cell of a piece naming a point it does not have.
+  void NoteCells(vtkPolyData* piece, std::size_t index)
+  {
+    const vtkIdType points = piece->GetNumberOfPoints();
+    // Most inputs are valid: the ids' range says so without visiting cells.
+    bool inRange = true;
+    for (int kind = 0; kind < 4 && inRange; ++kind)
+    {
+      vtkDataArray* ids = CellsOfKind(piece, kind)->GetConnectivityArray();
+      double range[2] = { 0.0, 0.0 };
+      if (ids->GetNumberOfTuples() > 0)
+      {
+        ids->GetRange(range, 0);
+      }
+      inRange = range[0] >= 0 && range[1] < static_cast<double>(points);
+    }
+    if (inRange)
+    {
+      return;
+    }
+    vtkIdType cellId = 0;
+    for (int kind = 0; kind < 4; ++kind)
+    {
+      auto it = vtk::TakeSmartPointer(CellsOfKind(piece, kind)->NewIterator());
+      for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cellId)
+      {
+        vtkIdType n;
+        const vtkIdType* ids;
+        it->GetCurrentCell(n, ids);
+        Note(n, ids, points, cellId, index);
+      }
     }
   }
 
@@ -439,34 +476,42 @@ bool OverlayStitchGatherInput(vtkMultiProcessController* controller, vtkPolyData
   vtkSmartPointer<vtkPolyData>& gathered, OverlayStitchGatherSummary* summary)
 {
   const int ranks = controller ? controller->GetNumberOfProcesses() : 1;
+  // This rank's piece, without the cells that are ghost copies of another
+  // piece's: in a serial run too, so that it meshes what a parallel one does.
+  vtkSmartPointer<vtkPolyData> local = input;
+  if (!input)
+  {
+    local = vtkSmartPointer<vtkPolyData>::New();
+  }
+  else if (input->GetCellData()->GetArray(vtkDataSetAttributes::GhostArrayName()))
+  {
+    local = vtkSmartPointer<vtkPolyData>::New();
+    local->ShallowCopy(input);
+    local->RemoveGhostCells();
+    // RemoveGhostCells() may drop the field data (ParaView 5.11's VTK does): keep
+    // the hole seeds.
+    local->GetFieldData()->ShallowCopy(input->GetFieldData());
+  }
   if (ranks <= 1)
   {
-    gathered = input;
+    gathered = input ? local : nullptr;
     if (summary)
     {
       *summary = OverlayStitchGatherSummary();
-      summary->CellsPerRank.assign(1, input ? input->GetNumberOfCells() : 0);
+      summary->CellsPerRank.assign(1, local->GetNumberOfCells());
+      // Combining pieces finds cells naming missing points; a single input is
+      // checked here, so that such a cell is refused in every case alike.
+      InvalidCells invalid{ nullptr };
+      invalid.NoteCells(local, 0);
+      summary->InvalidCells = invalid.Count;
+      summary->FirstInvalidCell = invalid.First;
     }
     return true;
   }
 
-  // This rank's piece, without the cells that are ghost copies of another rank's.
-  vtkNew<vtkPolyData> local;
-  if (input)
-  {
-    local->ShallowCopy(input);
-    if (local->GetCellData()->GetArray(vtkDataSetAttributes::GhostArrayName()))
-    {
-      local->RemoveGhostCells();
-      // RemoveGhostCells() may drop the field data (ParaView 5.11's VTK does): keep
-      // the hole seeds.
-      local->GetFieldData()->ShallowCopy(input->GetFieldData());
-    }
-  }
-
   // The one collective call: every rank reaches it, whatever its input.
   std::vector<vtkSmartPointer<vtkDataObject>> pieces;
-  const int status = controller->Gather(local.Get(), pieces, 0);
+  const int status = controller->Gather(local, pieces, 0);
   if (controller->GetLocalProcessId() != 0)
   {
     return false;

@@ -62,7 +62,9 @@ struct OverlayStitchGatherSummary
 /// input (a null input counts as an empty piece). Returns true on the rank
 /// that must mesh, with `gathered` set to the whole input (or to null if the
 /// communication failed), and false on every other rank. With no controller or
-/// a single process, `gathered` is `input` itself (no copy) and it returns true.
+/// a single process, `gathered` is `input` itself (no copy; a shallow copy
+/// without its ghost cells if it has any, as a parallel run drops them), the
+/// summary notes its cells that name missing points, and it returns true.
 bool OverlayStitchGatherInput(vtkMultiProcessController* controller, vtkPolyData* input,
   vtkSmartPointer<vtkPolyData>& gathered, OverlayStitchGatherSummary* summary = nullptr);
 

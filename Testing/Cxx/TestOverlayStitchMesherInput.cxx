@@ -22,6 +22,7 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCommand.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkIdList.h"
@@ -34,6 +35,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
@@ -711,6 +713,41 @@ int TestIgnoredCells()
 }
 
 //------------------------------------------------------------------------------
+/// A single polydata is read as a parallel run reads it (found by a review:
+/// serial runs kept ghost cells and took cells naming missing points).
+int TestSerialAsParallel()
+{
+  // A cell naming a point that does not exist is refused, naming it.
+  auto input = Square();
+  vtkNew<vtkCellArray> verts;
+  const vtkIdType missing[] = { 99 };
+  verts->InsertNextCell(1, missing);
+  input->SetVerts(verts);
+  Harness h;
+  vtkPolyData* mesh = h.Run(input, "a vertex cell naming point 99");
+  Check(h.Messages->HasError({ "cell 0 refers to point 99, but the input has 4 point(s)" }),
+    "the error names the cell and the point");
+  Check(mesh->GetNumberOfCells() == 0, "nothing is meshed");
+
+  // Cells marked as ghost copies of another piece's are left out, as the
+  // parallel gather leaves them out: a diagonal ghost line crosses nothing.
+  input = Square();
+  const vtkIdType diagonal[] = { 0, 2 };
+  input->GetLines()->InsertNextCell(2, diagonal);
+  vtkNew<vtkUnsignedCharArray> ghosts;
+  ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
+  ghosts->SetNumberOfTuples(input->GetNumberOfCells());
+  ghosts->FillValue(0);
+  ghosts->SetValue(input->GetNumberOfCells() - 1, vtkDataSetAttributes::DUPLICATECELL);
+  input->GetCellData()->AddArray(ghosts);
+  mesh = h.Run(input, "a ghost diagonal");
+  Check(h.NoError(), "no error");
+  Check(Statistic(mesh, "InputSegments") == 4,
+    "the ghost diagonal is not a segment (" + Num(Statistic(mesh, "InputSegments")) + " segments)");
+  return 0;
+}
+
+//------------------------------------------------------------------------------
 /// Records the progress events of an algorithm and may abort it.
 class ProgressRecorder : public vtkCommand
 {
@@ -1100,6 +1137,7 @@ int main(int argc, char* argv[])
     { "field-regions", TestFieldRegions },
     { "numbering", TestNumbering },
     { "ignored-cells", TestIgnoredCells },
+    { "serial-as-parallel", TestSerialAsParallel },
     { "progress", TestProgress },
     { "abort", [points] { return TestAbort(points); } },
     { "measure-big", [points] { return MeasureBig(points); } },
