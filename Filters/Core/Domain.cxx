@@ -310,6 +310,9 @@ Carving carveDomain(const Array<Point>& P, const Array<Triangle>& tris,
       if (a.nbr[t][0] < 0 || a.nbr[t][1] < 0 || a.nbr[t][2] < 0)
         removed[component[t]] = 1;
   Carving out;
+  out.enclosedNothing = removeExterior;
+  for (std::size_t t = 0; t < tris.size() && out.enclosedNothing; ++t)
+    out.enclosedNothing = removed[component[t]] != 0;
   // A few seeds are found faster by scanning than by building the grid.
   std::optional<TriangleGrid> grid;
   auto locate = [&](const Point& q) {

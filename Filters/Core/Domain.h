@@ -38,6 +38,9 @@ struct Carving
   /// Per region seed (carveDomain's regionSeeds): its region, or -1 if it lies
   /// outside the remaining triangles.
   Array<int> seedRegion;
+  /// Removing the exterior left no triangle (before any hole): the segments'
+  /// cycles enclose no area (collinear segments over each other).
+  bool enclosedNothing = false;
 };
 
 /// Up to this many hole seeds, carveDomain finds the triangle under each one

@@ -363,6 +363,8 @@ private:
   CleanPslg clean;
   int exponent = 0;
   std::string firstCrossing; ///< the first crossing split, for the warning
+  /// The auto domain found cycles of segments that enclose no area: hull.
+  bool enclosesNothing = false;
 };
 
 Result Mesher::execute()
@@ -453,7 +455,9 @@ Domain Mesher::chooseDomain(const Work& w, Array<int>& hull)
   hull.clear();
   Domain domain = options.domain;
   if (domain == Domain::Auto)
-    domain = segmentsEncloseRegion(w.points.size(), w.segments) ? Domain::Enclosed : Domain::Hull;
+    domain = !enclosesNothing && segmentsEncloseRegion(w.points.size(), w.segments)
+      ? Domain::Enclosed
+      : Domain::Hull;
   if (domain == Domain::Hull)
   {
     hull = hullBoundary(w.points);
@@ -474,6 +478,7 @@ void Mesher::meshRounds(Work& w)
   // repeat a few times, then give up with a clear error.
   for (int round = 0;; ++round)
   {
+    const std::size_t warningsBefore = res.warnings.size();
     Array<Segment> segments = w.segments;
     Array<int> hull;
     const Domain domain = chooseDomain(w, hull);
@@ -523,6 +528,9 @@ void Mesher::meshRounds(Work& w)
       res.warnings.push_back(
         "the input points are collinear, or within rounding of it, so their convex hull has no "
         "area at double precision: meshing the padded bounding box instead");
+    if (enclosesNothing)
+      res.warnings.push_back("the segments form cycles, but they enclose no area (collinear "
+                             "segments over each other): the auto domain meshes the convex hull");
     if (st.crossingsSplit > 0)
       res.warnings.push_back("split " + std::to_string(st.crossingsSplit) +
         " crossing(s) of input segments at their intersection points, e.g. " + firstCrossing);
@@ -562,6 +570,14 @@ void Mesher::meshRounds(Work& w)
     Carving carve = carveDomain(g.points, c.triangles, c.constrainedEdges, domain != Domain::Box,
       w.holes, std::move(g.intactAdjacency), w.regionSeeds, run);
     st.secondsDomain = since(t);
+    // A cycle of segments need not enclose any area: mesh the hull instead
+    // (once; this round's warnings come again).
+    if (options.domain == Domain::Auto && domain == Domain::Enclosed && carve.enclosedNothing)
+    {
+      res.warnings.resize(warningsBefore);
+      enclosesNothing = true;
+      continue;
+    }
     warnAboutRegionSeeds(carve);
     if (!carve.unusedHoles.empty())
       res.warnings.push_back(std::to_string(carve.unusedHoles.size()) +

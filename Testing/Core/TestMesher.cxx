@@ -736,6 +736,26 @@ TEST(Mesher, DegenerateHullsFallBackToTheBox)
   EXPECT_TRUE(mentions(r.warnings, "collinear"));
 }
 
+TEST(Mesher, CyclesEnclosingNoAreaFallBackToTheHull)
+{
+  // Found by an adversarial run: an open polyline and a segment lying over
+  // two of its pieces form a cycle, so the auto domain chose the enclosed
+  // one, which holds nothing: the mesh came out empty.
+  Pslg p;
+  p.points = { { 0, 0 }, { 1, 0 }, { 2, 0 }, { 1, 1 } };
+  p.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 0, 2 } };
+  const Result r = meshAndValidate(p, "collinear cycle");
+  EXPECT_NEAR(area(r.mesh), 1.0, 1e-12); // the hull: the triangle (0,0), (2,0), (1,1)
+  EXPECT_TRUE(mentions(r.warnings, "enclose no area"));
+  EXPECT_EQ(std::count(r.inputVertex.begin(), r.inputVertex.end(), -1), 0);
+  // Asked for explicitly, the enclosed domain stays empty, and says so.
+  Options enclosed;
+  enclosed.domain = Domain::Enclosed;
+  const Result e = mesh(p, enclosed);
+  EXPECT_TRUE(e.mesh.triangles.empty());
+  EXPECT_FALSE(mentions(e.warnings, "enclose no area"));
+}
+
 TEST(Mesher, HullsThinnerThanRoundingFallBackToTheBox)
 {
   // Found by an adversarial run: features 1e-15 high on a unit length lie
