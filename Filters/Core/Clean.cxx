@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <unordered_map>
 
 namespace osm
@@ -15,6 +16,18 @@ std::string formatPoint(const Point& p)
 {
   char buf[80];
   std::snprintf(buf, sizeof buf, "(%.17g, %.17g)", p.x, p.y);
+  return buf;
+}
+
+std::string formatNumber(double x)
+{
+  char buf[40];
+  for (int digits = 15; digits <= 17; ++digits)
+  {
+    std::snprintf(buf, sizeof buf, "%.*g", digits, x);
+    if (std::strtod(buf, nullptr) == x)
+      break;
+  }
   return buf;
 }
 

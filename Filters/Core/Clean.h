@@ -31,6 +31,10 @@ std::string cleanPslg(const Pslg& in, CleanPslg& out, Statistics& stats,
 /// "(x, y)" with enough digits to tell nearby points apart.
 std::string formatPoint(const Point& p);
 
+/// x with 15 significant digits, or 16 or 17 if it needs them to read back
+/// exactly ("30", "12.5", "1e-10", "0.33333333333333331").
+std::string formatNumber(double x);
+
 /// The point written by format, or by formatPoint when format is empty.
 inline std::string formatPoint(const Point& p, const PointFormat& format)
 {

@@ -376,9 +376,9 @@ Completion complete(PlanarGraph& g, Statistics& stats, RunContext& run)
     for (int v : face)
       polygon.push_back(g.points[v]);
     if (!triangulateMinMaxAngle(polygon, face, out.triangles, scratch))
-      throw Stop{ "internal error: a face with " + std::to_string(face.size()) + " sides near " +
-        std::to_string(polygon[0].x) + ", " + std::to_string(polygon[0].y) +
-        " could not be triangulated" };
+      throw Stop{ "internal error: a face with " + std::to_string(face.size()) +
+          " sides could not be triangulated",
+        true, polygon[0] };
   }
   return out;
 }

@@ -123,7 +123,7 @@ std::string normalise(
       const auto user = std::find(pointOf.begin(), pointOf.end(), static_cast<int>(i));
       return "point " + std::to_string(user - pointOf.begin()) + " at " +
         formatPoint(input.points[user - pointOf.begin()], format) +
-        " is too small next to the largest coordinate (" + std::to_string(maxAbs) +
+        " is too small next to the largest coordinate (" + formatNumber(maxAbs) +
         ") for exact arithmetic in double precision";
     }
   }
@@ -376,7 +376,7 @@ Result Mesher::execute()
   st.theta1Deg = options.minAngleDeg;
   if (!(options.minAngleDeg >= 1.0 && options.minAngleDeg <= 35.0))
     throw Stop{ "the overlay minimum angle must be between 1 and 35 degrees, not " +
-      std::to_string(options.minAngleDeg) };
+      formatNumber(options.minAngleDeg) };
   if (!(options.maxEdgeLength >= 0.0) || !std::isfinite(options.maxEdgeLength))
     throw Stop{ "the maximum edge length must be finite and at least 0" };
   st.gamma = gammaForMinAngle(options.minAngleDeg);
@@ -541,7 +541,7 @@ void Mesher::meshRounds(Work& w)
       res.warnings.push_back(std::to_string(overlay.refinementsSkipped) +
         " overlay refinement step(s) were skipped because a Steiner point fell on an existing "
         "vertex; the overlay may fall short of the angle " +
-        std::to_string(options.minAngleDeg) + " there");
+        formatNumber(options.minAngleDeg) + " degrees there");
     st.overlayTriangles = ov.tris.size();
 
     t = Clock::now();

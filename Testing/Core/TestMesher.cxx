@@ -2,6 +2,7 @@
 // determinism, caps and abort. The validator is the oracle throughout.
 #include "MeshTestUtils.h"
 
+#include "Clean.h"
 #include "Domain.h"
 #include "Predicates.h"
 
@@ -9,6 +10,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <numeric>
 #include <random>
 #include <utility>
@@ -206,6 +208,26 @@ TEST(Clean, MessagesWritePointsWithTheCallersFormat)
   EXPECT_FALSE(refused.ok);
   EXPECT_NE(refused.error.find("cross near [0.500000 0.500000]"), std::string::npos)
     << refused.error;
+}
+
+TEST(Clean, MessagesWriteNumbersAsTheyRead)
+{
+  // Found by an adversarial run: "(0.000000)" for a largest coordinate of 1e-10.
+  EXPECT_EQ(formatNumber(1e-10), "1e-10");
+  EXPECT_EQ(formatNumber(30), "30");
+  EXPECT_EQ(formatNumber(12.5), "12.5");
+  EXPECT_EQ(formatNumber(0.1), "0.1");
+  EXPECT_EQ(std::strtod(formatNumber(1.0 / 3).c_str(), nullptr), 1.0 / 3);
+  Pslg p;
+  p.points = { { 0, 0 }, { 1e-10, 0 }, { 1e-10, 1e-10 }, { 0, 1e-10 }, { 1e-80, 5e-11 } };
+  p.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 } };
+  const Result r = mesh(p);
+  EXPECT_FALSE(r.ok);
+  EXPECT_NE(r.error.find("too small next to the largest coordinate (1e-10)"), std::string::npos)
+    << r.error;
+  Options o;
+  o.minAngleDeg = 0.5;
+  EXPECT_NE(mesh(square(), o).error.find("between 1 and 35 degrees, not 0.5"), std::string::npos);
 }
 
 TEST(Clean, DropsZeroLengthSegments)
