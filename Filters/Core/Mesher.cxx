@@ -437,14 +437,55 @@ void limitRefinement(
   oo.limitRefinement = true;
   if (domain == Domain::Hull)
   {
-    oo.refineWithin = boundsOf(w.points);
+    oo.refineWithin = oo.sizeWithin = boundsOf(w.points);
     return;
   }
   Array<Point> ends;
   ends.reserve(2 * segments.size());
   for (const Segment& s : segments)
     ends.insert(ends.end(), { w.points[s[0]], w.points[s[1]] });
-  oo.refineWithin = boundsOf(ends);
+  oo.refineWithin = oo.sizeWithin = boundsOf(ends);
+  // The enclosed regions lie within the segments on cycles: segments hanging
+  // off them (a stray segment far away), which carving removes, need a
+  // quality overlay around them for stitching, but not the size bound.
+  // Prune vertices of degree 1 until none is left.
+  Array<int> degree(w.points.size(), 0);
+  for (const Segment& s : segments)
+    ++degree[s[0]], ++degree[s[1]];
+  Array<int> start(w.points.size() + 1, 0), incident(2 * segments.size());
+  for (std::size_t v = 0; v < w.points.size(); ++v)
+    start[v + 1] = start[v] + degree[v];
+  Array<int> fill(start.begin(), start.end() - 1);
+  for (std::size_t k = 0; k < segments.size(); ++k)
+    for (int v : segments[k])
+      incident[fill[v]++] = static_cast<int>(k);
+  Array<char> pruned(segments.size(), 0);
+  Array<int> leaves;
+  for (std::size_t v = 0; v < w.points.size(); ++v)
+    if (degree[v] == 1)
+      leaves.push_back(static_cast<int>(v));
+  while (!leaves.empty())
+  {
+    const int v = leaves.back();
+    leaves.pop_back();
+    for (int k = start[v]; k < start[v + 1]; ++k)
+    {
+      const int e = incident[k];
+      if (pruned[e])
+        continue;
+      pruned[e] = 1;
+      const int u = segments[e][0] == v ? segments[e][1] : segments[e][0];
+      if (--degree[u] == 1)
+        leaves.push_back(u);
+    }
+  }
+  Array<Point> onCycles;
+  for (std::size_t k = 0; k < segments.size(); ++k)
+    if (!pruned[k])
+      onCycles.insert(onCycles.end(), { w.points[segments[k][0]], w.points[segments[k][1]] });
+  // No cycle yet (segments that cross enclose regions once split): all of them.
+  if (!onCycles.empty())
+    oo.sizeWithin = boundsOf(onCycles);
 }
 
 /// Auto means the enclosed regions if the segments enclose any (decided on the

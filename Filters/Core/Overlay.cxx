@@ -145,6 +145,7 @@ public:
     , limited(options.limitRefinement)
     , beyondGuarantee(options.gamma < 1.0)
     , within(options.refineWithin)
+    , sizeWithin(options.sizeWithin)
   {}
 
   Overlay refine();
@@ -192,6 +193,7 @@ private:
   const bool limited;
   const bool beyondGuarantee; ///< Γ below 1 (θ1 above 30 degrees): refinement need not end
   const Bounds within;
+  const Bounds sizeWithin;
 
   Overlay out;
   Triangulation& mesh = out.mesh;
@@ -249,7 +251,8 @@ void Refiner::enqueueIfNeeded(int t)
   if (mesh.tri[t].info < 0)
   {
     const double la = dist2(b, c), lb = dist2(a, c), lc = dist2(a, b);
-    const bool tooLong = maxEdge > 0 && std::max({ la, lb, lc }) > maxEdge2;
+    const bool tooLong = maxEdge > 0 && std::max({ la, lb, lc }) > maxEdge2 &&
+      !(limited && outside(a, b, c, sizeWithin));
     if (!tooLong && o.x * o.x + o.y * o.y <= gamma2 * std::min({ la, lb, lc }))
       return;
     // Poor, but beyond the bounds where output can be: leave it (tested only
@@ -369,8 +372,8 @@ double Refiner::pointsForMaxEdge() const
   double w = mesh.points[2].x - mesh.points[0].x, h = mesh.points[2].y - mesh.points[0].y;
   if (limited)
   {
-    w = std::min(w, within.width() + 2 * maxEdge);
-    h = std::min(h, within.height() + 2 * maxEdge);
+    w = std::min(w, sizeWithin.width() + 2 * maxEdge);
+    h = std::min(h, sizeWithin.height() + 2 * maxEdge);
   }
   return w * h / (0.8660254037844386 * maxEdge * maxEdge);
 }

@@ -25,6 +25,10 @@ struct OverlayOptions
   /// from it). Off: every triangle of the box is refined.
   bool limitRefinement = false;
   Bounds refineWithin;
+  /// With limitRefinement, the maximum edge length applies to the triangles
+  /// that meet these bounds (within refineWithin: where output can be);
+  /// beyond them only quality counts.
+  Bounds sizeWithin;
 };
 
 struct Overlay

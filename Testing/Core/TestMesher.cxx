@@ -778,6 +778,30 @@ TEST(Mesher, CyclesEnclosingNoAreaFallBackToTheHull)
   EXPECT_FALSE(mentions(e.warnings, "enclose no area"));
 }
 
+TEST(Mesher, SizeBoundStopsAtTheEnclosedRegions)
+{
+  // Found by an adversarial run: one stray segment at (30, 30) made the size
+  // bound refine the whole box of the segments (46 s and 4.3 GB at 0.01 for
+  // a unit square), though carving removes everything out there.
+  Options o;
+  o.maxEdgeLength = 0.1;
+  const Result alone = meshAndValidate(square(), "square", o);
+  Pslg stray = square();
+  stray.points.push_back({ 30, 30 });
+  stray.points.push_back({ 31, 30 });
+  stray.segments.push_back({ 4, 5 });
+  const Result r = meshAndValidate(stray, "square and a stray segment", o);
+  EXPECT_LT(r.stats.overlayTriangles, 3 * alone.stats.overlayTriangles)
+    << alone.stats.overlayTriangles;
+  EXPECT_NEAR(area(r.mesh), 1.0, 1e-12);
+  double longest = 0;
+  for (const Triangle& t : r.mesh.triangles)
+    for (int i = 0; i < 3; ++i)
+      longest =
+        std::max(longest, std::sqrt(dist2(r.mesh.vertices[t[i]], r.mesh.vertices[t[(i + 1) % 3]])));
+  EXPECT_LE(longest, 0.1);
+}
+
 TEST(Mesher, HullsThinnerThanRoundingFallBackToTheBox)
 {
   // Found by an adversarial run: features 1e-15 high on a unit length lie
