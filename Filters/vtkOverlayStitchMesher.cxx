@@ -666,6 +666,13 @@ void vtkOverlayStitchMesher::AddHolePoint(double x, double y)
 }
 
 //------------------------------------------------------------------------------
+void vtkOverlayStitchMesher::AddHolePointCoordinate(double value)
+{
+  this->HolePoints.push_back(value);
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
 void vtkOverlayStitchMesher::RemoveAllHolePoints()
 {
   if (!this->HolePoints.empty())
@@ -831,6 +838,12 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
       << ", names no single point; give hole seeds as the input's field data HolePoints "
          "with 3 components (x, y, z).");
     return 1;
+  }
+  if (this->HolePoints.size() % 2 != 0)
+  {
+    vtkWarningMacro(<< "HolePoints has an odd number of values (" << this->HolePoints.size()
+                    << "): seeds are (x, y) pairs, and the last value, " << this->HolePoints.back()
+                    << ", has no y; it is ignored.");
   }
   for (std::size_t i = 0; i + 1 < this->HolePoints.size(); i += 2)
   {

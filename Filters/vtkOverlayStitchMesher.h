@@ -200,9 +200,12 @@ public:
   /**
    * Hole seed points (x, y): the region bounded by segments that contains a
    * seed is removed from the output, like the holes of Triangle's .poly files.
-   * See also UseInputHolePoints.
+   * See also UseInputHolePoints. AddHolePointCoordinate appends one value
+   * (x, then y: ParaView's HolePoints property passes them one by one, so
+   * that a list of odd length is seen, and said in a warning, not cut short).
    */
   void AddHolePoint(double x, double y);
+  void AddHolePointCoordinate(double value);
   void RemoveAllHolePoints();
   int GetNumberOfHolePoints() const;
   void GetHolePoint(int i, double point[2]) const;

@@ -212,6 +212,26 @@ def test_poly_with_hole(data_dir):
     Delete(reader)
 
 
+def test_hole_points_property(data_dir):
+    """HolePoints: pairs cut holes; a value without its pair is said, not dropped silently."""
+    path = os.path.join(data_dir, "square_hole.poly")
+    if "TrianglePolyReader" not in globals():
+        print("skipped: the plugin has no TrianglePolyReader")
+        return
+    reader = TrianglePolyReader(FileName=path)
+    mesher = OverlayStitchMesher(Input=reader, UseInputHolePoints=0, HolePoints=[5.0, 5.0])
+    mesh = mesh_of(mesher)
+    check(abs(area3d(mesh) - 96.0) < 1e-9, "HolePoints=[5, 5] cuts the hole")
+    errors = []
+    mesher.HolePoints = [5.0, 5.0, 2.5]
+    mesh = mesh_of(mesher, errors)
+    check("odd number of values (3)" in errors[0] and "2.5" in errors[0],
+          "HolePoints of odd length: a warning names the lone value")
+    check(abs(area3d(mesh) - 96.0) < 1e-9, "HolePoints of odd length: the pair still cuts the hole")
+    Delete(mesher)
+    Delete(reader)
+
+
 def main(plugin, data_dir, scratch):
     os.makedirs(scratch, exist_ok=True)
     LoadPlugin(plugin, remote=False, ns=globals())
@@ -229,6 +249,7 @@ def main(plugin, data_dir, scratch):
     test_non_coplanar(scratch)
     test_merge_tolerance(scratch)
     test_poly_with_hole(data_dir)
+    test_hole_points_property(data_dir)
     print("%d failure(s)" % len(failures))
     return 1 if failures else 0
 
