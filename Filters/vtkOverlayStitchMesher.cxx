@@ -183,11 +183,11 @@ struct SegmentSource
   vtkIdType B;
 };
 
-/// Whether a message names a point, segment, cell or hole by its number
-/// ("point 4", "segment 12"), as opposed to counting them ("3 point(s)").
+/// Whether a message names a point, segment, cell, hole or region by its
+/// number ("point 4", "segment 12"), as opposed to counting them ("3 point(s)").
 bool NamesNumberedItems(const std::string& message)
 {
-  for (const char* word : { "point ", "segment ", "cell ", "hole " })
+  for (const char* word : { "point ", "segment ", "cell ", "hole ", "region " })
   {
     for (std::size_t at = message.find(word); at != std::string::npos;
          at = message.find(word, at + 1))
@@ -209,7 +209,8 @@ std::string NumberingNote(vtkPolyData* input)
 {
   vtkDataArray* first = input->GetFieldData()->GetArray("FileFirstIndex");
   return first && first->GetNumberOfTuples() == 1 && first->GetComponent(0, 0) == 1.0
-    ? " (point, segment and cell numbers in this message count from 0; the input counts from 1)"
+    ? " (numbers of points, segments, cells, holes and regions in this message count from 0; "
+      "the input counts from 1)"
     : "";
 }
 
@@ -218,12 +219,12 @@ std::string Numbered(const std::string& message, const std::string& note)
   return NamesNumberedItems(message) ? message + note : message;
 }
 
-/// The core names segments by their index in the PSLG ("input segment 7"):
-/// append which cell and points each named segment is.
-std::string ExplainSegments(const std::string& text, const osm::Array<SegmentSource>& sources)
+/// The distinct numbers below `count` that text names after `word` ("segment
+/// 7"), in order, at most 4.
+std::vector<std::size_t> NamedNumbers(
+  const std::string& text, const std::string& word, std::size_t count)
 {
   std::vector<std::size_t> named;
-  const std::string word = "segment ";
   for (std::size_t at = text.find(word); at != std::string::npos; at = text.find(word, at + 1))
   {
     std::size_t end = at + word.size();
@@ -234,12 +235,48 @@ std::string ExplainSegments(const std::string& text, const osm::Array<SegmentSou
       index = index * 10 + static_cast<std::size_t>(text[end++] - '0');
       digits = true;
     }
-    if (digits && index < sources.size() &&
-      std::find(named.begin(), named.end(), index) == named.end() && named.size() < 4)
+    if (digits && index < count && std::find(named.begin(), named.end(), index) == named.end() &&
+      named.size() < 4)
     {
       named.push_back(index);
     }
   }
+  return named;
+}
+
+/// The core numbers hole seeds in the order the filter passes them: the
+/// HolePoints property's first, then the input's. With both kinds, append
+/// which one each named hole is.
+std::string ExplainHoles(const std::string& text, std::size_t propertySeeds, std::size_t seeds)
+{
+  const std::vector<std::size_t> named = NamedNumbers(text, "hole ", seeds);
+  if (propertySeeds == 0 || named.empty())
+  {
+    return text;
+  }
+  std::ostringstream out;
+  out << text << " [";
+  for (std::size_t k = 0; k < named.size(); ++k)
+  {
+    out << (k ? "; " : "") << "hole " << named[k] << " is seed ";
+    if (named[k] < propertySeeds)
+    {
+      out << named[k] << " of the HolePoints property";
+    }
+    else
+    {
+      out << named[k] - propertySeeds << " of the input's field data HolePoints";
+    }
+  }
+  out << "]";
+  return out.str();
+}
+
+/// The core names segments by their index in the PSLG ("input segment 7"):
+/// append which cell and points each named segment is.
+std::string ExplainSegments(const std::string& text, const osm::Array<SegmentSource>& sources)
+{
+  const std::vector<std::size_t> named = NamedNumbers(text, "segment ", sources.size());
   if (named.empty())
   {
     return text;
@@ -928,14 +965,18 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
     return 1;
   }
 
+  // Which cells the named segments are, and which seeds the named holes.
+  const std::size_t propertySeeds = this->HolePoints.size() / 2;
+  auto explain = [&](const std::string& text) {
+    return ExplainHoles(ExplainSegments(text, segmentSources), propertySeeds, pslg.holes.size());
+  };
   for (const std::string& warning : result.warnings)
   {
-    vtkWarningMacro(<< Numbered(ExplainSegments(warning, segmentSources), numbering));
+    vtkWarningMacro(<< Numbered(explain(warning), numbering));
   }
   if (!result.ok)
   {
-    vtkErrorMacro(
-      "Meshing failed: " << Numbered(ExplainSegments(result.error, segmentSources), numbering));
+    vtkErrorMacro("Meshing failed: " << Numbered(explain(result.error), numbering));
     return 1;
   }
 

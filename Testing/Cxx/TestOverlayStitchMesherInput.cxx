@@ -454,10 +454,33 @@ int TestNumbering()
   first->InsertNextValue(1);
   input->GetFieldData()->AddArray(first);
   h.Run(input, "a repeated point, FileFirstIndex 1");
-  Check(h.Messages->HasWarning({ "point 4",
-          "(point, segment and cell numbers in this message count from 0; the input counts "
-          "from 1)" }),
+  const std::string note =
+    "(numbers of points, segments, cells, holes and regions in this message count from 0; the "
+    "input counts from 1)";
+  Check(h.Messages->HasWarning({ "point 4", note }),
     "with FileFirstIndex 1 (a .poly counting from 1) the warning says how it counts");
+
+  // Regions and holes too (found by a review: regions had no note, and a
+  // property seed was numbered as if it were the file's).
+  input =
+    MakeLines({ { 0, 0, 0 }, { 10, 0, 0 }, { 10, 10, 0 }, { 0, 10, 0 } }, { { 0, 1, 2, 3, 0 } });
+  input->GetFieldData()->AddArray(first);
+  AddFieldRegions(input, 4, { 5, 5, 1, -1, 50, 50, 2, -1 });
+  h.Run(input, "a region seed outside, FileFirstIndex 1");
+  Check(h.Messages->HasWarning({ "e.g. region 1 at (50, 50)", note }),
+    "a region seed outside the domain is named with the numbering note");
+  AddFieldHoles(input, { { 60, 60, 0 } });
+  h.Mesher->AddHolePoint(70, 70);
+  h.Run(input, "a property hole and a field data hole outside");
+  Check(h.Messages->HasWarning(
+          { "e.g. hole 0 at (70, 70)", "[hole 0 is seed 0 of the HolePoints property]" }),
+    "a hole seed is said to come from the HolePoints property");
+  h.Mesher->RemoveAllHolePoints();
+  h.Mesher->AddHolePoint(5, 5);
+  h.Run(input, "a property hole inside, a field data hole outside");
+  Check(h.Messages->HasWarning(
+          { "e.g. hole 1 at (60, 60)", "[hole 1 is seed 0 of the input's field data HolePoints]" }),
+    "a field data hole seed is numbered among the input's seeds");
   return 0;
 }
 
