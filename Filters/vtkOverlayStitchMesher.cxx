@@ -273,8 +273,12 @@ std::string ExplainHoles(const std::string& text, std::size_t propertySeeds, std
 }
 
 /// The core names segments by their index in the PSLG ("input segment 7"):
-/// append which cell and points each named segment is.
-std::string ExplainSegments(const std::string& text, const osm::Array<SegmentSource>& sources)
+/// append which cell and points each named segment is. In a combined input
+/// (the blocks of a composite, the pieces of a parallel run) cell and point
+/// ids count through the combination, not through any block the user sees:
+/// there the segment's ends are given by their coordinates instead.
+std::string ExplainSegments(const std::string& text, const osm::Array<SegmentSource>& sources,
+  vtkPolyData* input, bool combined)
 {
   const std::vector<std::size_t> named = NamedNumbers(text, "segment ", sources.size());
   if (named.empty())
@@ -286,8 +290,19 @@ std::string ExplainSegments(const std::string& text, const osm::Array<SegmentSou
   for (std::size_t k = 0; k < named.size(); ++k)
   {
     const SegmentSource& source = sources[named[k]];
-    out << (k ? "; " : "") << "segment " << named[k] << " is cell " << source.Cell << " from point "
-        << source.A << " to point " << source.B;
+    out << (k ? "; " : "") << "segment " << named[k];
+    if (combined)
+    {
+      double a[3], b[3];
+      input->GetPoint(source.A, a);
+      input->GetPoint(source.B, b);
+      out << " runs from " << osm::formatPoint3({ a[0], a[1], a[2] }) << " to "
+          << osm::formatPoint3({ b[0], b[1], b[2] });
+    }
+    else
+    {
+      out << " is cell " << source.Cell << " from point " << source.A << " to point " << source.B;
+    }
   }
   out << "]";
   return out.str();
@@ -833,7 +848,13 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   {
     inputError = map.choose(points, this->ProjectToXYPlane != 0);
   }
-  const std::string numbering = NumberingNote(input);
+  // Composite blocks and the pieces of a parallel run are meshed as one
+  // combined input, whose numbers are not any single block's.
+  const bool combined = vtkCompositeDataSet::SafeDownCast(inputObject) || gather.Ranks > 1;
+  const std::string numbering = combined
+    ? " (numbers of points, segments and cells in this message count through the combined "
+      "input: every polydata block, or every rank's piece, in turn)"
+    : NumberingNote(input);
   if (!inputError.empty())
   {
     vtkErrorMacro("Cannot mesh the input: " << Numbered(inputError, numbering));
@@ -968,7 +989,8 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   // Which cells the named segments are, and which seeds the named holes.
   const std::size_t propertySeeds = this->HolePoints.size() / 2;
   auto explain = [&](const std::string& text) {
-    return ExplainHoles(ExplainSegments(text, segmentSources), propertySeeds, pslg.holes.size());
+    return ExplainHoles(
+      ExplainSegments(text, segmentSources, input, combined), propertySeeds, pslg.holes.size());
   };
   for (const std::string& warning : result.warnings)
   {

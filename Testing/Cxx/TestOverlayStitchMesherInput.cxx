@@ -692,6 +692,24 @@ int TestComposite()
             "1 cell(s) refer to points that do not exist" }) &&
       osmtest::AllOutputsEmpty(invalid.Mesher),
     "a block's cell naming a point it lacks: an error with the block's ids, empty outputs");
+
+  // Segments of a combined input are named by their ends, not by cell ids
+  // that count through the combination (found by a review: "cell 2" was
+  // another block's vertex).
+  auto crossing = MakeLines({ { 5, -1, 0 }, { 5, 11, 0 } }, { { 0, 1 } });
+  vtkNew<vtkMultiBlockDataSet> crossed;
+  crossed->SetNumberOfBlocks(2);
+  crossed->SetBlock(0, outer);
+  crossed->SetBlock(1, crossing);
+  Harness named;
+  named.Mesher->SetResolveIntersections(0);
+  named.Mesher->SetInputData(crossed);
+  named.Mesher->Update();
+  named.Messages->Print("crossing blocks");
+  Check(named.Messages->HasError(
+          { "segment 4 runs from (5, -1, 0) to (5, 11, 0)", "count through the combined input" }) &&
+      !named.Messages->HasError({ "is cell" }),
+    "a crossing in a multiblock names the segments by their ends");
   return 0;
 }
 
