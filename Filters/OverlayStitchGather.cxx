@@ -139,26 +139,18 @@ struct InvalidCells
       }
       inRange = range[0] >= 0 && range[1] < static_cast<double>(points);
     }
-    if (inRange)
+    if (!inRange)
     {
-      return;
-    }
-    vtkIdType cellId = 0;
-    for (int kind = 0; kind < 4; ++kind)
-    {
-      auto it = vtk::TakeSmartPointer(CellsOfKind(piece, kind)->NewIterator());
-      for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cellId)
-      {
-        vtkIdType n;
-        const vtkIdType* ids;
-        it->GetCurrentCell(n, ids);
-        Note(n, ids, points, cellId, index);
-      }
+      NoteAgainst(piece, points, index);
     }
   }
 
   /// Notes every cell of a piece that has no points.
-  void NotePiecesCells(vtkPolyData* piece, std::size_t index)
+  void NotePiecesCells(vtkPolyData* piece, std::size_t index) { NoteAgainst(piece, 0, index); }
+
+private:
+  /// Notes each cell of piece, in cell id order, as if it had `points` points.
+  void NoteAgainst(vtkPolyData* piece, vtkIdType points, std::size_t index)
   {
     vtkIdType cellId = 0;
     for (int kind = 0; kind < 4; ++kind)
@@ -169,7 +161,7 @@ struct InvalidCells
         vtkIdType n;
         const vtkIdType* ids;
         it->GetCurrentCell(n, ids);
-        Note(n, ids, 0, cellId, index);
+        Note(n, ids, points, cellId, index);
       }
     }
   }

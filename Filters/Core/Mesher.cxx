@@ -414,6 +414,16 @@ Result Mesher::execute()
   }
   catch (Stop& stop)
   {
+    // Name the segments at fault as the user numbers them.
+    std::string names;
+    for (int s : stop.segments)
+      if (s >= 0)
+        names += (names.empty() ? "" : " and ") +
+          (s < static_cast<int>(w.segments.size())
+              ? "input segment " + std::to_string(w.segmentOrigin[s])
+              : std::string("an edge of the convex hull"));
+    if (!names.empty())
+      stop.reason += " (" + names + ")";
     if (stop.located)
       stop.reason += " near " +
         formatPoint({ std::ldexp(stop.at.x, exponent), std::ldexp(stop.at.y, exponent) },

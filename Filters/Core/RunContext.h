@@ -4,6 +4,7 @@
 
 #include "Mesher.h"
 
+#include <array>
 #include <string>
 
 namespace osm
@@ -15,6 +16,8 @@ struct Stop
   std::string reason;
   bool located = false; ///< at is where, in the core's scaled coordinates
   Point at;
+  /// The segments at fault (indices of the round's segments), -1 for none.
+  std::array<int, 2> segments{ -1, -1 };
 };
 
 class RunContext

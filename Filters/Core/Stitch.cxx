@@ -687,23 +687,29 @@ PlanarGraph stitch(OverlayEdges ov, Array<Point> points, const Array<char>& isIn
       ++stats.keptEdges;
       edgeFlags |= EdgeKept | EdgeCrossed;
       int prev = ends[0];
+      int prevSegment = -1; // the segment of the crossing at prev, if any
       for (std::size_t k = first; k < next; ++k)
       {
         const Crossing& c = walk.crossings[order[k]];
         if (walk.pieces[c.piece].duplicate)
           continue;
+        const int segment = walk.pieces[c.piece].segment;
         if (!c.resolved)
           throw Stop{ "a segment passes input points closer together than double precision "
                       "resolves at the coordinates of both its ends (features below about "
                       "1e-14 of them)",
-            true, c.p };
+            true, c.p, { segment, -1 } };
         // Crossings within rounding of each other (or of the edge's ends) cannot
         // be told apart: the segments meet at an angle below double precision.
-        if (tooClose(c.p, g.points[prev], edgeLength) ||
-          tooClose(c.p, g.points[ends[1]], edgeLength))
+        if (tooClose(c.p, g.points[prev], edgeLength))
           throw Stop{ "input segments come closer to each other than double precision can "
                       "separate",
-            true, c.p };
+            true, c.p, { segment, prevSegment } };
+        if (tooClose(c.p, g.points[ends[1]], edgeLength))
+          throw Stop{ "input segments come closer to each other than double precision can "
+                      "separate",
+            true, c.p, { segment, -1 } };
+        prevSegment = segment;
         const int v = static_cast<int>(g.points.size());
         g.points.push_back(c.p);
         g.origin.push_back(VertexOrigin::Stitch);

@@ -911,6 +911,23 @@ TEST(Mesher, RefusesCoordinatesNearTheDoubleLimit)
   EXPECT_NE(r.error.find("too large"), std::string::npos) << r.error;
 }
 
+TEST(Stitch, SegmentsTooCloseToSeparateAreNamed)
+{
+  // Found by an adversarial run: two segments from one point at an angle of
+  // about 1e-17 radians; the error said where, not which segments.
+  Pslg p;
+  p.points = { { -2, -2 }, { 2, -2 }, { 2, 2 }, { 0, 0 },
+    { 0.87436783513956173, -0.40765480799112014 }, { 0.66556452762658092, -0.31030484975697348 },
+    { 1.322594464831139, -0.61663063409095953 } };
+  p.segments = { { 3, 4 }, { 3, 5 } };
+  const Result r = mesh(p);
+  ASSERT_FALSE(r.ok);
+  EXPECT_NE(r.error.find("come closer to each other than double precision can separate (input "
+                         "segment 1 and input segment 0) near ("),
+    std::string::npos)
+    << r.error;
+}
+
 TEST(Stitch, TinyFeaturesNearTheOriginNextToHugeOnes)
 {
   // Found by fuzzing: coordinates 1e29 apart in magnitude once made the walk cycle.
@@ -919,8 +936,7 @@ TEST(Stitch, TinyFeaturesNearTheOriginNextToHugeOnes)
   // Their convex hull is a sliver 1e-29 wide: its edges cannot be told apart.
   const Result hull = mesh(p);
   if (!hull.ok)
-    EXPECT_NE(hull.error.find("double precision can separate near ("), std::string::npos)
-      << hull.error;
+    EXPECT_NE(hull.error.find("double precision can separate ("), std::string::npos) << hull.error;
   else
     meshAndValidate(p, "huge and tiny, hull");
   Options o;
