@@ -142,10 +142,17 @@ double along(const Work& w, int s, const Point& p)
   return (p.x - a.x) * (b.x - a.x) + (p.y - a.y) * (b.y - a.y);
 }
 
+/// Crossings this close, relative to a segment's length or coordinates, are
+/// one point (mergeNearCrossings).
+constexpr double kCrossingMerge = 1e-12;
+
 /// Per crossing, the member of its class (root[k], the class's smallest
 /// index) whose point lies nearest to every segment of the class: where the
 /// segments meet at a point that double precision holds (two axes and a
-/// diagonal through the origin), that point.
+/// diagonal through the origin), that point. A class whose best point lies
+/// further than kCrossingMerge of some segment's own scale from it is not
+/// merged (its crossings came close along a long segment, not close to the
+/// short ones): each of its crossings keeps its own point.
 Array<int> representatives(
   const Work& w, const Array<SegmentCrossing>& crossings, const Array<int>& root)
 {
@@ -163,13 +170,17 @@ Array<int> representatives(
       for (int s : { crossings[byClass[end]].a, crossings[byClass[end]].b })
         if (s < static_cast<int>(w.segments.size()))
           lines.push_back(s);
-    // The largest distance of p from the class's lines.
+    // The largest distance of p from the class's lines, each in units of
+    // the tolerance at that line's scale.
     auto offLines = [&](const Point& p) {
       double worst = 0;
       for (int s : lines)
       {
         const Point &a = w.points[w.segments[s][0]], &b = w.points[w.segments[s][1]];
-        worst = std::max(worst, std::fabs(orient2d(a, b, p)) / std::sqrt(dist2(a, b)));
+        const double length = std::sqrt(dist2(a, b));
+        const double tolerance =
+          kCrossingMerge * std::max({ length, std::fabs(p.x), std::fabs(p.y) });
+        worst = std::max(worst, std::fabs(orient2d(a, b, p)) / length / tolerance);
       }
       return worst;
     };
@@ -182,7 +193,7 @@ Array<int> representatives(
         chosenOff = off;
       }
     for (std::size_t j = i; j < end; ++j)
-      best[byClass[j]] = chosen;
+      best[byClass[j]] = chosenOff <= 1 ? chosen : byClass[j];
     i = end;
   }
   return best;
@@ -225,7 +236,7 @@ Array<int> mergeNearCrossings(const Work& w, const Array<SegmentCrossing>& cross
     const Point& p = crossings[cuts[i - 1].crossing].p;
     const Point& q = crossings[cuts[i].crossing].p;
     const Segment& s = w.segments[cuts[i].segment];
-    const double tolerance = 1e-12 *
+    const double tolerance = kCrossingMerge *
       std::max(
         { std::sqrt(dist2(w.points[s[0]], w.points[s[1]])), std::fabs(p.x), std::fabs(p.y) });
     if (dist2(p, q) <= tolerance * tolerance)

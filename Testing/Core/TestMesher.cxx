@@ -356,6 +356,23 @@ TEST(Clean, SegmentsThroughOnePointMeetAtOneVertex)
   }
 }
 
+TEST(Clean, CrossingsAreMergedOnlyWhereEverySegmentStaysStraight)
+{
+  // Found by the fuzzer: four segments from (1.5e9, 15) towards the origin
+  // cross short segments near (11, 1), 1e-7 apart along the long segment, a
+  // tiny fraction of its length but not of the short ones': merged, their
+  // point lay 1.5e-8 off a short segment, which then bent.
+  Pslg p;
+  p.points = { { 12, 12 }, { 1545787398.9374385, 15 }, { 11, 1 }, { 0, 0 }, { 0, 4 }, { 0, 0 },
+    { 0, 13 }, { 0, 1 }, { 13, 9 } };
+  p.segments = { { 0, 2 }, { 0, 0 }, { 1, 4 }, { 2, 2 }, { 7, 1 }, { 2, 8 }, { 8, 2 }, { 3, 3 },
+    { 6, 3 }, { 5, 2 }, { 1, 5 }, { 1, 8 } };
+  Options box;
+  box.domain = Domain::Box;
+  box.minAngleDeg = 22;
+  meshAndValidate(p, "long segments crossing short ones", box);
+}
+
 TEST(Clean, RefusesCrossingsWhenAskedTo)
 {
   Pslg p = square();
