@@ -142,17 +142,34 @@ double along(const Work& w, int s, const Point& p)
   return (p.x - a.x) * (b.x - a.x) + (p.y - a.y) * (b.y - a.y);
 }
 
-/// Crossings this close, relative to a segment's length or coordinates, are
-/// one point (mergeNearCrossings).
-constexpr double kCrossingMerge = 1e-12;
+/// Crossing points closer than this many units of the last place of their
+/// coordinates are one point (mergeNearCrossings). The overlay cannot keep
+/// input points that close apart (it resolves 64 units), so merging them only
+/// turns what would fail into a mesh.
+constexpr double kCrossingMergeUlps = 32;
 
-/// Per crossing, the member of its class (root[k], the class's smallest
-/// index) whose point lies nearest to every segment of the class: where the
-/// segments meet at a point that double precision holds (two axes and a
-/// diagonal through the origin), that point. A class whose best point lies
-/// further than kCrossingMerge of some segment's own scale from it is not
-/// merged (its crossings came close along a long segment, not close to the
-/// short ones): each of its crossings keeps its own point.
+/// The unit of the last place at p's scale.
+double ulpAt(const Point& p)
+{
+  return std::numeric_limits<double>::epsilon() * std::max(std::fabs(p.x), std::fabs(p.y));
+}
+
+/// Whether p can stand for a crossing on segment s: within a quarter of the
+/// merge distance of its line, and strictly inside it, away from its ends.
+bool onSegment(const Work& w, int s, const Point& p)
+{
+  const Point &a = w.points[w.segments[s][0]], &b = w.points[w.segments[s][1]];
+  const double length = std::sqrt(dist2(a, b));
+  const double t = ((p.x - a.x) * (b.x - a.x) + (p.y - a.y) * (b.y - a.y)) / (length * length);
+  const double margin = kCrossingMergeUlps * ulpAt(p) / length;
+  return std::fabs(orient2d(a, b, p)) / length <= kCrossingMergeUlps / 4 * ulpAt(p) && t > margin &&
+    t < 1 - margin;
+}
+
+/// Per crossing, the member of its class (root[k]) whose point serves the
+/// whole class: the first that lies on every segment of the class (onSegment).
+/// A class with no such point is not merged: each crossing keeps its own
+/// point, and what cannot be meshed is said as before.
 Array<int> representatives(
   const Work& w, const Array<SegmentCrossing>& crossings, const Array<int>& root)
 {
@@ -170,41 +187,26 @@ Array<int> representatives(
       for (int s : { crossings[byClass[end]].a, crossings[byClass[end]].b })
         if (s < static_cast<int>(w.segments.size()))
           lines.push_back(s);
-    // The largest distance of p from the class's lines, each in units of
-    // the tolerance at that line's scale.
-    auto offLines = [&](const Point& p) {
-      double worst = 0;
-      for (int s : lines)
-      {
-        const Point &a = w.points[w.segments[s][0]], &b = w.points[w.segments[s][1]];
-        const double length = std::sqrt(dist2(a, b));
-        const double tolerance =
-          kCrossingMerge * std::max({ length, std::fabs(p.x), std::fabs(p.y) });
-        worst = std::max(worst, std::fabs(orient2d(a, b, p)) / length / tolerance);
-      }
-      return worst;
-    };
-    int chosen = byClass[i];
-    double chosenOff = end - i > 1 ? offLines(crossings[chosen].p) : 0.0;
-    for (std::size_t j = i + 1; j < end; ++j)
-      if (const double off = offLines(crossings[byClass[j]].p); off < chosenOff)
-      {
+    int chosen = -1;
+    for (std::size_t j = i; j < end && chosen < 0 && end - i > 1; ++j)
+    {
+      const Point& p = crossings[byClass[j]].p;
+      if (std::all_of(lines.begin(), lines.end(), [&](int s) { return onSegment(w, s, p); }))
         chosen = byClass[j];
-        chosenOff = off;
-      }
+    }
     for (std::size_t j = i; j < end; ++j)
-      best[byClass[j]] = chosenOff <= 1 ? chosen : byClass[j];
+      best[byClass[j]] = chosen >= 0 ? chosen : byClass[j];
     i = end;
   }
   return best;
 }
 
 /// Per crossing, the crossing whose point it takes: crossings next to each
-/// other along a segment and within 1e-12 of its length or coordinates are
-/// one point. Three or more segments through one point (the medians of a
-/// triangle, roads at a junction) give a crossing per pair, rounded apart by
-/// a few units in the last place; kept apart, they would be features far
-/// below what double precision can mesh.
+/// other along a segment and closer than kCrossingMergeUlps are one point.
+/// Three or more segments through one point (the medians of a triangle, roads
+/// at a junction) give a crossing per pair, rounded apart by a few units in
+/// the last place; kept apart, they are features that no mesh in double
+/// precision can hold.
 Array<int> mergeNearCrossings(const Work& w, const Array<SegmentCrossing>& crossings)
 {
   Array<int> root(crossings.size());
@@ -235,13 +237,9 @@ Array<int> mergeNearCrossings(const Work& w, const Array<SegmentCrossing>& cross
       continue;
     const Point& p = crossings[cuts[i - 1].crossing].p;
     const Point& q = crossings[cuts[i].crossing].p;
-    const Segment& s = w.segments[cuts[i].segment];
-    const double tolerance = kCrossingMerge *
-      std::max(
-        { std::sqrt(dist2(w.points[s[0]], w.points[s[1]])), std::fabs(p.x), std::fabs(p.y) });
+    const double tolerance = kCrossingMergeUlps * std::max(ulpAt(p), ulpAt(q));
     if (dist2(p, q) <= tolerance * tolerance)
     {
-      // The smaller index is the root: the first crossing's point serves.
       const int a = find(cuts[i - 1].crossing), b = find(cuts[i].crossing);
       root[std::max(a, b)] = std::min(a, b);
     }
@@ -376,6 +374,10 @@ private:
   std::string firstCrossing; ///< the first crossing split, for the warning
   /// The auto domain found cycles of segments that enclose no area: hull.
   bool enclosesNothing = false;
+  /// The enclosed regions reached beyond the segments on cycles (closed by a
+  /// segment ending on another, which only the walk splits): the size bound
+  /// then applies within all the segments.
+  bool sizeEverywhere = false;
 };
 
 Result Mesher::execute()
@@ -450,8 +452,10 @@ Result Mesher::execute()
 /// bounds of the segments (Enclosed) or of the points (Hull): the overlay
 /// need not refine the box around them, which on small inputs is most of its
 /// triangles.
-void limitRefinement(
-  OverlayOptions& oo, Domain domain, const Work& w, const Array<Segment>& segments)
+/// sizeOnCycles: apply the size bound only within the segments on cycles
+/// (else within all of them, as quality refinement).
+void limitRefinement(OverlayOptions& oo, Domain domain, const Work& w,
+  const Array<Segment>& segments, bool sizeOnCycles)
 {
   if (domain == Domain::Box || (domain == Domain::Enclosed && segments.empty()))
     return;
@@ -466,6 +470,8 @@ void limitRefinement(
   for (const Segment& s : segments)
     ends.insert(ends.end(), { w.points[s[0]], w.points[s[1]] });
   oo.refineWithin = oo.sizeWithin = boundsOf(ends);
+  if (!sizeOnCycles || oo.maxEdgeLength == 0)
+    return;
   // The enclosed regions lie within the segments on cycles: segments hanging
   // off them (a stray segment far away), which carving removes, need a
   // quality overlay around them for stitching, but not the size bound.
@@ -507,6 +513,21 @@ void limitRefinement(
   // No cycle yet (segments that cross enclose regions once split): all of them.
   if (!onCycles.empty())
     oo.sizeWithin = boundsOf(onCycles);
+}
+
+/// Whether every vertex of a kept triangle (regionId >= 0) lies within b.
+bool keptWithin(const Array<Point>& points, const Array<Triangle>& triangles,
+  const Array<int>& regionId, const Bounds& b)
+{
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+    if (regionId[t] >= 0)
+      for (int v : triangles[t])
+      {
+        const Point& p = points[v];
+        if (p.x < b.lo.x || p.x > b.hi.x || p.y < b.lo.y || p.y > b.hi.y)
+          return false;
+      }
+  return true;
 }
 
 /// Auto means the enclosed regions if the segments enclose any (decided on the
@@ -556,7 +577,7 @@ void Mesher::meshRounds(Work& w)
     if (options.maxEdgeLength > 0 && oo.maxEdgeLength == 0)
       oo.maxEdgeLength = std::numeric_limits<double>::denorm_min();
     oo.maxSteinerPoints = options.maxSteinerPoints;
-    limitRefinement(oo, domain, w, segments);
+    limitRefinement(oo, domain, w, segments, !sizeEverywhere);
     Overlay overlay = buildOverlay(w.points, oo, run);
     st.secondsOverlay += since(t);
 
@@ -638,6 +659,15 @@ void Mesher::meshRounds(Work& w)
     {
       res.warnings.resize(warningsBefore);
       enclosesNothing = true;
+      continue;
+    }
+    // The size bound must cover every kept triangle: where a region closed
+    // by a T-junction reaches beyond it, mesh again with the bound everywhere.
+    if (oo.maxEdgeLength > 0 && domain == Domain::Enclosed && !sizeEverywhere &&
+      !keptWithin(g.points, c.triangles, carve.regionId, oo.sizeWithin))
+    {
+      res.warnings.resize(warningsBefore);
+      sizeEverywhere = true;
       continue;
     }
     warnAboutRegionSeeds(carve);
