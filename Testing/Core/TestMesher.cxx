@@ -50,6 +50,15 @@ double area(const TriMesh& m)
   return a;
 }
 
+double longestEdge(const TriMesh& m)
+{
+  double longest = 0;
+  for (const Triangle& t : m.triangles)
+    for (int i = 0; i < 3; ++i)
+      longest = std::max(longest, std::sqrt(dist2(m.vertices[t[i]], m.vertices[t[(i + 1) % 3]])));
+  return longest;
+}
+
 bool mentions(const std::vector<std::string>& warnings, const std::string& what)
 {
   for (const std::string& w : warnings)
@@ -830,12 +839,7 @@ TEST(Mesher, SizeBoundStopsAtTheEnclosedRegions)
   EXPECT_LT(r.stats.overlayTriangles, 3 * alone.stats.overlayTriangles)
     << alone.stats.overlayTriangles;
   EXPECT_NEAR(area(r.mesh), 1.0, 1e-12);
-  double longest = 0;
-  for (const Triangle& t : r.mesh.triangles)
-    for (int i = 0; i < 3; ++i)
-      longest =
-        std::max(longest, std::sqrt(dist2(r.mesh.vertices[t[i]], r.mesh.vertices[t[(i + 1) % 3]])));
-  EXPECT_LE(longest, 0.1);
+  EXPECT_LE(longestEdge(r.mesh), 0.1);
 }
 
 TEST(Mesher, SizeBoundCoversRegionsClosedByTJunctions)
@@ -850,12 +854,7 @@ TEST(Mesher, SizeBoundCoversRegionsClosedByTJunctions)
   o.maxEdgeLength = 0.1;
   const Result r = meshAndValidate(p, "T-junction region", o);
   EXPECT_NEAR(area(r.mesh), 3.0, 1e-12);
-  double longest = 0;
-  for (const Triangle& t : r.mesh.triangles)
-    for (int i = 0; i < 3; ++i)
-      longest =
-        std::max(longest, std::sqrt(dist2(r.mesh.vertices[t[i]], r.mesh.vertices[t[(i + 1) % 3]])));
-  EXPECT_LE(longest, 0.1);
+  EXPECT_LE(longestEdge(r.mesh), 0.1);
 }
 
 TEST(Mesher, HullsThinnerThanRoundingFallBackToTheBox)
