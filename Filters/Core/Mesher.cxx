@@ -134,7 +134,7 @@ std::string normalise(
   return {};
 }
 
-/// Where crossing c lies along segment s (a multiple of the projection).
+/// Where p lies along segment s (a multiple of its projection on it).
 double along(const Work& w, int s, const Point& p)
 {
   const Point& a = w.points[w.segments[s][0]];
