@@ -443,14 +443,14 @@ void Allocate(ArrayT* array, vtkIdType tuples)
 /// items, so that an abort is seen within milliseconds at any size.
 using Poll = std::function<bool(double)>;
 
-/// The part [a, b] of poll's range, for a sub-step.
+/// The part [a, b] of poll's range, for a sub-step (a copy of poll: it may outlive it).
 Poll Part(const Poll& poll, double a, double b)
 {
-  return [&poll, a, b](double fraction) { return poll(a + (b - a) * fraction); };
+  return [poll, a, b](double fraction) { return poll(a + (b - a) * fraction); };
 }
 
 /// Whether item i of n is one to poll at, and poll says stop.
-bool Stop(std::size_t i, std::size_t n, const Poll& poll)
+bool ShouldStop(std::size_t i, std::size_t n, const Poll& poll)
 {
   return (i & 0xffff) == 0xffff && poll(static_cast<double>(i) / static_cast<double>(n));
 }
@@ -468,7 +468,7 @@ vtkSmartPointer<vtkCellArray> FillCells(
   Id next = 0;
   for (std::size_t c = 0; c < numberOfCells; ++c)
   {
-    if (Stop(c, numberOfCells, poll))
+    if (ShouldStop(c, numberOfCells, poll))
     {
       return nullptr;
     }
@@ -508,7 +508,7 @@ vtkSmartPointer<vtkPoints> MakePoints(const osm::Array<osm::Point>& vertices,
   Allocate(coordinates.Get(), static_cast<vtkIdType>(vertices.size()));
   for (std::size_t i = 0; i < vertices.size(); ++i)
   {
-    if (Stop(i, vertices.size(), poll))
+    if (ShouldStop(i, vertices.size(), poll))
     {
       return nullptr;
     }
@@ -592,7 +592,8 @@ void FillMesh(
   const Poll arrays = Part(poll, 0.4, 1.0);
   for (vtkIdType t = 0; t < numberOfTriangles; ++t)
   {
-    if (Stop(static_cast<std::size_t>(t), static_cast<std::size_t>(numberOfTriangles), arrays))
+    if (ShouldStop(
+          static_cast<std::size_t>(t), static_cast<std::size_t>(numberOfTriangles), arrays))
     {
       return;
     }
@@ -659,7 +660,7 @@ void FillEdges(
   const Poll arrays = Part(poll, 0.5, 1.0);
   for (vtkIdType e = 0; e < numberOfEdges; ++e)
   {
-    if (Stop(static_cast<std::size_t>(e), static_cast<std::size_t>(numberOfEdges), arrays))
+    if (ShouldStop(static_cast<std::size_t>(e), static_cast<std::size_t>(numberOfEdges), arrays))
     {
       return;
     }

@@ -160,7 +160,7 @@ bool onSegment(const Work& w, int s, const Point& p)
 {
   const Point &a = w.points[w.segments[s][0]], &b = w.points[w.segments[s][1]];
   const double length = std::sqrt(dist2(a, b));
-  const double t = ((p.x - a.x) * (b.x - a.x) + (p.y - a.y) * (b.y - a.y)) / (length * length);
+  const double t = along(w, s, p) / (length * length);
   const double margin = kCrossingMergeUlps * ulpAt(p) / length;
   return std::fabs(orient2d(a, b, p)) / length <= kCrossingMergeUlps / 4 * ulpAt(p) && t > margin &&
     t < 1 - margin;
@@ -323,17 +323,21 @@ void mergeEqualPoints(Work& w)
   w.segmentOrigin = std::move(origin);
 }
 
+/// Segment s of a round (the input's, then the hull's) as the user numbers it.
+std::string segmentName(const Work& w, int s)
+{
+  return s < static_cast<int>(w.segments.size())
+    ? "input segment " + std::to_string(w.segmentOrigin[s])
+    : std::string("an edge of the convex hull");
+}
+
 /// "input segment A and input segment B cross near (x, y)", in user coordinates.
 std::string describeCrossing(
   const Work& w, const SegmentCrossing& c, int exponent, const PointFormat& format)
 {
   const Point p{ std::ldexp(c.p.x, exponent), std::ldexp(c.p.y, exponent) };
-  auto name = [&](int s) {
-    return s < static_cast<int>(w.segments.size())
-      ? "input segment " + std::to_string(w.segmentOrigin[s])
-      : std::string("an edge of the convex hull");
-  };
-  return name(c.a) + " and " + name(c.b) + " cross near " + formatPoint(p, format);
+  return segmentName(w, c.a) + " and " + segmentName(w, c.b) + " cross near " +
+    formatPoint(p, format);
 }
 
 std::string crossingError(
@@ -431,10 +435,7 @@ Result Mesher::execute()
     std::string names;
     for (int s : stop.segments)
       if (s >= 0)
-        names += (names.empty() ? "" : " and ") +
-          (s < static_cast<int>(w.segments.size())
-              ? "input segment " + std::to_string(w.segmentOrigin[s])
-              : std::string("an edge of the convex hull"));
+        names += (names.empty() ? "" : " and ") + segmentName(w, s);
     if (!names.empty())
       stop.reason += " (" + names + ")";
     if (stop.located)
@@ -446,6 +447,43 @@ Result Mesher::execute()
   st.secondsTotal = since(t0);
   res.ok = true;
   return std::move(res);
+}
+
+/// Per segment, whether it is on no cycle of the segment graph and on no path
+/// between cycles: what pruning vertices of degree 1 until none is left removes.
+Array<char> danglingSegments(std::size_t pointCount, const Array<Segment>& segments)
+{
+  Array<int> degree(pointCount, 0);
+  for (const Segment& s : segments)
+    ++degree[s[0]], ++degree[s[1]];
+  Array<int> start(pointCount + 1, 0), incident(2 * segments.size());
+  for (std::size_t v = 0; v < pointCount; ++v)
+    start[v + 1] = start[v] + degree[v];
+  Array<int> fill(start.begin(), start.end() - 1);
+  for (std::size_t k = 0; k < segments.size(); ++k)
+    for (int v : segments[k])
+      incident[fill[v]++] = static_cast<int>(k);
+  Array<char> pruned(segments.size(), 0);
+  Array<int> leaves;
+  for (std::size_t v = 0; v < pointCount; ++v)
+    if (degree[v] == 1)
+      leaves.push_back(static_cast<int>(v));
+  while (!leaves.empty())
+  {
+    const int v = leaves.back();
+    leaves.pop_back();
+    for (int k = start[v]; k < start[v + 1]; ++k)
+    {
+      const int e = incident[k];
+      if (pruned[e])
+        continue;
+      pruned[e] = 1;
+      const int u = segments[e][0] == v ? segments[e][1] : segments[e][0];
+      if (--degree[u] == 1)
+        leaves.push_back(u);
+    }
+  }
+  return pruned;
 }
 
 /// Only the domain's triangles are output, and the domain lies within the
@@ -475,37 +513,7 @@ void limitRefinement(OverlayOptions& oo, Domain domain, const Work& w,
   // The enclosed regions lie within the segments on cycles: segments hanging
   // off them (a stray segment far away), which carving removes, need a
   // quality overlay around them for stitching, but not the size bound.
-  // Prune vertices of degree 1 until none is left.
-  Array<int> degree(w.points.size(), 0);
-  for (const Segment& s : segments)
-    ++degree[s[0]], ++degree[s[1]];
-  Array<int> start(w.points.size() + 1, 0), incident(2 * segments.size());
-  for (std::size_t v = 0; v < w.points.size(); ++v)
-    start[v + 1] = start[v] + degree[v];
-  Array<int> fill(start.begin(), start.end() - 1);
-  for (std::size_t k = 0; k < segments.size(); ++k)
-    for (int v : segments[k])
-      incident[fill[v]++] = static_cast<int>(k);
-  Array<char> pruned(segments.size(), 0);
-  Array<int> leaves;
-  for (std::size_t v = 0; v < w.points.size(); ++v)
-    if (degree[v] == 1)
-      leaves.push_back(static_cast<int>(v));
-  while (!leaves.empty())
-  {
-    const int v = leaves.back();
-    leaves.pop_back();
-    for (int k = start[v]; k < start[v + 1]; ++k)
-    {
-      const int e = incident[k];
-      if (pruned[e])
-        continue;
-      pruned[e] = 1;
-      const int u = segments[e][0] == v ? segments[e][1] : segments[e][0];
-      if (--degree[u] == 1)
-        leaves.push_back(u);
-    }
-  }
+  const Array<char> pruned = danglingSegments(w.points.size(), segments);
   Array<Point> onCycles;
   for (std::size_t k = 0; k < segments.size(); ++k)
     if (!pruned[k])
