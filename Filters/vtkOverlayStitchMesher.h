@@ -41,8 +41,9 @@
  * The filter has three output ports:
  * - port 0 (Mesh): the conforming triangulation. Point data `VertexOrigin`
  *   (0 input vertex, 1 overlay Steiner point, 2 stitch point on a segment,
- *   3 other); cell data `MinAngle`, `MaxAngle` (degrees) and `RegionId`;
- *   field data: one single-value array per run statistic.
+ *   3 other: a crossing of input segments, or a point splitting a
+ *   completed edge longer than MaximumEdgeLength); cell data `MinAngle`, `MaxAngle` (degrees) and
+ * `RegionId`; field data: one single-value array per run statistic.
  * - port 1 (Edges): every overlay edge and every input subsegment as line
  *   cells, with cell data `Overlay`, `Kept`, `Discarded`, `Input` (0/1) and
  *   the categorical `EdgeClass` (0 uncrossed, 1 kept, 2 discarded, 3 input;
@@ -105,8 +106,10 @@ public:
 
   ///@{
   /**
-   * If greater than 0, overlay triangles with a longer edge are refined
-   * further. 0 (the default) means no limit.
+   * If greater than 0, no edge of the mesh is longer: overlay triangles with
+   * a longer edge are refined further, and the few longer diagonals that
+   * completion makes are split (a warning names any that cannot be). 0 (the
+   * default) means no limit.
    */
   vtkSetClampMacro(MaximumEdgeLength, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(MaximumEdgeLength, double);

@@ -81,8 +81,8 @@ INPUT                  Triangle .poly (holes honoured) or .node file, or
                        about 32.5 the refinement may not end)
   --gamma G            the overlay's radius/edge bound instead:
                        theta1 = asin(1/(2G)), G from 0.8717 to 28.65
-  --max-edge H         refine overlay triangles with an edge longer than H
-                       (default 0: no limit)
+  --max-edge H         no edge longer than H: refine the overlay, split the
+                       few longer completed edges (default 0: no limit)
   --no-resolve         crossing segments are an error (default: split them)
   --merge-tolerance D  merge points closer than D (default 0: exact duplicates)
   --max-steiner N      fail if more than N Steiner points are needed (0: no cap)

@@ -6,6 +6,7 @@
 #include "Complete.h"
 #include "Domain.h"
 #include "HugePages.h"
+#include "LongEdges.h"
 #include "Overlay.h"
 #include "Predicates.h"
 #include "RunContext.h"
@@ -367,6 +368,7 @@ private:
   void buildOutput(const Work& w, const PlanarGraph& g, Completion& c, Carving& carve,
     const Overlay& overlay, Array<Edge>& edges, Domain domain);
   void warnAboutRegionSeeds(const Carving& carve);
+  std::string longEdgesWarning(const LongEdges& split, double maxEdge) const;
   void assignRegionAttributes(const Carving& carve);
 
   const Pslg& input;
@@ -678,6 +680,16 @@ void Mesher::meshRounds(Work& w)
       sizeEverywhere = true;
       continue;
     }
+    const std::size_t graphPoints = g.points.size(); // the edges' vertices
+    if (oo.maxEdgeLength > 0)
+    {
+      run.phase("domain", 0.95, 0.96); // carved: long completed edges split
+      const LongEdges split = splitLongEdges(g.points, g.origin, c.triangles, carve.regionId,
+        c.constrainedEdges, oo.maxEdgeLength, st.predictedMaxAngleDeg, run);
+      st.longEdgesSplit = split.split;
+      if (split.remaining > 0)
+        res.warnings.push_back(longEdgesWarning(split, oo.maxEdgeLength));
+    }
     warnAboutRegionSeeds(carve);
     if (!carve.unusedHoles.empty())
       res.warnings.push_back(std::to_string(carve.unusedHoles.size()) +
@@ -703,10 +715,24 @@ void Mesher::meshRounds(Work& w)
         formatPoint(input.holes[carve.seedsOnSegments.front()], options.pointFormat) +
         ": the region on one side of it was removed, which side is not defined; move the "
         "point into the hole");
-    run.phase("domain", 0.95, 1.0); // carved: the output arrays
+    run.phase("domain", 0.96, 1.0); // the output arrays
     buildOutput(w, g, c, carve, overlay, edges, domain);
+    if (options.keepEdges) // points splitting long edges are on none of them
+      res.edgeVertices.resize(graphPoints);
     return;
   }
+}
+
+std::string Mesher::longEdgesWarning(const LongEdges& split, double maxEdge) const
+{
+  char ratio[32];
+  std::snprintf(ratio, sizeof ratio, "%.3g", split.longest / maxEdge);
+  return std::to_string(split.remaining) +
+    " triangle(s) keep an edge longer than the maximum edge length, up to " + ratio +
+    " times it, e.g. near " +
+    formatPoint(
+      { std::ldexp(split.at.x, exponent), std::ldexp(split.at.y, exponent) }, options.pointFormat) +
+    ": it lies on a segment, or splitting it would make an angle above the bound";
 }
 
 /// Region seeds that give no triangle an attribute, and area limits, which

@@ -27,7 +27,9 @@ struct Options
   /// θ1: the smallest angle of the overlay mesh, in degrees (Γ = 1 / (2 sin θ1)).
   /// 30° gives Γ = 1 and the bound 180° − θ2 ≈ 169.95°.
   double minAngleDeg = 30.0;
-  /// If > 0, overlay triangles with a longer edge are refined further.
+  /// If > 0, no output edge is longer: overlay triangles with a longer edge
+  /// are refined further, and the few longer diagonals that completion makes
+  /// are split (a warning names any that cannot be; LongEdges.h).
   double maxEdgeLength = 0.0;
   Domain domain = Domain::Auto;
   /// Split crossing segments at their intersection (true) or refuse them (false).
@@ -59,10 +61,10 @@ public:
 /// Where an output vertex comes from (values match the VertexOrigin array).
 enum class VertexOrigin : std::uint8_t
 {
-  Input = 0,   ///< an input vertex (or a crossing of two input segments, when split)
+  Input = 0,   ///< an input vertex
   Overlay = 1, ///< a Steiner point of the phase-1 overlay
   Stitch = 2,  ///< an intersection of an input segment with a kept overlay edge
-  Other = 3
+  Other = 3    ///< a crossing of input segments, or the point splitting a long completed edge
 };
 
 /// Bit flags of an edge in Result::edges.

@@ -28,6 +28,7 @@ std::vector<std::pair<std::string, double>> Statistics::items() const
     { "StitchVertices", n(stitchVertices) },
     { "FacesCompleted", n(facesCompleted) },
     { "LargestFace", n(largestFace) },
+    { "LongEdgesSplit", n(longEdgesSplit) },
     { "OutputVertices", n(outputVertices) },
     { "OutputTriangles", n(outputTriangles) },
     { "Regions", n(regions) },

@@ -38,6 +38,8 @@ struct Statistics
   // Phase 3: complete.
   std::size_t facesCompleted = 0; ///< non-triangular faces triangulated
   std::size_t largestFace = 0;    ///< most sides of a face (the paper's Lemma 1 says 6)
+  /// Completed edges longer than the maximum edge length, split (LongEdges.h).
+  std::size_t longEdgesSplit = 0;
   // Output.
   std::size_t outputVertices = 0;
   std::size_t outputTriangles = 0;

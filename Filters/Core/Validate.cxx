@@ -482,6 +482,37 @@ void measureAngles(
     });
 }
 
+/// Check 8: no edge longer than options.maxEdgeLength (squared lengths compared).
+void checkEdgeLengths(const Mesh& m, const ValidationOptions& options, Errors& errors)
+{
+  if (!(options.maxEdgeLength > 0))
+    return;
+  const double bound2 = options.maxEdgeLength * options.maxEdgeLength;
+  double longest2 = 0;
+  std::size_t worst = 0, tooLong = 0;
+  for (std::size_t t = 0; t < m.triangles.size(); ++t)
+  {
+    if (!m.usable[t])
+      continue;
+    const auto p = m.corners(t);
+    double l2 = 0;
+    for (int k = 0; k < 3; ++k)
+      l2 = std::max(l2, dist2(p[k], p[(k + 1) % 3]));
+    tooLong += l2 > bound2;
+    if (l2 > longest2)
+    {
+      longest2 = l2;
+      worst = t;
+    }
+  }
+  if (longest2 > bound2)
+    errors.add([&] {
+      return m.name(worst) + " has an edge of length " + num(std::sqrt(longest2)) + " > " +
+        num(options.maxEdgeLength) + " (" + std::to_string(tooLong) +
+        " triangle(s) exceed the maximum edge length)";
+    });
+}
+
 // ------------------------------------------------------------------------------ vertex fans
 
 /// The next corner counter-clockwise around the same vertex (across the edge to the corner's
@@ -978,7 +1009,9 @@ ValidationReport validate(const Pslg& input, const Array<Point>& vertices,
   {
     Pslg in = input;
     in.points = scaled(input.points, e);
-    ValidationReport r = validate(in, scaled(vertices, e), triangles, options);
+    ValidationOptions o = options;
+    o.maxEdgeLength = std::ldexp(options.maxEdgeLength, -e);
+    ValidationReport r = validate(in, scaled(vertices, e), triangles, o);
     if (!r.ok)
       r.errors.push_back("(coordinates in these messages are scaled by 2^" + std::to_string(-e) +
         " for exact arithmetic)");
@@ -993,6 +1026,7 @@ ValidationReport validate(const Pslg& input, const Array<Point>& vertices,
   buildCorners(m);
   checkEdges(m, errors);                     // 3
   measureAngles(m, options, report, errors); // 7, and the angles that 4a sums
+  checkEdgeLengths(m, options, errors);      // 8
   checkFans(m, errors);                      // 4a
   checkCover(m, options, errors);            // 4b, 4c, 4d
   const VertexMap map = mapVertices(m, errors);

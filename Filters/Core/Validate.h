@@ -15,6 +15,7 @@ namespace osm
 struct ValidationOptions
 {
   double maxAngleDeg = 170.0; ///< every angle must be at most this
+  double maxEdgeLength = 0.0; ///< if > 0, every edge must be at most this long
   /// Require the triangles to cover the whole region enclosed by their boundary
   /// without overlap. Brute-force pairwise overlap check up to this many triangles.
   std::size_t bruteForceOverlapLimit = 3000;
@@ -40,7 +41,8 @@ struct ValidationReport
 /// Checks, strictly and independently of the mesher: index validity, exact positive
 /// orientation, manifold and consistently oriented edges, a non-overlapping cover (vertex fans,
 /// boundary edges, vertices inside triangles, pairwise overlap for small meshes), no coincident
-/// mesh vertices, input points present, input segments conforming, and the angle bound.
+/// mesh vertices, input points present, input segments conforming, the angle bound, and the
+/// edge length bound if one is given.
 /// O(n log n) beyond the brute-force limit; ok is false iff errorCount > 0.
 ValidationReport validate(const Pslg& input, const Array<Point>& vertices,
   const Array<Triangle>& triangles, const ValidationOptions& options = {});

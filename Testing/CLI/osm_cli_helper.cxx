@@ -3,7 +3,8 @@
 //
 // Test helper for the osm-mesh tests and the consumer test.
 //
-//   osm_cli_helper validate INPUT MESH [--allow-missing] [--max-angle A] [--area A]
+//   osm_cli_helper validate INPUT MESH [--allow-missing] [--max-angle A] [--max-edge H]
+//                   [--area A]
 //     Reads the input PSLG (.poly/.node with the core's reader, .vtp/.vtk
 //     with VTK's readers: lines, polylines and polygon edges are segments)
 //     and a mesh (.vtp, .vtu, .vtk with VTK's readers, or Triangle's
@@ -11,7 +12,8 @@
 //     validator osm::validate. Input points are matched to mesh vertices by
 //     their coordinates; every input point must be present unless
 //     --allow-missing (holes and the enclosed domain leave points out).
-//     With --area, the triangles' total area must also be A (holes honoured).
+//     With --max-edge, no edge may be longer than H; with --area, the
+//     triangles' total area must also be A (holes honoured).
 //     Prints one summary line; exit 0 iff the mesh is valid.
 //
 //   osm_cli_helper reader DATA_DIR OUT_DIR
@@ -241,7 +243,7 @@ int Validate(int argc, char* argv[])
 {
   if (argc < 4)
   {
-    Die("usage: validate INPUT MESH [--allow-missing] [--max-angle A]");
+    Die("usage: validate INPUT MESH [--allow-missing] [--max-angle A] [--max-edge H] [--area A]");
   }
   bool allowMissing = false;
   double expectedArea = -1.0;
@@ -256,6 +258,10 @@ int Validate(int argc, char* argv[])
     else if (arg == "--max-angle" && i + 1 < argc)
     {
       options.maxAngleDeg = std::atof(argv[++i]);
+    }
+    else if (arg == "--max-edge" && i + 1 < argc)
+    {
+      options.maxEdgeLength = std::atof(argv[++i]);
     }
     else if (arg == "--area" && i + 1 < argc)
     {

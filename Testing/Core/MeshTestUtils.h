@@ -17,6 +17,9 @@ namespace osm
 inline Result meshAndValidate(
   const Pslg& input, const std::string& name, Options options = {}, ValidationOptions vo = {})
 {
+  // A size bound asked of the mesher is checked on every edge.
+  if (vo.maxEdgeLength == 0)
+    vo.maxEdgeLength = options.maxEdgeLength;
   Result r = mesh(input, options);
   EXPECT_TRUE(r.ok) << name << ": " << r.error;
   if (!r.ok)

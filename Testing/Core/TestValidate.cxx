@@ -323,6 +323,27 @@ TEST(Validate, LargeAngleFails)
   EXPECT_TRUE(check(points, { { 0, 1, 2 } }, {}, options).ok);
 }
 
+TEST(Validate, EdgeLongerThanTheBoundFails)
+{
+  // The unit square's diagonal is sqrt(2) long.
+  ValidationOptions options;
+  options.maxEdgeLength = 1.4;
+  const auto r = check(kSquare, kSquareTriangles, {}, options);
+  EXPECT_FALSE(r.ok);
+  EXPECT_TRUE(mentions(r, "has an edge of length 1.414")) << dump(r);
+  EXPECT_TRUE(mentions(r, "(2 triangle(s) exceed the maximum edge length)")) << dump(r);
+  options.maxEdgeLength = std::sqrt(2.0);
+  EXPECT_TRUE(check(kSquare, kSquareTriangles, {}, options).ok);
+  // Checked in the validator's own scaled coordinates too.
+  Array<Point> huge = kSquare;
+  for (Point& p : huge)
+    p = { p.x * 1e200, p.y * 1e200 };
+  options.maxEdgeLength = 1.4e200;
+  EXPECT_FALSE(check(huge, kSquareTriangles, {}, options).ok);
+  options.maxEdgeLength = 1.5e200;
+  EXPECT_TRUE(check(huge, kSquareTriangles, {}, options).ok);
+}
+
 TEST(Validate, BowtieVertexPasses)
 {
   // Two triangles touching only at vertex 0, as where a domain's boundary touches itself.

@@ -1,0 +1,99 @@
+// splitLongEdges on two triangles sharing a long side.
+#include "LongEdges.h"
+#include "Predicates.h"
+
+#include <gtest/gtest.h>
+
+using namespace osm;
+
+namespace
+{
+
+/// Triangles (a, b, c) and (b, a, d) sharing the side a-b, of length `length`
+/// along the x axis, with c above and d below it.
+struct Pair
+{
+  Array<Point> points;
+  Array<VertexOrigin> origin;
+  Array<Triangle> triangles{ { 0, 1, 2 }, { 1, 0, 3 } };
+  Array<int> regionId{ 7, 7 };
+  Array<Segment> constrained;
+
+  explicit Pair(double length, double height = 0.5)
+    : points{ { 0, 0 }, { length, 0 }, { 0.5 * length, height }, { 0.45 * length, -height } }
+    , origin(4, VertexOrigin::Overlay)
+  {}
+  LongEdges split(double maxEdge, double maxAngleDeg = 170)
+  {
+    return splitLongEdges(
+      points, origin, triangles, regionId, constrained, maxEdge, maxAngleDeg, RunContext::silent());
+  }
+};
+
+double longest(const Pair& p)
+{
+  double l2 = 0;
+  for (const Triangle& t : p.triangles)
+    for (int k = 0; k < 3; ++k)
+      l2 = std::max(l2, dist2(p.points[t[k]], p.points[t[(k + 1) % 3]]));
+  return std::sqrt(l2);
+}
+
+} // namespace
+
+TEST(LongEdges, ASideOverTheBoundIsSplitIntoAFanOfFour)
+{
+  Pair p(1.1);
+  const LongEdges r = p.split(1.0);
+  EXPECT_EQ(r.split, 1u);
+  EXPECT_EQ(r.remaining, 0u);
+  ASSERT_EQ(p.triangles.size(), 4u);
+  ASSERT_EQ(p.points.size(), 5u);
+  EXPECT_EQ(p.origin.back(), VertexOrigin::Other);
+  EXPECT_LE(longest(p), 1.0);
+  double area = 0;
+  for (const Triangle& t : p.triangles)
+  {
+    EXPECT_GT(orient2d(p.points[t[0]], p.points[t[1]], p.points[t[2]]), 0);
+    area += 0.5 * orient2d(p.points[t[0]], p.points[t[1]], p.points[t[2]]);
+    EXPECT_NE(std::find(t.begin(), t.end(), 4), t.end()) << "every triangle meets the new point";
+  }
+  EXPECT_NEAR(area, 1.1 * 0.5, 1e-15);
+  for (int id : p.regionId)
+    EXPECT_EQ(id, 7);
+}
+
+TEST(LongEdges, EdgesWithinTheBoundAndDroppedTrianglesAreLeft)
+{
+  Pair within(0.9);
+  EXPECT_EQ(within.split(1.0).split, 0u);
+  EXPECT_EQ(within.triangles.size(), 2u);
+  // Outside the domain (region -1): not output, so not split.
+  Pair outside(1.1);
+  outside.regionId = { -1, -1 };
+  const LongEdges r = outside.split(1.0);
+  EXPECT_EQ(r.split, 0u);
+  EXPECT_EQ(r.remaining, 0u);
+}
+
+TEST(LongEdges, WhatCannotBeSplitIsCountedWithTheLongestEdge)
+{
+  // A side on a segment would leave it: it stays, and is counted.
+  Pair onSegment(1.1);
+  onSegment.constrained = { { 0, 1 } };
+  LongEdges r = onSegment.split(1.0);
+  EXPECT_EQ(r.split, 0u);
+  EXPECT_EQ(r.remaining, 2u);
+  EXPECT_DOUBLE_EQ(r.longest, 1.1);
+  EXPECT_EQ(r.at.x, 0.55);
+  EXPECT_EQ(r.at.y, 0.0);
+  // More than twice the bound: no point is within it of both ends.
+  Pair tooLong(2.5, 0.3);
+  r = tooLong.split(1.0);
+  EXPECT_EQ(r.split, 0u);
+  EXPECT_GT(r.remaining, 0u);
+  // No fan keeps its angles within an impossible 80 degrees.
+  Pair strict(1.1);
+  EXPECT_EQ(strict.split(1.0, 80.0).split, 0u);
+  EXPECT_EQ(strict.triangles.size(), 2u);
+}
