@@ -572,6 +572,8 @@ void Mesher::meshRounds(Work& w)
   for (int round = 0;; ++round)
   {
     const std::size_t warningsBefore = res.warnings.size();
+    if (round > 0)
+      run.newRound();
     Array<Segment> segments = w.segments;
     Array<int> hull;
     const Domain domain = chooseDomain(w, hull);

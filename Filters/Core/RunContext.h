@@ -34,21 +34,27 @@ public:
     static RunContext none(nullptr);
     return none;
   }
-  /// Report progress of the current phase, which spans [begin, end] of the run.
+  /// Report progress of the current phase, which spans [begin, end] of a
+  /// round (of the run, in the first round).
   void phase(const char* name, double begin, double end)
   {
     if (!progress)
       return;
     phaseName = name;
-    phaseBegin = begin;
-    phaseEnd = end;
+    phaseBegin = roundBegin + (1.0 - roundBegin) * begin;
+    phaseEnd = roundBegin + (1.0 - roundBegin) * end;
     report(0.0);
   }
+  /// The mesher meshes the input again (after splitting crossings, or with
+  /// another domain): the new round's phases share what is left of the run,
+  /// so that progress never goes back.
+  void newRound() { roundBegin = phaseBegin + (phaseEnd - phaseBegin) * lastFraction; }
   /// fraction of the current phase; also polls for an abort.
   void report(double fraction)
   {
     if (!progress)
       return;
+    lastFraction = fraction;
     progress->report(phaseBegin + (phaseEnd - phaseBegin) * fraction, phaseName);
     if (progress->aborted())
       throw Stop{ "aborted by the user" };
@@ -72,6 +78,8 @@ private:
   const char* phaseName = "";
   double phaseBegin = 0.0;
   double phaseEnd = 1.0;
+  double lastFraction = 0.0; ///< of the current phase, as last reported
+  double roundBegin = 0.0;
   unsigned ticks = 0;
 };
 

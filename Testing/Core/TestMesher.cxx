@@ -744,6 +744,30 @@ TEST(Mesher, ReportsProgressAndHonoursAbort)
   EXPECT_NE(r.error.find("aborted"), std::string::npos);
 }
 
+TEST(Mesher, ProgressNeverGoesBackWhenARoundIsMeshedAgain)
+{
+  // Splitting crossings meshes the input again (and the auto domain falls
+  // back to the hull in another round): a round's phases share what is left.
+  Pslg crossing = manyPoints(2000);
+  const int n = static_cast<int>(crossing.points.size());
+  crossing.points.insert(crossing.points.end(), { { -1, -1 }, { 2, 2 }, { -1, 2 }, { 2, -1 } });
+  crossing.segments = { { n, n + 1 }, { n + 2, n + 3 } };
+  Pslg noArea = manyPoints(2000);
+  const int m = static_cast<int>(noArea.points.size());
+  noArea.points.insert(noArea.points.end(), { { 0, -1 }, { 1, -1 }, { 2, -1 }, { 1, -0.5 } });
+  noArea.segments = { { m, m + 1 }, { m + 1, m + 2 }, { m + 2, m + 3 }, { m, m + 2 } };
+  for (const auto& [name, p] : { std::pair{ "crossing", crossing }, { "no area", noArea } })
+  {
+    CountingProgress progress;
+    const Result r = mesh(p, {}, &progress);
+    ASSERT_TRUE(r.ok) << r.error;
+    // Both were meshed twice.
+    EXPECT_TRUE(r.stats.crossingsSplit > 0 || mentions(r.warnings, "enclose no area"));
+    EXPECT_TRUE(progress.monotone) << name;
+    EXPECT_GT(progress.last, 0.99) << name;
+  }
+}
+
 TEST(Mesher, EveryLongStepPollsForAnAbort)
 {
   // Compaction, building the stitched graph, carving and the output each
