@@ -29,17 +29,19 @@ struct Side
 /// Every too-long side of a kept triangle; the longest goes to found. Scan
 /// pass of passes reports progress in its share of the phase.
 Array<Side> longSides(const Array<Point>& points, const Array<Triangle>& triangles,
-  const Array<int>& regionId, double maxEdge2, LongEdges& found, int pass, RunContext& run)
+  const Array<int>& regionId, const Array<double>& regionMaxEdge, LongEdges& found, int pass,
+  RunContext& run)
 {
   Array<Side> sides;
-  double longest2 = 0;
+  double worst2 = 0;
   found.remaining = 0;
   for (std::size_t t = 0; t < triangles.size(); ++t)
   {
     run.tickWith(
       [&] { return (pass + double(t) / double(triangles.size())) / (kPasses + 1); }, 1u << 16);
-    if (regionId[t] < 0)
+    if (regionId[t] < 0 || regionMaxEdge[regionId[t]] == 0)
       continue;
+    const double maxEdge2 = regionMaxEdge[regionId[t]] * regionMaxEdge[regionId[t]];
     const Triangle& tri = triangles[t];
     bool isLong = false;
     for (int k = 0; k < 3; ++k)
@@ -51,15 +53,15 @@ Array<Side> longSides(const Array<Point>& points, const Array<Triangle>& triangl
         continue;
       isLong = true;
       sides.push_back({ std::min(a, b), std::max(a, b), static_cast<int>(t) });
-      if (l2 > longest2)
+      if (l2 / maxEdge2 > worst2)
       {
-        longest2 = l2;
+        worst2 = l2 / maxEdge2;
         found.at = { 0.5 * (points[a].x + points[b].x), 0.5 * (points[a].y + points[b].y) };
       }
     }
     found.remaining += isLong ? 1 : 0;
   }
-  found.longest = std::sqrt(longest2);
+  found.worst = std::sqrt(worst2);
   std::sort(sides.begin(), sides.end());
   return sides;
 }
@@ -169,13 +171,12 @@ bool splitSide(Array<Point>& points, Array<VertexOrigin>& origin, Array<Triangle
 
 LongEdges splitLongEdges(Array<Point>& points, Array<VertexOrigin>& origin,
   Array<Triangle>& triangles, Array<int>& regionId, const Array<Segment>& constrained,
-  double maxEdge, double maxAngleDeg, RunContext& run)
+  const Array<double>& regionMaxEdge, double maxAngleDeg, RunContext& run)
 {
-  const double maxEdge2 = maxEdge * maxEdge;
   LongEdges found;
   for (int pass = 0; pass < kPasses; ++pass)
   {
-    Array<Side> sides = longSides(points, triangles, regionId, maxEdge2, found, pass, run);
+    Array<Side> sides = longSides(points, triangles, regionId, regionMaxEdge, found, pass, run);
     if (sides.empty())
       return found;
     const Array<char> onSegment = onSegments(sides, constrained);
@@ -189,8 +190,10 @@ LongEdges splitLongEdges(Array<Point>& points, Array<VertexOrigin>& origin,
       // One pair per side; a side of a triangle already split waits for the next pass.
       if (changed[s.triangle] || changed[next.triangle])
         continue;
-      if (splitSide(
-            points, origin, triangles, regionId, s.triangle, next.triangle, maxEdge2, maxAngleDeg))
+      // Both lie in one region: no segment separates them.
+      const double maxEdge = regionMaxEdge[regionId[s.triangle]];
+      if (splitSide(points, origin, triangles, regionId, s.triangle, next.triangle,
+            maxEdge * maxEdge, maxAngleDeg))
       {
         changed[s.triangle] = changed[next.triangle] = 1;
         ++found.split;
@@ -201,7 +204,7 @@ LongEdges splitLongEdges(Array<Point>& points, Array<VertexOrigin>& origin,
     if (!any)
       return found; // as the scan left it: nothing changed since
   }
-  longSides(points, triangles, regionId, maxEdge2, found, kPasses, run);
+  longSides(points, triangles, regionId, regionMaxEdge, found, kPasses, run);
   return found;
 }
 

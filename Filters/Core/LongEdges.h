@@ -14,9 +14,9 @@ namespace osm
 struct LongEdges
 {
   std::size_t split = 0;     ///< edges split at their midpoint
-  std::size_t remaining = 0; ///< kept triangles with an edge still longer than the bound
-  double longest = 0;        ///< the longest such edge
-  Point at;                  ///< its midpoint
+  std::size_t remaining = 0; ///< kept triangles with an edge still longer than their bound
+  double worst = 0;          ///< the largest ratio of such an edge's length to its bound
+  Point at;                  ///< that edge's midpoint
 };
 
 /// The size bound caps the overlay's edges, and stitching splits them, but
@@ -28,10 +28,11 @@ struct LongEdges
 /// a few passes). Meshing again with a tighter overlay around them does not
 /// serve: the refinement's order changes and long diagonals appear elsewhere.
 /// New points get VertexOrigin::Other; new triangles come last and share the
-/// region of the one they split. constrained: (lo, hi) vertex pairs.
+/// region of the one they split. constrained: (lo, hi) vertex pairs;
+/// regionMaxEdge: per region (regionId), the bound there, 0 for none.
 LongEdges splitLongEdges(Array<Point>& points, Array<VertexOrigin>& origin,
   Array<Triangle>& triangles, Array<int>& regionId, const Array<Segment>& constrained,
-  double maxEdge, double maxAngleDeg, RunContext& run);
+  const Array<double>& regionMaxEdge, double maxAngleDeg, RunContext& run);
 
 } // namespace osm
 

@@ -368,7 +368,8 @@ private:
   void buildOutput(const Work& w, const PlanarGraph& g, Completion& c, Carving& carve,
     const Overlay& overlay, Array<Edge>& edges, Domain domain);
   void warnAboutRegionSeeds(const Carving& carve);
-  std::string longEdgesWarning(const LongEdges& split, double maxEdge) const;
+  Array<double> regionMaxEdges(const Carving& carve, double maxEdge) const;
+  std::string longEdgesWarning(const LongEdges& split) const;
   void assignRegionAttributes(const Carving& carve);
 
   const Pslg& input;
@@ -384,6 +385,10 @@ private:
   /// segment ending on another, which only the walk splits): the size bound
   /// then applies within all the segments.
   bool sizeEverywhere = false;
+  /// The regions with a maximum triangle area, once known (after a first
+  /// round): the overlay's bound within each one's bounds.
+  Array<SizeBox> regionBoxes;
+  bool regionSizesKnown = false;
 };
 
 Result Mesher::execute()
@@ -540,6 +545,45 @@ bool keptWithin(const Array<Point>& points, const Array<Triangle>& triangles,
   return true;
 }
 
+/// The bounds of each region whose edge bound is tighter than the overlay's
+/// own (a maximum area), with that bound.
+Array<SizeBox> regionSizeBoxes(const Array<Point>& points, const Array<Triangle>& triangles,
+  const Array<int>& regionId, const Array<double>& regionMaxEdge, const OverlayOptions& oo)
+{
+  Array<char> tighter(regionMaxEdge.size(), 0);
+  bool any = false;
+  for (std::size_t r = 0; r < regionMaxEdge.size(); ++r)
+  {
+    tighter[r] =
+      regionMaxEdge[r] > 0 && (oo.maxEdgeLength == 0 || regionMaxEdge[r] < oo.maxEdgeLength);
+    any = any || tighter[r];
+  }
+  if (!any)
+    return {};
+  Array<Bounds> box(regionMaxEdge.size());
+  Array<char> seen(regionMaxEdge.size(), 0);
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    const int r = regionId[t];
+    if (r < 0 || !tighter[r])
+      continue;
+    for (int v : triangles[t])
+    {
+      const Point& p = points[v];
+      if (!seen[r])
+        box[r].lo = box[r].hi = p;
+      seen[r] = 1;
+      box[r].lo = { std::min(box[r].lo.x, p.x), std::min(box[r].lo.y, p.y) };
+      box[r].hi = { std::max(box[r].hi.x, p.x), std::max(box[r].hi.y, p.y) };
+    }
+  }
+  Array<SizeBox> boxes;
+  for (std::size_t r = 0; r < regionMaxEdge.size(); ++r)
+    if (seen[r])
+      boxes.push_back({ box[r], regionMaxEdge[r] });
+  return boxes;
+}
+
 /// Auto means the enclosed regions if the segments enclose any (decided on the
 /// segments as split at their crossings), else the hull; a hull without area
 /// falls back to the box. For the hull domain, hull receives its boundary.
@@ -590,6 +634,7 @@ void Mesher::meshRounds(Work& w)
       oo.maxEdgeLength = std::numeric_limits<double>::denorm_min();
     oo.maxSteinerPoints = options.maxSteinerPoints;
     limitRefinement(oo, domain, w, segments, !sizeEverywhere);
+    oo.sizeBoxes = regionBoxes;
     Overlay overlay = buildOverlay(w.points, oo, run);
     st.secondsOverlay += since(t);
 
@@ -682,15 +727,28 @@ void Mesher::meshRounds(Work& w)
       sizeEverywhere = true;
       continue;
     }
+    // A region's maximum area is a bound on its edges, which the overlay
+    // applies within the region's bounds: found in this round, meshed again.
+    const Array<double> regionMaxEdge = regionMaxEdges(carve, oo.maxEdgeLength);
+    if (!regionSizesKnown)
+    {
+      regionSizesKnown = true;
+      regionBoxes = regionSizeBoxes(g.points, c.triangles, carve.regionId, regionMaxEdge, oo);
+      if (!regionBoxes.empty())
+      {
+        res.warnings.resize(warningsBefore);
+        continue;
+      }
+    }
     const std::size_t graphPoints = g.points.size(); // the edges' vertices
-    if (oo.maxEdgeLength > 0)
+    if (std::any_of(regionMaxEdge.begin(), regionMaxEdge.end(), [](double h) { return h > 0; }))
     {
       run.phase("domain", 0.95, 0.96); // carved: long completed edges split
       const LongEdges split = splitLongEdges(g.points, g.origin, c.triangles, carve.regionId,
-        c.constrainedEdges, oo.maxEdgeLength, st.predictedMaxAngleDeg, run);
+        c.constrainedEdges, regionMaxEdge, st.predictedMaxAngleDeg, run);
       st.longEdgesSplit = split.split;
       if (split.remaining > 0)
-        res.warnings.push_back(longEdgesWarning(split, oo.maxEdgeLength));
+        res.warnings.push_back(longEdgesWarning(split));
     }
     warnAboutRegionSeeds(carve);
     if (!carve.unusedHoles.empty())
@@ -725,24 +783,50 @@ void Mesher::meshRounds(Work& w)
   }
 }
 
-std::string Mesher::longEdgesWarning(const LongEdges& split, double maxEdge) const
+std::string Mesher::longEdgesWarning(const LongEdges& split) const
 {
   char ratio[32];
-  std::snprintf(ratio, sizeof ratio, "%.3g", split.longest / maxEdge);
+  std::snprintf(ratio, sizeof ratio, "%.3g", split.worst);
   return std::to_string(split.remaining) +
-    " triangle(s) keep an edge longer than the maximum edge length, up to " + ratio +
-    " times it, e.g. near " +
+    " triangle(s) keep an edge longer than the maximum edge length (or their region's bound "
+    "for its maximum area), up to " +
+    ratio + " times it, e.g. near " +
     formatPoint(
       { std::ldexp(split.at.x, exponent), std::ldexp(split.at.y, exponent) }, options.pointFormat) +
     ": it lies on a segment, or splitting it would make an angle above the bound";
 }
 
-/// Region seeds that give no triangle an attribute, and area limits, which
-/// are not applied, are said.
+/// Per region of carve, the longest edge allowed there (in the core's
+/// coordinates; 0: none): maxEdge, or the edge of the equilateral triangle
+/// of the region's maximum area if shorter. As for attributes, the last seed
+/// in a region gives its area (as Triangle does).
+Array<double> Mesher::regionMaxEdges(const Carving& carve, double maxEdge) const
+{
+  Array<double> bound(carve.regions, maxEdge);
+  Array<char> claimed(carve.regions, 0);
+  for (std::size_t k = input.regions.size(); k-- > 0;)
+  {
+    const int r = carve.seedRegion[k];
+    if (r < 0 || claimed[r])
+      continue;
+    claimed[r] = 1;
+    const double area = input.regions[k].maxArea;
+    if (!(area > 0))
+      continue;
+    // sqrt(3)/4 h^2 = area; in the core's coordinates, scaled by 2^-exponent.
+    double h = std::ldexp(std::sqrt(4 * area / std::sqrt(3.0)), -exponent);
+    // One that underflows stays tiny: the overlay refuses it as too small.
+    h = h > 0 ? h : std::numeric_limits<double>::denorm_min();
+    bound[r] = bound[r] > 0 ? std::min(bound[r], h) : h;
+  }
+  return bound;
+}
+
+/// Region seeds that give no triangle an attribute are said.
 void Mesher::warnAboutRegionSeeds(const Carving& carve)
 {
   const Array<RegionAttribute>& regions = input.regions;
-  std::size_t outside = 0, overridden = 0, limits = 0;
+  std::size_t outside = 0, overridden = 0;
   int firstOutside = -1, firstOverridden = -1;
   Array<char> claimed; // per region: a later seed gives its attribute
   claimed.assign(carve.regions, char{ 0 });
@@ -750,7 +834,6 @@ void Mesher::warnAboutRegionSeeds(const Carving& carve)
   for (std::size_t k = regions.size(); k-- > 0;)
   {
     const int region = carve.seedRegion[k];
-    limits += regions[k].maxArea > 0 ? 1 : 0;
     if (region < 0)
     {
       ++outside;
@@ -772,14 +855,11 @@ void Mesher::warnAboutRegionSeeds(const Carving& carve)
       ": their attributes are given to no triangle");
   if (overridden > 0)
     res.warnings.push_back(std::to_string(overridden) +
-      " region point(s) share their region with a later one, whose attribute the region takes "
+      " region point(s) share their region with a later one, whose attribute and maximum area the "
+      "region takes "
       "(as Triangle does), e.g. region " +
       std::to_string(firstOverridden) + " at " +
       formatPoint(regions[firstOverridden].seed, options.pointFormat));
-  if (limits > 0)
-    res.warnings.push_back(std::to_string(limits) +
-      " region(s) set a maximum triangle area, which is not applied: the mesher bounds edge "
-      "lengths (the maximum edge length option) over the whole domain");
 }
 
 /// The attribute of each kept triangle from the region seeds (res.regionId

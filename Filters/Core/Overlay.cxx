@@ -130,6 +130,16 @@ bool outside(const Point& a, const Point& b, const Point& c, const Bounds& r)
     std::max({ a.y, b.y, c.y }) < r.lo.y || std::min({ a.y, b.y, c.y }) > r.hi.y;
 }
 
+/// The smallest square of the boxes' bounds (infinite for none): shorter
+/// edges need no box test.
+double loosestBoxEdge2(const Array<SizeBox>& boxes)
+{
+  double least = std::numeric_limits<double>::infinity();
+  for (const SizeBox& b : boxes)
+    least = std::min(least, b.maxEdgeLength * b.maxEdgeLength);
+  return least;
+}
+
 class Refiner
 {
 public:
@@ -146,6 +156,8 @@ public:
     , beyondGuarantee(options.gamma < 1.0)
     , within(options.refineWithin)
     , sizeWithin(options.sizeWithin)
+    , sizeBoxes(options.sizeBoxes)
+    , boxEdge2(loosestBoxEdge2(options.sizeBoxes))
   {}
 
   Overlay refine();
@@ -167,6 +179,14 @@ private:
   }
   void makeBox();
   void enqueueIfNeeded(int t);
+  /// Whether abc meets a size box whose bound its longest edge (squared) exceeds.
+  bool beyondSizeBox(const Point& a, const Point& b, const Point& c, double longest2) const
+  {
+    for (const SizeBox& s : sizeBoxes)
+      if (longest2 > s.maxEdgeLength * s.maxEdgeLength && !outside(a, b, c, s.box))
+        return true;
+    return false;
+  }
   void refineTriangle(int t);
   Point steinerPoint(int t, const Point& circumcenter) const;
   void splitHullEdge(int edge);
@@ -194,6 +214,8 @@ private:
   const bool beyondGuarantee; ///< Γ below 1 (θ1 above 30 degrees): refinement need not end
   const Bounds within;
   const Bounds sizeWithin;
+  const Array<SizeBox> sizeBoxes;
+  const double boxEdge2; ///< no box bounds an edge shorter than this (squared)
 
   Overlay out;
   Triangulation& mesh = out.mesh;
@@ -251,8 +273,10 @@ void Refiner::enqueueIfNeeded(int t)
   if (mesh.tri[t].info < 0)
   {
     const double la = dist2(b, c), lb = dist2(a, c), lc = dist2(a, b);
-    const bool tooLong = maxEdge > 0 && std::max({ la, lb, lc }) > maxEdge2 &&
-      !(limited && outside(a, b, c, sizeWithin));
+    const double longest = std::max({ la, lb, lc });
+    const bool tooLong =
+      (maxEdge > 0 && longest > maxEdge2 && !(limited && outside(a, b, c, sizeWithin))) ||
+      (longest > boxEdge2 && beyondSizeBox(a, b, c, longest));
     if (!tooLong && o.x * o.x + o.y * o.y <= gamma2 * std::min({ la, lb, lc }))
       return;
     // Poor, but beyond the bounds where output can be: leave it (tested only
@@ -290,9 +314,11 @@ Overlay Refiner::refine()
     char need[48] = "more";
     if (std::isfinite(forMaxEdge))
       std::snprintf(need, sizeof need, "at least %.3g", forMaxEdge);
-    throw Stop{ std::string("the maximum edge length is too small for this input: the overlay "
-                            "would need ") +
-      need + " points, and a mesh can index " + std::to_string(static_cast<long long>(indexable)) };
+    throw Stop{ std::string(sizeBoxes.empty() ? "the maximum edge length is too small"
+                                              : "the maximum edge length or a region's maximum "
+                                                "triangle area is too small") +
+      " for this input: the overlay would need " + need + " points, and a mesh can index " +
+      std::to_string(static_cast<long long>(indexable)) };
   }
   // A size bound may ask for many more points than the input has: about 2.2
   // times forMaxEdge (measured on squares), so room for 2.5 times spares
@@ -361,21 +387,31 @@ double Refiner::progressOf(double forMaxEdge)
 
 double Refiner::pointsForMaxEdge() const
 {
-  if (maxEdge == 0)
-    return 0;
   // A triangle with no edge longer than h has at most the area of the
   // equilateral one (sqrt(3)/4 h^2), and a triangulation at most about twice
   // as many triangles as vertices: a region of area A needs at least
   // A / (sqrt(3)/2 h^2) vertices. The region is the box, or with limited
   // refinement the bounds, padded by an edge each way (triangles across them
-  // are refined too). h^2 may underflow: the count is then infinite.
-  double w = mesh.points[2].x - mesh.points[0].x, h = mesh.points[2].y - mesh.points[0].y;
-  if (limited)
+  // are refined too); a size box adds its own. h^2 may underflow: the count
+  // is then infinite.
+  const auto points = [](double w, double h, double edge) {
+    return w * h / (0.8660254037844386 * edge * edge);
+  };
+  double count = 0;
+  if (maxEdge > 0)
   {
-    w = std::min(w, sizeWithin.width() + 2 * maxEdge);
-    h = std::min(h, sizeWithin.height() + 2 * maxEdge);
+    double w = mesh.points[2].x - mesh.points[0].x, h = mesh.points[2].y - mesh.points[0].y;
+    if (limited)
+    {
+      w = std::min(w, sizeWithin.width() + 2 * maxEdge);
+      h = std::min(h, sizeWithin.height() + 2 * maxEdge);
+    }
+    count = points(w, h, maxEdge);
   }
-  return w * h / (0.8660254037844386 * maxEdge * maxEdge);
+  for (const SizeBox& s : sizeBoxes)
+    count += points(
+      s.box.width() + 2 * s.maxEdgeLength, s.box.height() + 2 * s.maxEdgeLength, s.maxEdgeLength);
+  return count;
 }
 
 void Refiner::countSteiner()

@@ -12,6 +12,13 @@
 namespace osm
 {
 
+/// A tighter size bound within a box (a region's, for its maximum area).
+struct SizeBox
+{
+  Bounds box;
+  double maxEdgeLength = 0.0;
+};
+
 struct OverlayOptions
 {
   double gamma = 1.0;         ///< radius / shortest-edge bound Γ
@@ -29,6 +36,10 @@ struct OverlayOptions
   /// that meet these bounds (within refineWithin: where output can be);
   /// beyond them only quality counts.
   Bounds sizeWithin;
+  /// Triangles that meet one of these boxes have no edge longer than its
+  /// bound (whatever maxEdgeLength and sizeWithin say). Each triangle is
+  /// tested against every box: meant for a few (the regions with an area limit).
+  Array<SizeBox> sizeBoxes;
 };
 
 struct Overlay

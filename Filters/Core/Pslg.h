@@ -14,8 +14,8 @@ namespace osm
 
 /// A regional attribute (a region line of Triangle's .poly format): every
 /// triangle of the region (bounded by segments) that holds `seed` gets
-/// `attribute`. maxArea is the file's area limit for the region (unused: the
-/// mesher bounds edge lengths, not areas), negative when none.
+/// `attribute`. maxArea, when positive, bounds the area of each of the
+/// region's triangles (as Triangle's -a); negative or 0 when none.
 struct RegionAttribute
 {
   Point seed;

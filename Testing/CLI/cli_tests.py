@@ -366,16 +366,15 @@ def group_formats():
         check(" 4 of 4 input points" in report,
               ".%s: the 4 input points keep their coordinates bit for bit" % ext, report)
     # Regional attributes (a .poly's region lines, as Triangle's -A uses them):
-    # the .ele's first attribute, per triangle of each region; the area limit is
-    # said not to be applied.
+    # the .ele's first attribute, per triangle of each region; the area limit
+    # bounds every triangle of its region, as Triangle's -a does.
     regions = out("regions.poly")
     with open(regions, "w") as f:
         f.write(poly_text([(0, 0), (10, 0), (10, 10), (0, 10), (3, 3), (7, 3), (7, 7), (3, 7)],
                           [(0, 1), (1, 2), (2, 3), (3, 0), (4, 5), (5, 6), (6, 7), (7, 4)]) +
-                "2\n0 1 1 -2.5\n1 5 5 0.125 4\n")
+                "2\n0 1 1 -2.5\n1 5 5 0.125 0.05\n")
     text = mesh_ok(regions, "-o", out("regions.node")).stderr
-    check("1 region(s) set a maximum triangle area, which is not applied" in text,
-          "regions: the area limits are said not to be applied", text)
+    check("area" not in text, "regions: the area limit is applied, no warning", text)
     with open(out("regions.ele")) as f:
         rows = [l.split() for l in f if l.strip()]
     rv, rt, _ = read_triangle_files(out("regions"))
@@ -389,6 +388,16 @@ def group_formats():
     check(any(inner(tri) for tri in rt) and not wrong,
           "regions: every triangle has its region's attribute (-2.5 outside, 0.125 inside)",
           str(wrong[:3]))
+
+    def tri_area(tri):
+        (ax, ay), (bx, by), (cx, cy) = (rv[i - 1] for i in tri)
+        return 0.5 * ((bx - ax) * (cy - ay) - (by - ay) * (cx - ax))
+    inner_areas = [tri_area(tri) for tri in rt if inner(tri)]
+    outer_areas = [tri_area(tri) for tri in rt if not inner(tri)]
+    check(len(inner_areas) >= 16 / 0.05 and max(inner_areas) <= 0.05 and max(outer_areas) > 0.05,
+          "regions: every inner triangle within the region's maximum area 0.05, the outer "
+          "region coarser (%d inner, largest %g; largest outer %g)" % (
+              len(inner_areas), max(inner_areas), max(outer_areas)))
     # Uppercase extension and a .node output base in a sub-directory.
     os.makedirs(out("sub"), exist_ok=True)
     mesh_ok(square, "-o", out("sub/UPPER.VTP"))

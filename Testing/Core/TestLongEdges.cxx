@@ -23,10 +23,13 @@ struct Pair
     : points{ { 0, 0 }, { length, 0 }, { 0.5 * length, height }, { 0.45 * length, -height } }
     , origin(4, VertexOrigin::Overlay)
   {}
+  /// With maxEdge the bound of region 7 (and none elsewhere).
   LongEdges split(double maxEdge, double maxAngleDeg = 170)
   {
-    return splitLongEdges(
-      points, origin, triangles, regionId, constrained, maxEdge, maxAngleDeg, RunContext::silent());
+    Array<double> regionMaxEdge(8, 0.0);
+    regionMaxEdge[7] = maxEdge;
+    return splitLongEdges(points, origin, triangles, regionId, constrained, regionMaxEdge,
+      maxAngleDeg, RunContext::silent());
   }
 };
 
@@ -74,6 +77,11 @@ TEST(LongEdges, EdgesWithinTheBoundAndDroppedTrianglesAreLeft)
   const LongEdges r = outside.split(1.0);
   EXPECT_EQ(r.split, 0u);
   EXPECT_EQ(r.remaining, 0u);
+  // A region without a bound (0) keeps its edges.
+  Pair unbounded(1.1);
+  unbounded.regionId = { 3, 3 };
+  EXPECT_EQ(unbounded.split(1.0).remaining, 0u);
+  EXPECT_EQ(unbounded.triangles.size(), 2u);
 }
 
 TEST(LongEdges, WhatCannotBeSplitIsCountedWithTheLongestEdge)
@@ -84,7 +92,7 @@ TEST(LongEdges, WhatCannotBeSplitIsCountedWithTheLongestEdge)
   LongEdges r = onSegment.split(1.0);
   EXPECT_EQ(r.split, 0u);
   EXPECT_EQ(r.remaining, 2u);
-  EXPECT_DOUBLE_EQ(r.longest, 1.1);
+  EXPECT_DOUBLE_EQ(r.worst, 1.1);
   EXPECT_EQ(r.at.x, 0.55);
   EXPECT_EQ(r.at.y, 0.0);
   // More than twice the bound: no point is within it of both ends.

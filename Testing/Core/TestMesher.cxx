@@ -564,15 +564,64 @@ TEST(Mesher, RegionalAttributesOfASharedRegionAreTheLastSeeds)
   for (std::size_t t = 0; t < r.mesh.triangles.size(); ++t)
     EXPECT_EQ(r.regionAttribute[t], inInnerSquare(r, t) ? 100.0 : 11.0) << "triangle " << t;
   EXPECT_TRUE(mentions(r.warnings,
-    "11 region point(s) share their region with a later one, whose attribute the region takes "
-    "(as Triangle does), e.g. region 0 at"));
-  EXPECT_TRUE(
-    mentions(r.warnings, "1 region(s) set a maximum triangle area, which is not applied"));
+    "11 region point(s) share their region with a later one, whose attribute and maximum area "
+    "the region takes (as Triangle does), e.g. region 0 at"));
+  // Seed 3's area limit is overridden by seed 11's none: the mesh is as without it.
+  p.regions[3].maxArea = -1.0;
+  EXPECT_EQ(mesh(p).mesh.triangles, r.mesh.triangles);
 
   p.regions[4].seed = { std::nan(""), 0.0 };
   const Result bad = mesh(p);
   EXPECT_FALSE(bad.ok);
   EXPECT_NE(bad.error.find("region 4 has a non-finite coordinate"), std::string::npos) << bad.error;
+}
+
+double triangleArea(const Result& r, std::size_t t)
+{
+  const Triangle& tri = r.mesh.triangles[t];
+  return 0.5 * orient2d(r.mesh.vertices[tri[0]], r.mesh.vertices[tri[1]], r.mesh.vertices[tri[2]]);
+}
+
+TEST(Mesher, RegionalMaximumAreaBoundsEveryTriangleOfItsRegion)
+{
+  // As Triangle's -a with area limits on region lines: every triangle of the
+  // inner square's region has at most its area, and the outer one is coarser.
+  Pslg p = squareInSquare();
+  p.regions = { { { 0.1, 0.1 }, 1.0 }, { { 0.5, 0.5 }, 2.0, 0.001 } };
+  const Result r = meshAndValidate(p, "inner area 0.001");
+  std::size_t inner = 0;
+  double innerLargest = 0, outerLargest = 0;
+  for (std::size_t t = 0; t < r.mesh.triangles.size(); ++t)
+  {
+    const bool in = inInnerSquare(r, t);
+    EXPECT_EQ(r.regionAttribute[t], in ? 2.0 : 1.0);
+    inner += in;
+    (in ? innerLargest : outerLargest) =
+      std::max(in ? innerLargest : outerLargest, triangleArea(r, t));
+  }
+  EXPECT_LE(innerLargest, 0.001);
+  EXPECT_GE(inner, 250u); // 0.25 / 0.001
+  EXPECT_GT(outerLargest, 0.01);
+  EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
+
+  // With a maximum edge length too, the tighter of the two applies in the region.
+  Options o;
+  o.maxEdgeLength = 0.02; // equilateral area 1.7e-4, below 0.001
+  const Result both = meshAndValidate(p, "inner area and maximum edge", o);
+  Options coarse;
+  coarse.maxEdgeLength = 0.2;
+  const Result loose = meshAndValidate(p, "inner area and a looser maximum edge", coarse);
+  for (std::size_t t = 0; t < loose.mesh.triangles.size(); ++t)
+    if (inInnerSquare(loose, t))
+      EXPECT_LE(triangleArea(loose, t), 0.001);
+  EXPECT_GT(both.mesh.triangles.size(), loose.mesh.triangles.size());
+
+  // One too small to mesh is refused at once, naming the limit.
+  p.regions[1].maxArea = 1e-30;
+  const Result tiny = mesh(p);
+  EXPECT_FALSE(tiny.ok);
+  EXPECT_NE(tiny.error.find("a region's maximum triangle area is too small"), std::string::npos)
+    << tiny.error;
 }
 
 TEST(Mesher, StitchPointsLieExactlyOnHorizontalAndVerticalSegments)
