@@ -699,6 +699,7 @@ vtkOverlayStitchMesher::vtkOverlayStitchMesher()
   , MergeTolerance(0.0)
   , ProjectToXYPlane(0)
   , UseInputHolePoints(1)
+  , ApplyRegionAreas(0)
   , MaximumSteinerPoints(0)
   , GenerateEdges(1)
   , GenerateOverlay(1)
@@ -965,6 +966,7 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   }
   options.resolveCrossings = this->ResolveIntersections != 0;
   options.mergeTolerance = this->MergeTolerance;
+  options.regionAreas = this->ApplyRegionAreas != 0;
   options.maxSteinerPoints = static_cast<std::size_t>(this->MaximumSteinerPoints);
   options.keepEdges = this->GenerateEdges != 0;
   options.keepOverlay = this->GenerateOverlay != 0;
@@ -1080,6 +1082,7 @@ void vtkOverlayStitchMesher::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MergeTolerance: " << this->MergeTolerance << "\n";
   os << indent << "ProjectToXYPlane: " << (this->ProjectToXYPlane ? "On" : "Off") << "\n";
   os << indent << "UseInputHolePoints: " << (this->UseInputHolePoints ? "On" : "Off") << "\n";
+  os << indent << "ApplyRegionAreas: " << (this->ApplyRegionAreas ? "On" : "Off") << "\n";
   os << indent << "MaximumSteinerPoints: " << this->MaximumSteinerPoints << "\n";
   os << indent << "GenerateEdges: " << (this->GenerateEdges ? "On" : "Off") << "\n";
   os << indent << "GenerateOverlay: " << (this->GenerateOverlay ? "On" : "Off") << "\n";

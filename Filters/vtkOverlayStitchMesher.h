@@ -163,6 +163,19 @@ public:
 
   ///@{
   /**
+   * If on, the maximum area of each region seed in the input's field data
+   * array "RegionAttributes" (its 4th component, when positive; the last
+   * seed's, where several share a region) bounds every triangle of its
+   * region, as Triangle's -a does. Off (the default), as Triangle without
+   * -a, areas are ignored with a warning.
+   */
+  vtkSetMacro(ApplyRegionAreas, vtkTypeBool);
+  vtkGetMacro(ApplyRegionAreas, vtkTypeBool);
+  vtkBooleanMacro(ApplyRegionAreas, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
    * If on (the default), the input's field data array "HolePoints" (3
    * components x, y, z, as written by the .poly reader) adds hole seeds to
    * those of the HolePoints property.
@@ -237,6 +250,7 @@ protected:
   double MergeTolerance;
   vtkTypeBool ProjectToXYPlane;
   vtkTypeBool UseInputHolePoints;
+  vtkTypeBool ApplyRegionAreas;
   vtkIdType MaximumSteinerPoints;
   vtkTypeBool GenerateEdges;
   vtkTypeBool GenerateOverlay;

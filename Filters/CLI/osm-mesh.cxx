@@ -61,7 +61,7 @@ const char* const Usage =
   R"(Usage: osm-mesh INPUT [-o OUTPUT] [--domain auto|enclosed|hull|box]
                 [--min-angle DEG | --gamma G] [--max-edge H] [--no-resolve]
                 [--merge-tolerance D] [--max-steiner N] [--project-xy]
-                [--stats] [--svg FILE] [--help] [--version]
+                [--region-areas] [--stats] [--svg FILE] [--help] [--version]
 
 Mesh a Planar Straight Line Graph with Overlay Stitch Meshing: a conforming
 triangulation in which no angle exceeds 180 - theta2 degrees (about 170 at
@@ -89,6 +89,9 @@ INPUT                  Triangle .poly (holes honoured) or .node file, or
   --project-xy         mesh the projection onto the XY plane of input points
                        that are not coplanar (default: an error), at their
                        mean z
+  --region-areas       apply the maximum areas of a .poly's region lines to
+                       their regions, as Triangle's -a (default: ignored,
+                       with a warning)
   --stats              print the run statistics as JSON on stdout
   --svg FILE           draw the mesh: input segments bold, discarded overlay
                        edges dashed
@@ -251,6 +254,7 @@ struct Arguments
   double maxEdge = 0.0;
   bool resolve = true;
   bool projectXY = false;
+  bool regionAreas = false;
   double mergeTolerance = 0.0;
   long long maxSteiner = 0;
   bool stats = false;
@@ -434,6 +438,11 @@ bool ParseArguments(int argc, char* argv[], Arguments& args)
     {
       noValue();
       args.projectXY = true;
+    }
+    else if (arg == "--region-areas")
+    {
+      noValue();
+      args.regionAreas = true;
     }
     else if (arg == "--merge-tolerance")
     {
@@ -825,6 +834,7 @@ int Run(int argc, char* argv[], OsmOutputWindow* window)
   mesher->SetResolveIntersections(args.resolve);
   mesher->SetMergeTolerance(args.mergeTolerance);
   mesher->SetProjectToXYPlane(args.projectXY);
+  mesher->SetApplyRegionAreas(args.regionAreas);
   mesher->SetMaximumSteinerPoints(static_cast<vtkIdType>(args.maxSteiner));
   mesher->SetGenerateEdges(true);
   mesher->SetGenerateOverlay(false);

@@ -811,7 +811,7 @@ Array<double> Mesher::regionMaxEdges(const Carving& carve, double maxEdge) const
       continue;
     claimed[r] = 1;
     const double area = input.regions[k].maxArea;
-    if (!(area > 0))
+    if (!options.regionAreas || !(area > 0))
       continue;
     // sqrt(3)/4 h^2 = area; in the core's coordinates, scaled by 2^-exponent.
     double h = std::ldexp(std::sqrt(4 * area / std::sqrt(3.0)), -exponent);
@@ -822,11 +822,12 @@ Array<double> Mesher::regionMaxEdges(const Carving& carve, double maxEdge) const
   return bound;
 }
 
-/// Region seeds that give no triangle an attribute are said.
+/// Region seeds that give no triangle an attribute, and area limits not
+/// applied, are said.
 void Mesher::warnAboutRegionSeeds(const Carving& carve)
 {
   const Array<RegionAttribute>& regions = input.regions;
-  std::size_t outside = 0, overridden = 0;
+  std::size_t outside = 0, overridden = 0, limits = 0;
   int firstOutside = -1, firstOverridden = -1;
   Array<char> claimed; // per region: a later seed gives its attribute
   claimed.assign(carve.regions, char{ 0 });
@@ -834,6 +835,7 @@ void Mesher::warnAboutRegionSeeds(const Carving& carve)
   for (std::size_t k = regions.size(); k-- > 0;)
   {
     const int region = carve.seedRegion[k];
+    limits += regions[k].maxArea > 0 ? 1 : 0;
     if (region < 0)
     {
       ++outside;
@@ -860,6 +862,10 @@ void Mesher::warnAboutRegionSeeds(const Carving& carve)
       "(as Triangle does), e.g. region " +
       std::to_string(firstOverridden) + " at " +
       formatPoint(regions[firstOverridden].seed, options.pointFormat));
+  if (limits > 0 && !options.regionAreas)
+    res.warnings.push_back(std::to_string(limits) +
+      " region(s) set a maximum triangle area, which is not applied: turn on region areas "
+      "(osm-mesh --region-areas, the filter's ApplyRegionAreas) to apply them, as Triangle's -a");
 }
 
 /// The attribute of each kept triangle from the region seeds (res.regionId

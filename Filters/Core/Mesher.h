@@ -39,6 +39,10 @@ struct Options
   double mergeTolerance = 0.0;
   /// Stop with an error when more Steiner points than this would be needed (0: no cap).
   std::size_t maxSteinerPoints = 0;
+  /// Apply the regions' maximum areas (Pslg::regions; Triangle's -a): off,
+  /// they are ignored with a warning, as Triangle ignores them without -a
+  /// (a region line of 4 numbers gives its attribute as its area too).
+  bool regionAreas = false;
   /// Keep the phase-1 overlay and the classified edges in the result (for inspection).
   bool keepOverlay = true;
   bool keepEdges = true;

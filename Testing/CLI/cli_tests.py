@@ -156,7 +156,8 @@ def group_help():
         check(p.returncode == 0 and p.stdout.startswith("Usage: osm-mesh INPUT"),
               flag + " prints the usage on stdout, exit 0", p.stdout[:100] + p.stderr)
         for option in ("-o", "--domain", "--min-angle", "--gamma", "--max-edge", "--no-resolve",
-                       "--merge-tolerance", "--max-steiner", "--project-xy", "--stats", "--svg", "--version"):
+                       "--merge-tolerance", "--max-steiner", "--project-xy", "--region-areas",
+                       "--stats", "--svg", "--version"):
             check(option in p.stdout, flag + " documents " + option)
     p = run("--version")
     check(p.returncode == 0 and p.stdout.startswith("osm-mesh ") and
@@ -373,8 +374,12 @@ def group_formats():
         f.write(poly_text([(0, 0), (10, 0), (10, 10), (0, 10), (3, 3), (7, 3), (7, 7), (3, 7)],
                           [(0, 1), (1, 2), (2, 3), (3, 0), (4, 5), (5, 6), (6, 7), (7, 4)]) +
                 "2\n0 1 1 -2.5\n1 5 5 0.125 0.05\n")
-    text = mesh_ok(regions, "-o", out("regions.node")).stderr
-    check("area" not in text, "regions: the area limit is applied, no warning", text)
+    text = mesh_ok(regions, "-o", out("regions-default.node")).stderr
+    check("1 region(s) set a maximum triangle area, which is not applied" in text and
+          "--region-areas" in text,
+          "regions: by default (as Triangle without -a) the area limit is said not applied", text)
+    text = mesh_ok(regions, "-o", out("regions.node"), "--region-areas").stderr
+    check("area" not in text, "regions: --region-areas applies the area limit, no warning", text)
     with open(out("regions.ele")) as f:
         rows = [l.split() for l in f if l.strip()]
     rv, rt, _ = read_triangle_files(out("regions"))
@@ -542,6 +547,7 @@ def group_errors():
         ([square, "--max-steiner", "-3"], ["--max-steiner", "'-3'"]),
         ([square, "--max-steiner", "2.5"], ["--max-steiner"]),
         ([square, "--no-resolve=yes"], ["--no-resolve takes no value"]),
+        ([square, "--region-areas=1"], ["--region-areas takes no value"]),
         ([square, "-o", out("mesh.txt")], ["mesh.txt", ".vtp, .vtu, .vtk or .node"]),
         ([out("input.txt")], ["input.txt", ".poly, .node, .vtp or .vtk"]),
     ]

@@ -566,9 +566,16 @@ TEST(Mesher, RegionalAttributesOfASharedRegionAreTheLastSeeds)
   EXPECT_TRUE(mentions(r.warnings,
     "11 region point(s) share their region with a later one, whose attribute and maximum area "
     "the region takes (as Triangle does), e.g. region 0 at"));
-  // Seed 3's area limit is overridden by seed 11's none: the mesh is as without it.
+  EXPECT_TRUE(mentions(r.warnings,
+    "1 region(s) set a maximum triangle area, which is not applied: turn on region areas"));
+  // Applied, seed 3's area limit is overridden by seed 11's none: the mesh
+  // is as without it, and nothing is said.
+  Options areas;
+  areas.regionAreas = true;
+  const Result applied = mesh(p, areas);
+  EXPECT_FALSE(mentions(applied.warnings, "maximum triangle area"));
   p.regions[3].maxArea = -1.0;
-  EXPECT_EQ(mesh(p).mesh.triangles, r.mesh.triangles);
+  EXPECT_EQ(applied.mesh.triangles, r.mesh.triangles);
 
   p.regions[4].seed = { std::nan(""), 0.0 };
   const Result bad = mesh(p);
@@ -588,7 +595,9 @@ TEST(Mesher, RegionalMaximumAreaBoundsEveryTriangleOfItsRegion)
   // inner square's region has at most its area, and the outer one is coarser.
   Pslg p = squareInSquare();
   p.regions = { { { 0.1, 0.1 }, 1.0 }, { { 0.5, 0.5 }, 2.0, 0.001 } };
-  const Result r = meshAndValidate(p, "inner area 0.001");
+  Options areas;
+  areas.regionAreas = true;
+  const Result r = meshAndValidate(p, "inner area 0.001", areas);
   std::size_t inner = 0;
   double innerLargest = 0, outerLargest = 0;
   for (std::size_t t = 0; t < r.mesh.triangles.size(); ++t)
@@ -604,11 +613,17 @@ TEST(Mesher, RegionalMaximumAreaBoundsEveryTriangleOfItsRegion)
   EXPECT_GT(outerLargest, 0.01);
   EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
 
+  // Off (the default, as Triangle without -a), the limit is said not to be applied.
+  const Result off = meshAndValidate(p, "inner area, not applied");
+  EXPECT_LT(off.mesh.triangles.size(), r.mesh.triangles.size() / 4);
+  EXPECT_TRUE(
+    mentions(off.warnings, "1 region(s) set a maximum triangle area, which is not applied"));
+
   // With a maximum edge length too, the tighter of the two applies in the region.
-  Options o;
+  Options o = areas;
   o.maxEdgeLength = 0.02; // equilateral area 1.7e-4, below 0.001
   const Result both = meshAndValidate(p, "inner area and maximum edge", o);
-  Options coarse;
+  Options coarse = areas;
   coarse.maxEdgeLength = 0.2;
   const Result loose = meshAndValidate(p, "inner area and a looser maximum edge", coarse);
   for (std::size_t t = 0; t < loose.mesh.triangles.size(); ++t)
@@ -618,7 +633,7 @@ TEST(Mesher, RegionalMaximumAreaBoundsEveryTriangleOfItsRegion)
 
   // One too small to mesh is refused at once, naming the limit.
   p.regions[1].maxArea = 1e-30;
-  const Result tiny = mesh(p);
+  const Result tiny = mesh(p, areas);
   EXPECT_FALSE(tiny.ok);
   EXPECT_NE(tiny.error.find("a region's maximum triangle area is too small"), std::string::npos)
     << tiny.error;

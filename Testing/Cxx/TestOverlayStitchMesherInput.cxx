@@ -493,7 +493,16 @@ int TestFieldRegions()
   Check(h.NoError() && !mesh->GetCellData()->GetArray("RegionAttribute"),
     "without RegionAttributes the mesh has no RegionAttribute array");
   AddFieldRegions(input, 4, { 1, 1, 5, -1, 5, 5, 9, 0.05 });
-  mesh = h.Run(input, "RegionAttributes with 4 components");
+  mesh = h.Run(input, "RegionAttributes with 4 components, areas off");
+  Check(h.Messages->HasWarning(
+          { "1 region(s) set a maximum triangle area, which is not applied", "ApplyRegionAreas" }),
+    "by default (as Triangle without -a) the area limit is said not to be applied");
+  const vtkIdType withoutAreas = mesh->GetNumberOfCells();
+  h.Mesher->ApplyRegionAreasOn();
+  mesh = h.Run(input, "RegionAttributes with 4 components, areas on");
+  h.Mesher->ApplyRegionAreasOff();
+  Check(mesh->GetNumberOfCells() > 4 * withoutAreas && !h.Messages->HasWarning({ "area" }),
+    "ApplyRegionAreas: the inner region is refined, and nothing is said");
   vtkDataArray* attribute = mesh->GetCellData()->GetArray("RegionAttribute");
   Check(attribute && attribute->GetNumberOfTuples() == mesh->GetNumberOfCells(),
     "a RegionAttribute cell array, one value per triangle");

@@ -58,6 +58,7 @@ def main(plugin, data_dir):
         "MergeTolerance": 0.0,
         "ProjectToXYPlane": 0,
         "UseInputHolePoints": 1,
+        "ApplyRegionAreas": 0,
         "MaximumSteinerPoints": 0,
         "GenerateEdges": 1,
         "GenerateOverlay": 1,

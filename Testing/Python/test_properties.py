@@ -83,8 +83,7 @@ def mesh_of(mesher, errors=None):
     return servermanager.Fetch(mesher, idx=0)
 
 
-def area3d(poly):
-    total = 0.0
+def triangle_areas(poly):
     points = poly.GetPoints()
     for c in range(poly.GetNumberOfCells()):
         ids = poly.GetCell(c).GetPointIds()
@@ -92,8 +91,11 @@ def area3d(poly):
         u = [b[i] - a[i] for i in range(3)]
         v = [p[i] - a[i] for i in range(3)]
         n = (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])
-        total += 0.5 * math.sqrt(sum(x * x for x in n))
-    return total
+        yield 0.5 * math.sqrt(sum(x * x for x in n))
+
+
+def area3d(poly):
+    return sum(triangle_areas(poly))
 
 
 def statistic(poly, name):
@@ -118,7 +120,8 @@ def centroids_inside(poly, lo, hi):
 
 def test_defaults(mesher):
     names = mesher.ListProperties()
-    for name, value in (("MergeTolerance", 0.0), ("ProjectToXYPlane", 0), ("UseInputHolePoints", 1)):
+    for name, value in (("MergeTolerance", 0.0), ("ProjectToXYPlane", 0), ("UseInputHolePoints", 1),
+                        ("ApplyRegionAreas", 0)):
         check(name in names, "property %s exists" % name)
         if name in names:
             check(mesher.GetPropertyValue(name) == value,
@@ -208,6 +211,15 @@ def test_poly_with_hole(data_dir):
     check(abs(area3d(mesh) - 100.0) < 1e-9 and centroids_inside(mesh, 4, 6) > 0,
           "UseInputHolePoints=0: the file's hole is meshed")
     check(mesh.GetNumberOfCells() > with_hole, "UseInputHolePoints=0: more triangles")
+    # The file's region line (seed (1, 1), attribute 7, maximum area 0.5)
+    # bounds every triangle of the ring with ApplyRegionAreas, as Triangle's -a.
+    mesher.UseInputHolePoints = 1
+    mesher.ApplyRegionAreas = 1
+    mesh = mesh_of(mesher)
+    largest = max(triangle_areas(mesh))
+    check(largest <= 0.5 and mesh.GetNumberOfCells() >= 96 / 0.5,
+          "ApplyRegionAreas=1: every triangle within the region's area 0.5 (%d triangles, "
+          "largest %.3g)" % (mesh.GetNumberOfCells(), largest))
     Delete(mesher)
     Delete(reader)
 
