@@ -94,6 +94,17 @@ def triangle_areas(poly):
         yield 0.5 * math.sqrt(sum(x * x for x in n))
 
 
+def longest_edge(poly):
+    points, longest = poly.GetPoints(), 0.0
+    for c in range(poly.GetNumberOfCells()):
+        ids = poly.GetCell(c).GetPointIds()
+        corners = [points.GetPoint(ids.GetId(k)) for k in range(3)]
+        for k in range(3):
+            a, b = corners[k], corners[(k + 1) % 3]
+            longest = max(longest, math.sqrt(sum((a[i] - b[i]) ** 2 for i in range(3))))
+    return longest
+
+
 def area3d(poly):
     return sum(triangle_areas(poly))
 
@@ -211,6 +222,15 @@ def test_poly_with_hole(data_dir):
     check(abs(area3d(mesh) - 100.0) < 1e-9 and centroids_inside(mesh, 4, 6) > 0,
           "UseInputHolePoints=0: the file's hole is meshed")
     check(mesh.GetNumberOfCells() > with_hole, "UseInputHolePoints=0: more triangles")
+    # No edge longer than MaximumEdgeLength: at 0.25 completion makes a longer
+    # diagonal, which is split.
+    mesher.UseInputHolePoints = 1
+    mesher.MaximumEdgeLength = 0.25
+    mesh = mesh_of(mesher)
+    check(longest_edge(mesh) <= 0.25 and statistic(mesh, "LongEdgesSplit") >= 1,
+          "MaximumEdgeLength=0.25: no longer edge (longest %.6g, %d long edge(s) split)" % (
+              longest_edge(mesh), statistic(mesh, "LongEdgesSplit")))
+    mesher.MaximumEdgeLength = 0.0
     # The file's region line (seed (1, 1), attribute 7, maximum area 0.5)
     # bounds every triangle of the ring with ApplyRegionAreas, as Triangle's -a.
     mesher.UseInputHolePoints = 1
