@@ -618,6 +618,11 @@ void Mesher::meshRounds(Work& w)
     const std::size_t warningsBefore = res.warnings.size();
     if (round > 0)
       run.newRound();
+    // Region areas mesh again, mostly finer: this round is the smaller part.
+    if (!regionSizesKnown && options.regionAreas &&
+      std::any_of(input.regions.begin(), input.regions.end(),
+        [](const RegionAttribute& r) { return r.maxArea > 0; }))
+      run.shareRound(0.2);
     Array<Segment> segments = w.segments;
     Array<int> hull;
     const Domain domain = chooseDomain(w, hull);

@@ -130,16 +130,6 @@ bool outside(const Point& a, const Point& b, const Point& c, const Bounds& r)
     std::max({ a.y, b.y, c.y }) < r.lo.y || std::min({ a.y, b.y, c.y }) > r.hi.y;
 }
 
-/// The smallest square of the boxes' bounds (infinite for none): shorter
-/// edges need no box test.
-double loosestBoxEdge2(const Array<SizeBox>& boxes)
-{
-  double least = std::numeric_limits<double>::infinity();
-  for (const SizeBox& b : boxes)
-    least = std::min(least, b.maxEdgeLength * b.maxEdgeLength);
-  return least;
-}
-
 class Refiner
 {
 public:
@@ -157,7 +147,6 @@ public:
     , within(options.refineWithin)
     , sizeWithin(options.sizeWithin)
     , sizeBoxes(options.sizeBoxes)
-    , boxEdge2(loosestBoxEdge2(options.sizeBoxes))
   {}
 
   Overlay refine();
@@ -179,14 +168,6 @@ private:
   }
   void makeBox();
   void enqueueIfNeeded(int t);
-  /// Whether abc meets a size box whose bound its longest edge (squared) exceeds.
-  bool beyondSizeBox(const Point& a, const Point& b, const Point& c, double longest2) const
-  {
-    for (const SizeBox& s : sizeBoxes)
-      if (longest2 > s.maxEdgeLength * s.maxEdgeLength && !outside(a, b, c, s.box))
-        return true;
-    return false;
-  }
   void refineTriangle(int t);
   Point steinerPoint(int t, const Point& circumcenter) const;
   void splitHullEdge(int edge);
@@ -214,8 +195,7 @@ private:
   const bool beyondGuarantee; ///< Γ below 1 (θ1 above 30 degrees): refinement need not end
   const Bounds within;
   const Bounds sizeWithin;
-  const Array<SizeBox> sizeBoxes;
-  const double boxEdge2; ///< no box bounds an edge shorter than this (squared)
+  const SizeBoxes sizeBoxes;
 
   Overlay out;
   Triangulation& mesh = out.mesh;
@@ -276,7 +256,7 @@ void Refiner::enqueueIfNeeded(int t)
     const double longest = std::max({ la, lb, lc });
     const bool tooLong =
       (maxEdge > 0 && longest > maxEdge2 && !(limited && outside(a, b, c, sizeWithin))) ||
-      (longest > boxEdge2 && beyondSizeBox(a, b, c, longest));
+      sizeBoxes.tooLong(a, b, c, longest);
     if (!tooLong && o.x * o.x + o.y * o.y <= gamma2 * std::min({ la, lb, lc }))
       return;
     // Poor, but beyond the bounds where output can be: leave it (tested only
@@ -392,25 +372,20 @@ double Refiner::pointsForMaxEdge() const
   // as many triangles as vertices: a region of area A needs at least
   // A / (sqrt(3)/2 h^2) vertices. The region is the box, or with limited
   // refinement the bounds, padded by an edge each way (triangles across them
-  // are refined too); a size box adds its own. h^2 may underflow: the count
-  // is then infinite.
-  const auto points = [](double w, double h, double edge) {
-    return w * h / (0.8660254037844386 * edge * edge);
-  };
-  double count = 0;
+  // are refined too); the size boxes add theirs. h^2 may underflow: the
+  // count is then infinite.
+  const Bounds box{ mesh.points[0], mesh.points[2] };
+  double count = sizeBoxes.pointsNeeded(box);
   if (maxEdge > 0)
   {
-    double w = mesh.points[2].x - mesh.points[0].x, h = mesh.points[2].y - mesh.points[0].y;
+    double w = box.width(), h = box.height();
     if (limited)
     {
       w = std::min(w, sizeWithin.width() + 2 * maxEdge);
       h = std::min(h, sizeWithin.height() + 2 * maxEdge);
     }
-    count = points(w, h, maxEdge);
+    count += w * h / (0.8660254037844386 * maxEdge * maxEdge);
   }
-  for (const SizeBox& s : sizeBoxes)
-    count += points(
-      s.box.width() + 2 * s.maxEdgeLength, s.box.height() + 2 * s.maxEdgeLength, s.maxEdgeLength);
   return count;
 }
 

@@ -5,19 +5,13 @@
 #include "Geometry.h"
 #include "HugePages.h"
 #include "RunContext.h"
+#include "SizeBoxes.h"
 #include "Triangulation.h"
 
 #include <vector>
 
 namespace osm
 {
-
-/// A tighter size bound within a box (a region's, for its maximum area).
-struct SizeBox
-{
-  Bounds box;
-  double maxEdgeLength = 0.0;
-};
 
 struct OverlayOptions
 {
@@ -37,8 +31,7 @@ struct OverlayOptions
   /// beyond them only quality counts.
   Bounds sizeWithin;
   /// Triangles that meet one of these boxes have no edge longer than its
-  /// bound (whatever maxEdgeLength and sizeWithin say). Each triangle is
-  /// tested against every box: meant for a few (the regions with an area limit).
+  /// bound (whatever maxEdgeLength and sizeWithin say).
   Array<SizeBox> sizeBoxes;
 };
 

@@ -41,14 +41,21 @@ public:
     if (!progress)
       return;
     phaseName = name;
-    phaseBegin = roundBegin + (1.0 - roundBegin) * begin;
-    phaseEnd = roundBegin + (1.0 - roundBegin) * end;
+    phaseBegin = roundBegin + (roundEnd - roundBegin) * begin;
+    phaseEnd = roundBegin + (roundEnd - roundBegin) * end;
     report(0.0);
   }
   /// The mesher meshes the input again (after splitting crossings, or with
   /// another domain): the new round's phases share what is left of the run,
   /// so that progress never goes back.
-  void newRound() { roundBegin = phaseBegin + (phaseEnd - phaseBegin) * lastFraction; }
+  void newRound()
+  {
+    roundBegin = phaseBegin + (phaseEnd - phaseBegin) * lastFraction;
+    roundEnd = 1.0;
+  }
+  /// This round is expected to be followed by a larger one: it takes only
+  /// share of what is left.
+  void shareRound(double share) { roundEnd = roundBegin + share * (1.0 - roundBegin); }
   /// fraction of the current phase; also polls for an abort.
   void report(double fraction)
   {
@@ -80,6 +87,7 @@ private:
   double phaseEnd = 1.0;
   double lastFraction = 0.0; ///< of the current phase, as last reported
   double roundBegin = 0.0;
+  double roundEnd = 1.0;
   unsigned ticks = 0;
 };
 

@@ -631,6 +631,16 @@ TEST(Mesher, RegionalMaximumAreaBoundsEveryTriangleOfItsRegion)
       EXPECT_LE(triangleArea(loose, t), 0.001);
   EXPECT_GT(both.mesh.triangles.size(), loose.mesh.triangles.size());
 
+  // One far larger than its region (1e300: "no limit" for some tools) leaves
+  // it as it is; found by a review: the estimate overflowed to NaN and the
+  // input was refused as needing too many points.
+  Pslg tinySquare = square();
+  for (Point& q : tinySquare.points)
+    q = { q.x * 1e-10, q.y * 1e-10 };
+  tinySquare.regions = { { { 0.5e-10, 0.5e-10 }, 7.0, 1e300 } };
+  const Result huge = meshAndValidate(tinySquare, "area 1e300 on a 1e-10 square", areas);
+  EXPECT_EQ(huge.mesh.triangles.size(), 2u);
+
   // One too small to mesh is refused at once, naming the limit.
   p.regions[1].maxArea = 1e-30;
   const Result tiny = mesh(p, areas);
@@ -830,6 +840,25 @@ TEST(Mesher, ProgressNeverGoesBackWhenARoundIsMeshedAgain)
     EXPECT_TRUE(progress.monotone) << name;
     EXPECT_GT(progress.last, 0.99) << name;
   }
+  // With region areas the second round is most of the work: the first one
+  // takes the first fifth of the run.
+  struct Phases : Progress
+  {
+    std::vector<std::pair<std::string, double>> seen;
+    void report(double f, const char* phase) override { seen.emplace_back(phase, f); }
+  } phases;
+  Pslg p = squareInSquare();
+  p.regions = { { { 0.5, 0.5 }, 2.0, 1e-5 } };
+  Options areas;
+  areas.regionAreas = true;
+  ASSERT_TRUE(mesh(p, areas, &phases).ok);
+  double secondOverlay = -1;
+  for (std::size_t k = 1; k < phases.seen.size() && secondOverlay < 0; ++k)
+    if (phases.seen[k].first == std::string("overlay") &&
+      phases.seen[k - 1].first != phases.seen[k].first)
+      secondOverlay = k > 2 ? phases.seen[k].second : -1;
+  EXPECT_GT(secondOverlay, 0.15);
+  EXPECT_LE(secondOverlay, 0.25);
 }
 
 TEST(Mesher, EveryLongStepPollsForAnAbort)

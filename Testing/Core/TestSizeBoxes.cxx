@@ -1,0 +1,76 @@
+// SizeBoxes: the grid finds exactly the boxes a scan finds, and the point
+// estimate neither counts overlapping boxes twice nor overflows.
+#include "SizeBoxes.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+using namespace osm;
+
+namespace
+{
+
+/// The answer of a scan over every box.
+bool scan(const Array<SizeBox>& boxes, const Point& a, const Point& b, const Point& c, double l2)
+{
+  for (const SizeBox& s : boxes)
+  {
+    const Bounds& r = s.box;
+    const bool outside = std::max({ a.x, b.x, c.x }) < r.lo.x ||
+      std::min({ a.x, b.x, c.x }) > r.hi.x || std::max({ a.y, b.y, c.y }) < r.lo.y ||
+      std::min({ a.y, b.y, c.y }) > r.hi.y;
+    if (l2 > s.maxEdgeLength * s.maxEdgeLength && !outside)
+      return true;
+  }
+  return false;
+}
+
+} // namespace
+
+TEST(SizeBoxes, TheGridAnswersAsAScanOfEveryBox)
+{
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> U(0, 1);
+  for (int count : { 1, 3, 40, 900 })
+  {
+    Array<SizeBox> boxes;
+    for (int k = 0; k < count; ++k)
+    {
+      const Point lo{ U(rng), U(rng) };
+      const double w = 0.3 * U(rng) * U(rng), h = 0.3 * U(rng) * U(rng);
+      boxes.push_back({ { lo, { lo.x + w, lo.y + h } }, 0.01 + 0.1 * U(rng) });
+    }
+    const SizeBoxes grid(boxes);
+    int hits = 0;
+    for (int t = 0; t < 20000; ++t)
+    {
+      const Point a{ 1.4 * U(rng) - 0.2, 1.4 * U(rng) - 0.2 };
+      const double r = 0.2 * U(rng) * U(rng);
+      const Point b{ a.x + r * (U(rng) - 0.5), a.y + r * (U(rng) - 0.5) };
+      const Point c{ a.x + r * (U(rng) - 0.5), a.y + r * (U(rng) - 0.5) };
+      const double l2 = std::max({ dist2(a, b), dist2(b, c), dist2(a, c) });
+      const bool expected = scan(boxes, a, b, c, l2);
+      hits += expected;
+      ASSERT_EQ(grid.tooLong(a, b, c, l2), expected) << count << " boxes, triangle " << t;
+    }
+    EXPECT_GT(hits, 0) << count << " boxes";
+  }
+}
+
+TEST(SizeBoxes, PointsNeededCountsOverlapsOnceAndNeverOverflows)
+{
+  const Bounds mesh{ { -1, -1 }, { 2, 2 } };
+  // 100 copies of the unit box at bound 0.01: the unit box once, about 11,547.
+  Array<SizeBox> copies(100, SizeBox{ { { 0, 0 }, { 1, 1 } }, 0.01 });
+  const double once = 1.0 / (0.8660254037844386 * 1e-4);
+  EXPECT_NEAR(SizeBoxes(copies).pointsNeeded(mesh), once, 1e-6 * once);
+  EXPECT_NEAR(SizeBoxes({ copies.front() }).pointsNeeded(mesh), once, 1e-6 * once);
+  // A bound whose square overflows asks for nothing; a box beyond the mesh too.
+  EXPECT_EQ(SizeBoxes({ SizeBox{ { { 0, 0 }, { 1, 1 } }, 1e300 } }).pointsNeeded(mesh), 0.0);
+  EXPECT_EQ(SizeBoxes({ SizeBox{ { { 5, 5 }, { 6, 6 } }, 0.01 } }).pointsNeeded(mesh), 0.0);
+  // A bound whose square underflows asks for infinitely many: refused upstream.
+  EXPECT_EQ(SizeBoxes({ SizeBox{ { { 0, 0 }, { 1, 1 } }, 1e-300 } }).pointsNeeded(mesh),
+    std::numeric_limits<double>::infinity());
+}
