@@ -318,9 +318,18 @@ Carving carveDomain(const Array<Point>& P, const Array<Triangle>& tris,
   auto locate = [&](const Point& q) {
     return grid ? grid->find(q, component, removed) : findByScan(P, tris, q, component, removed);
   };
+  Array<char> constrainedEnd; // per vertex, made for the first seed found
+  auto onSegment = [&](int t, const Point& q) {
+    if (constrainedEnd.empty())
+    {
+      constrainedEnd.assign(P.size(), char{ 0 });
+      for (const Segment& s : constrained)
+        constrainedEnd[s[0]] = constrainedEnd[s[1]] = 1;
+    }
+    return onConstrainedEdge(P, tris, a, t, q, constrainedEnd);
+  };
   if (!holes.empty())
   {
-    Array<char> constrainedEnd; // per vertex, made for the first seed found
     if (holes.size() > kHoleSeedsScanned)
       grid.emplace(P, tris, component, removed);
     for (std::size_t h = 0; h < holes.size(); ++h)
@@ -332,23 +341,19 @@ Carving carveDomain(const Array<Point>& P, const Array<Triangle>& tris,
         continue;
       }
       removed[component[t]] = 1;
-      if (constrainedEnd.empty())
-      {
-        constrainedEnd.assign(P.size(), char{ 0 });
-        for (const Segment& s : constrained)
-          constrainedEnd[s[0]] = constrainedEnd[s[1]] = 1;
-      }
-      if (onConstrainedEdge(P, tris, a, t, holes[h], constrainedEnd))
+      if (onSegment(t, holes[h]))
         out.seedsOnSegments.push_back(static_cast<int>(h));
     }
   }
   // The grid skips the triangles removed when it was built, and no others.
   if (!grid && regionSeeds.size() > kHoleSeedsScanned)
     grid.emplace(P, tris, component, removed);
-  for (const Point& q : regionSeeds)
+  for (std::size_t k = 0; k < regionSeeds.size(); ++k)
   {
-    const int t = locate(q);
+    const int t = locate(regionSeeds[k]);
     out.seedRegion.push_back(t < 0 ? -1 : t);
+    if (t >= 0 && onSegment(t, regionSeeds[k]))
+      out.regionSeedsOnSegments.push_back(static_cast<int>(k));
   }
   // Regions are numbered in the order of their smallest triangle index: a
   // component's root comes before its other triangles, which take its id.

@@ -38,6 +38,9 @@ struct Carving
   /// Per region seed (carveDomain's regionSeeds): its region, or -1 if it lies
   /// outside the remaining triangles.
   Array<int> seedRegion;
+  /// Region seeds on a segment or at a segment's end (within rounding): the
+  /// region they give their attribute to is the first their search met.
+  Array<int> regionSeedsOnSegments;
   /// Removing the exterior left no triangle (before any hole): the segments'
   /// cycles enclose no area (collinear segments over each other).
   bool enclosedNothing = false;

@@ -867,6 +867,16 @@ void Mesher::warnAboutRegionSeeds(const Carving& carve)
       "(as Triangle does), e.g. region " +
       std::to_string(firstOverridden) + " at " +
       formatPoint(regions[firstOverridden].seed, options.pointFormat));
+  if (!carve.regionSeedsOnSegments.empty())
+  {
+    const int k = carve.regionSeedsOnSegments.front();
+    res.warnings.push_back(std::to_string(carve.regionSeedsOnSegments.size()) +
+      " region point(s) lie on a segment or at its end, e.g. region " + std::to_string(k) + " at " +
+      formatPoint(regions[k].seed, options.pointFormat) +
+      ": the region on one side of it takes its attribute" +
+      (options.regionAreas ? " and area" : "") +
+      ", which side is not defined; move the point into its region");
+  }
   if (limits > 0 && !options.regionAreas)
     res.warnings.push_back(std::to_string(limits) +
       " region(s) set a maximum triangle area, which is not applied: turn on region areas "

@@ -491,6 +491,21 @@ TEST(Mesher, HoleSeedOnASegmentIsSaid)
   }
   p.holes = { { 0.5, 0.5 } };
   EXPECT_FALSE(mentions(meshAndValidate(p, "seed inside").warnings, "lie on a segment"));
+  // Region seeds likewise (found by a review of region areas: no warning).
+  p.holes.clear();
+  for (const Point& seed : { Point{ 0.25, 0.5 }, Point{ 0.25, 0.25 }, Point{ 0.5, 0.25 } })
+  {
+    p.regions = { { { 0.1, 0.1 }, 1.0 }, { seed, 2.0, 0.01 } };
+    Options areas;
+    areas.regionAreas = true;
+    const Result r = meshAndValidate(p, "region seed on a segment", areas);
+    EXPECT_TRUE(
+      mentions(r.warnings, "1 region point(s) lie on a segment or at its end, e.g. region 1 at"))
+      << seed.x << " " << seed.y;
+    EXPECT_TRUE(mentions(r.warnings, "takes its attribute and area, which side is not defined"));
+  }
+  p.regions = { { { 0.5, 0.5 }, 2.0 } };
+  EXPECT_FALSE(mentions(meshAndValidate(p, "region seed inside").warnings, "lie on a segment"));
 }
 
 TEST(Mesher, HolesThatRemoveEveryRegionAreSaid)
