@@ -545,8 +545,11 @@ bool keptWithin(const Array<Point>& points, const Array<Triangle>& triangles,
   return true;
 }
 
-/// The bounds of each region whose edge bound is tighter than the overlay's
-/// own (a maximum area), with that bound.
+/// Where each region whose edge bound is tighter than the overlay's own (a
+/// maximum area) lies, with that bound: the bounds of each of its triangles
+/// in this round. Together they cover the region and little more (a
+/// region's own bounds would take in every region nested within it), and an
+/// overlay triangle that reaches into the region meets one of them.
 Array<SizeBox> regionSizeBoxes(const Array<Point>& points, const Array<Triangle>& triangles,
   const Array<int>& regionId, const Array<double>& regionMaxEdge, const OverlayOptions& oo)
 {
@@ -560,27 +563,15 @@ Array<SizeBox> regionSizeBoxes(const Array<Point>& points, const Array<Triangle>
   }
   if (!any)
     return {};
-  Array<Bounds> box(regionMaxEdge.size());
-  Array<char> seen(regionMaxEdge.size(), 0);
+  Array<SizeBox> boxes;
   for (std::size_t t = 0; t < triangles.size(); ++t)
   {
     const int r = regionId[t];
-    if (r < 0 || !tighter[r])
-      continue;
-    for (int v : triangles[t])
-    {
-      const Point& p = points[v];
-      if (!seen[r])
-        box[r].lo = box[r].hi = p;
-      seen[r] = 1;
-      box[r].lo = { std::min(box[r].lo.x, p.x), std::min(box[r].lo.y, p.y) };
-      box[r].hi = { std::max(box[r].hi.x, p.x), std::max(box[r].hi.y, p.y) };
-    }
+    if (r >= 0 && tighter[r])
+      boxes.push_back({ boundsOf(std::initializer_list<Point>{ points[triangles[t][0]],
+                          points[triangles[t][1]], points[triangles[t][2]] }),
+        regionMaxEdge[r] });
   }
-  Array<SizeBox> boxes;
-  for (std::size_t r = 0; r < regionMaxEdge.size(); ++r)
-    if (seen[r])
-      boxes.push_back({ box[r], regionMaxEdge[r] });
   return boxes;
 }
 

@@ -628,6 +628,22 @@ TEST(Mesher, RegionalMaximumAreaBoundsEveryTriangleOfItsRegion)
   EXPECT_GT(outerLargest, 0.01);
   EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
 
+  // A limit on the ring around the inner square leaves the inner region to
+  // grade out of it (a review found it refined alike: the ring's bounds take
+  // it in).
+  Pslg ring = squareInSquare();
+  ring.regions = { { { 0.1, 0.1 }, 1.0, 1e-4 }, { { 0.5, 0.5 }, 2.0 } };
+  const Result graded = meshAndValidate(ring, "ring area 1e-4", areas);
+  std::size_t inside = 0, outside = 0;
+  for (std::size_t t = 0; t < graded.mesh.triangles.size(); ++t)
+  {
+    (inInnerSquare(graded, t) ? inside : outside) += 1;
+    if (!inInnerSquare(graded, t))
+      EXPECT_LE(triangleArea(graded, t), 1e-4);
+  }
+  std::printf("ring area 1e-4: %zu triangles in the ring, %zu inside\n", outside, inside);
+  EXPECT_LT(inside, outside / 10);
+
   // Off (the default, as Triangle without -a), the limit is said not to be applied.
   const Result off = meshAndValidate(p, "inner area, not applied");
   EXPECT_LT(off.mesh.triangles.size(), r.mesh.triangles.size() / 4);
