@@ -724,7 +724,7 @@ void Mesher::meshRounds(Work& w)
       continue;
     }
     // A region's maximum area is a bound on its edges, which the overlay
-    // applies within the region's bounds: found in this round, meshed again.
+    // applies over the region's triangles: found in this round, meshed again.
     const Array<double> regionMaxEdge = regionMaxEdges(carve, oo.maxEdgeLength);
     if (!regionSizesKnown)
     {
