@@ -247,6 +247,92 @@ TEST(Properties, MaximumEdgeLengthHoldsOnEveryEdge)
   std::printf("%zu long edges split in %zu meshes\n", split, meshes);
 }
 
+/// A rotated unit square holding up to 9 rectangles (one per cell of a 3 x 3
+/// grid), some holding a smaller one: nested and side-by-side regions. Each
+/// region gets a seed with no area limit or one of 1e-3 and 2e-4.
+struct Regions
+{
+  Pslg pslg;
+  double angle = 0;
+  std::vector<Bounds> rects; ///< in unrotated coordinates, inner ones after their outer
+  std::vector<double> limit; ///< per rect, then the square's last; 0 for none
+};
+
+Regions nestedRegions(std::mt19937_64& rng)
+{
+  std::uniform_real_distribution<double> U(0, 1);
+  Regions r;
+  r.angle = U(rng) * kPi;
+  const double c = std::cos(r.angle), s = std::sin(r.angle);
+  auto add = [&](const Bounds& b) {
+    const int i = static_cast<int>(r.pslg.points.size());
+    for (const Point& q : { b.lo, Point{ b.hi.x, b.lo.y }, b.hi, Point{ b.lo.x, b.hi.y } })
+      r.pslg.points.push_back({ q.x * c - q.y * s, q.x * s + q.y * c });
+    for (int k = 0; k < 4; ++k)
+      r.pslg.segments.push_back({ i + k, i + (k + 1) % 4 });
+  };
+  const double limits[3] = { 0, 1e-3, 2e-4 };
+  for (int cell = 0; cell < 9; ++cell)
+  {
+    if (U(rng) < 0.4)
+      continue;
+    const Point lo{ (cell % 3 + 0.1 + 0.2 * U(rng)) / 3, (cell / 3 + 0.1 + 0.2 * U(rng)) / 3 };
+    const Point hi{ lo.x + 0.4 / 3, lo.y + 0.4 / 3 };
+    r.rects.push_back({ lo, hi });
+    if (U(rng) < 0.5)
+      r.rects.push_back({ { lo.x + 0.1 / 3, lo.y + 0.1 / 3 }, { hi.x - 0.1 / 3, hi.y - 0.1 / 3 } });
+  }
+  add({ { 0, 0 }, { 1, 1 } });
+  for (const Bounds& b : r.rects)
+    add(b);
+  r.rects.push_back({ { 0, 0 }, { 1, 1 } });
+  for (const Bounds& b : r.rects)
+  {
+    // A seed near the lower left corner: inside the region, outside any nested one.
+    const Point q{ b.lo.x + 0.01 / 3, b.lo.y + 0.01 / 3 };
+    r.limit.push_back(limits[rng() % 3]);
+    r.pslg.regions.push_back({ { q.x * c - q.y * s, q.x * s + q.y * c }, double(r.limit.size()),
+      r.limit.back() > 0 ? r.limit.back() : -1.0 });
+  }
+  return r;
+}
+
+TEST(Properties, RegionAreasHoldOnEveryTriangle)
+{
+  Options o;
+  o.regionAreas = true;
+  std::size_t limited = 0;
+  for (int seed = 0; seed < kSeeds; ++seed)
+  {
+    std::mt19937_64 rng(seed);
+    const Regions r = nestedRegions(rng);
+    const Result m = meshAndValidate(r.pslg, "regions seed " + std::to_string(seed), o);
+    const double c = std::cos(r.angle), s = std::sin(r.angle);
+    for (std::size_t t = 0; t < m.mesh.triangles.size(); ++t)
+    {
+      const Triangle& tri = m.mesh.triangles[t];
+      const Point &a = m.mesh.vertices[tri[0]], &b = m.mesh.vertices[tri[1]],
+                  &d = m.mesh.vertices[tri[2]];
+      const Point g{ (a.x + b.x + d.x) / 3, (a.y + b.y + d.y) / 3 };
+      const Point u{ g.x * c + g.y * s, -g.x * s + g.y * c }; // rotated back
+      // The innermost rectangle holding the centroid: nested ones come after.
+      std::size_t k = r.rects.size() - 1;
+      for (std::size_t i = 0; i + 1 < r.rects.size(); ++i)
+        if (u.x > r.rects[i].lo.x && u.x < r.rects[i].hi.x && u.y > r.rects[i].lo.y &&
+          u.y < r.rects[i].hi.y)
+          k = i;
+      EXPECT_EQ(m.regionAttribute[t], double(k + 1)) << "seed " << seed << " triangle " << t;
+      if (r.limit[k] > 0)
+      {
+        ++limited;
+        EXPECT_LE(0.5 * orient2d(a, b, d), r.limit[k] * (1 + 1e-12))
+          << "seed " << seed << " triangle " << t << " of region " << k;
+      }
+    }
+  }
+  EXPECT_GT(limited, 1000u);
+}
+
 TEST(Properties, SameInputSameOutput)
 {
   std::mt19937_64 rng(3);
