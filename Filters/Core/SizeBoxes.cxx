@@ -68,14 +68,15 @@ SizeBoxes::SizeBoxes(const Array<SizeBox>& input)
 
 int SizeBoxes::cellX(double x) const
 {
+  // Clamped before the conversion: a large triangle reaches far beyond.
   const double t = (x - all.lo.x) / all.width() * nx;
-  return nx == 1 ? 0 : std::clamp(static_cast<int>(t), 0, nx - 1);
+  return nx == 1 ? 0 : static_cast<int>(std::clamp(t, 0.0, nx - 1.0));
 }
 
 int SizeBoxes::cellY(double y) const
 {
   const double t = (y - all.lo.y) / all.height() * ny;
-  return ny == 1 ? 0 : std::clamp(static_cast<int>(t), 0, ny - 1);
+  return ny == 1 ? 0 : static_cast<int>(std::clamp(t, 0.0, ny - 1.0));
 }
 
 bool SizeBoxes::tooLong(const Point& a, const Point& b, const Point& c, double longest2) const

@@ -43,6 +43,10 @@ TEST(SizeBoxes, TheGridAnswersAsAScanOfEveryBox)
       boxes.push_back({ { lo, { lo.x + w, lo.y + h } }, 0.01 + 0.1 * U(rng) });
     }
     const SizeBoxes grid(boxes);
+    // A triangle reaching 1e10 beyond the boxes (found by the fuzzer under
+    // UBSan: its cell index overflowed int before being clamped).
+    const Point far{ -1e10, -1e10 }, near{ 0.5, 0.5 }, up{ 0.5, 1e10 };
+    EXPECT_EQ(grid.tooLong(far, near, up, 1e20), scan(boxes, far, near, up, 1e20));
     int hits = 0;
     for (int t = 0; t < 20000; ++t)
     {
