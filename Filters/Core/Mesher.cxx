@@ -735,6 +735,7 @@ void Mesher::meshRounds(Work& w)
         res.warnings.resize(warningsBefore);
         continue;
       }
+      run.shareRound(1.0); // no finer round follows: this one ends the run
     }
     const std::size_t graphPoints = g.points.size(); // the edges' vertices
     if (std::any_of(regionMaxEdge.begin(), regionMaxEdge.end(), [](double h) { return h > 0; }))

@@ -890,6 +890,19 @@ TEST(Mesher, ProgressNeverGoesBackWhenARoundIsMeshedAgain)
       secondOverlay = k > 2 ? phases.seen[k].second : -1;
   EXPECT_GT(secondOverlay, 0.15);
   EXPECT_LE(secondOverlay, 0.25);
+  // Where no finer round follows (the area's bound is looser than the maximum
+  // edge length, or its seed lies outside), the first one still ends the run
+  // (found by a review: progress ended at 0.2).
+  for (const Point& seed : { Point{ 0.5, 0.5 }, Point{ 5, 5 } })
+  {
+    p.regions = { { seed, 2.0, 0.1 } };
+    Options o = areas;
+    o.maxEdgeLength = 0.05;
+    CountingProgress progress;
+    ASSERT_TRUE(mesh(p, o, &progress).ok);
+    EXPECT_TRUE(progress.monotone);
+    EXPECT_GT(progress.last, 0.99) << seed.x;
+  }
 }
 
 TEST(Mesher, EveryLongStepPollsForAnAbort)

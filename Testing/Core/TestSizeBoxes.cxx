@@ -63,6 +63,27 @@ TEST(SizeBoxes, TheGridAnswersAsAScanOfEveryBox)
   }
 }
 
+TEST(SizeBoxes, BoxesOverTheWholeSpanAreListedInFewCells)
+{
+  // 20,000 boxes each over most of the span: one cell per box would list
+  // each in thousands of cells (found by a review: 100,000 such boxes
+  // overflowed the count); the grid coarsens instead, and answers alike.
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> U(0, 1);
+  Array<SizeBox> boxes;
+  for (int k = 0; k < 20000; ++k)
+    boxes.push_back(
+      { { { 0.05 * U(rng), 0.05 * U(rng) }, { 0.95 + 0.05 * U(rng), 0.95 + 0.05 * U(rng) } },
+        0.01 + U(rng) });
+  const SizeBoxes grid(boxes);
+  for (int t = 0; t < 200; ++t)
+  {
+    const Point a{ U(rng), U(rng) }, b{ a.x + 0.1 * U(rng), a.y }, c{ a.x, a.y + 0.1 * U(rng) };
+    const double l2 = std::max({ dist2(a, b), dist2(b, c), dist2(a, c) });
+    ASSERT_EQ(grid.tooLong(a, b, c, l2), scan(boxes, a, b, c, l2)) << t;
+  }
+}
+
 TEST(SizeBoxes, PointsNeededCountsOverlapsOnceAndNeverOverflows)
 {
   const Bounds mesh{ { -1, -1 }, { 2, 2 } };
