@@ -389,6 +389,7 @@ private:
   /// round): the overlay's bound within each one's bounds.
   Array<SizeBox> regionBoxes;
   bool regionSizesKnown = false;
+  int regionRounds = 0; ///< rounds meshed again for regions found in another place
 };
 
 Result Mesher::execute()
@@ -744,6 +745,18 @@ void Mesher::meshRounds(Work& w)
       const LongEdges split = splitLongEdges(g.points, g.origin, c.triangles, carve.regionId,
         c.constrainedEdges, regionMaxEdge, st.predictedMaxAngleDeg, run);
       st.longEdgesSplit = split.split;
+      // A region seed on a segment may fall on the other side in this round
+      // (the meshes differ), so that a region not refined takes the area:
+      // refine where this round's limited regions lie too, mesh again.
+      if (split.remaining > 0 && !regionBoxes.empty() && regionRounds < 2)
+      {
+        ++regionRounds;
+        const Array<SizeBox> more =
+          regionSizeBoxes(g.points, c.triangles, carve.regionId, regionMaxEdge, oo);
+        regionBoxes.insert(regionBoxes.end(), more.begin(), more.end());
+        res.warnings.resize(warningsBefore);
+        continue;
+      }
       if (split.remaining > 0)
         res.warnings.push_back(longEdgesWarning(split));
     }

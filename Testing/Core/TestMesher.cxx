@@ -680,6 +680,34 @@ TEST(Mesher, RegionalMaximumAreaBoundsEveryTriangleOfItsRegion)
     << tiny.error;
 }
 
+TEST(Mesher, RegionSeedOnASegmentStillBoundsTheRegionItGoesTo)
+{
+  // Found by the mesher fuzzer: seed 1 lies on a segment; the first round
+  // put it in the small region, which was refined, and the second in the
+  // region around, which was not (triangles of 6.1 over a limit of 1.125).
+  Pslg p;
+  p.points = { { 12, 12 }, { 0, 0 }, { 4, 0 }, { 8, 12 }, { 1, 15 }, { 11, 13 }, { 0, 2 },
+    { 3, 12 } };
+  p.segments = { { 7, 1 }, { 3, 2 }, { 5, 3 }, { 0, 6 }, { 0, 1 }, { 4, 1 }, { 1, 2 }, { 1, 7 } };
+  p.regions = { { { 10, 12 }, 1.0, 11.25 }, { { 7, 7 }, 2.0, 1.125 } };
+  Options o;
+  o.minAngleDeg = 21;
+  o.domain = Domain::Box;
+  o.regionAreas = true;
+  const Result r = meshAndValidate(p, "region seed on a segment");
+  const Result areas = meshAndValidate(p, "region seed on a segment, areas", o);
+  EXPECT_GT(areas.mesh.triangles.size(), r.mesh.triangles.size());
+  for (std::size_t t = 0; t < areas.mesh.triangles.size(); ++t)
+  {
+    const double limit = areas.regionAttribute[t] == 2.0 ? 1.125
+      : areas.regionAttribute[t] == 1.0                  ? 11.25
+                                                         : 0;
+    if (limit > 0)
+      EXPECT_LE(triangleArea(areas, t), limit) << "triangle " << t;
+  }
+  EXPECT_FALSE(mentions(areas.warnings, "longer than the maximum edge length"));
+}
+
 TEST(Mesher, StitchPointsLieExactlyOnHorizontalAndVerticalSegments)
 {
   // Placed along the overlay edge they crossed, stitch points were off such

@@ -74,17 +74,42 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // of the input's extent for a quarter of the inputs, or none (finer or more
   // bounds make meshes that the validator's brute-force overlap check takes
   // long over: 80,000 runs took 3 times as long with 1/2 to 1/7 on 3/4).
+  double lo = p.points[0].x, hi = lo;
+  for (const osm::Point& q : p.points)
+    for (double c : { q.x, q.y })
+      lo = std::fmin(lo, c), hi = std::fmax(hi, c);
+  const double extent = std::isfinite(hi - lo) ? hi - lo : 0.0;
   if (const int parts = in.byte() % 16; parts >= 2 && parts <= 5)
+    o.maxEdgeLength = extent / parts;
+  // Then region seeds with area limits for a quarter of the inputs: seed k's
+  // attribute is k + 1, so a triangle's attribute names the seed whose area
+  // bounds it (the last seed of its region gives both).
+  const int regions = in.byte() % 8;
+  o.regionAreas = regions > 0 && regions <= 2;
+  for (int k = 0; o.regionAreas && k < regions; ++k)
   {
-    double lo = p.points[0].x, hi = lo;
-    for (const osm::Point& q : p.points)
-      for (double c : { q.x, q.y })
-        lo = std::fmin(lo, c), hi = std::fmax(hi, c);
-    o.maxEdgeLength = std::isfinite(hi - lo) ? (hi - lo) / parts : 0.0;
+    const osm::Point seed{ in.coordinate(), in.coordinate() };
+    const int kind = in.byte() % 3;
+    p.regions.push_back(
+      { seed, double(k + 1), kind == 0 ? -1.0 : extent * extent / (kind == 1 ? 20.0 : 200.0) });
   }
   const osm::Result r = osm::mesh(p, o);
   if (!r.ok)
     return 0; // refused: the message is checked by the unit tests
+  for (std::size_t t = 0; t < r.regionAttribute.size(); ++t)
+  {
+    const int k = static_cast<int>(r.regionAttribute[t]) - 1;
+    if (k < 0 || !(p.regions[k].maxArea > 0))
+      continue;
+    const osm::Triangle& tri = r.mesh.triangles[t];
+    const osm::Point &a = r.mesh.vertices[tri[0]], &b = r.mesh.vertices[tri[1]],
+                     &c = r.mesh.vertices[tri[2]];
+    const double area = 0.5 * ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+    if (area > p.regions[k].maxArea * (1 + 1e-9))
+      fail("triangle above its region's maximum area",
+        "triangle " + std::to_string(t) + " of area " + std::to_string(area) + " > " +
+          std::to_string(p.regions[k].maxArea));
+  }
   // Validate against the input points that the domain kept (the rest are warned about).
   osm::Pslg present;
   std::vector<int> index(p.points.size(), -1);
