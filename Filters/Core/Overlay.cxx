@@ -256,7 +256,7 @@ void Refiner::enqueueIfNeeded(int t)
     const double longest = std::max({ la, lb, lc });
     const bool tooLong =
       (maxEdge > 0 && longest > maxEdge2 && !(limited && outside(a, b, c, sizeWithin))) ||
-      sizeBoxes.tooLong(a, b, c, longest);
+      (!sizeBoxes.empty() && sizeBoxes.tooLong(a, b, c, longest));
     if (!tooLong && o.x * o.x + o.y * o.y <= gamma2 * std::min({ la, lb, lc }))
       return;
     // Poor, but beyond the bounds where output can be: leave it (tested only
