@@ -386,7 +386,7 @@ private:
   /// then applies within all the segments.
   bool sizeEverywhere = false;
   /// The regions with a maximum triangle area, once known (after a first
-  /// round): the overlay's bound within each one's bounds.
+  /// round): their bound over the bounds of each of their triangles.
   Array<SizeBox> regionBoxes;
   bool regionSizesKnown = false;
   int regionRounds = 0; ///< rounds meshed again for regions found in another place
