@@ -2,6 +2,7 @@
 #ifndef osm_Geometry_h
 #define osm_Geometry_h
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -91,6 +92,14 @@ struct Bounds
   double width() const { return hi.x - lo.x; }
   double height() const { return hi.y - lo.y; }
 };
+
+/// Whether the triangle abc lies beyond one side of the bounds (a cheap test
+/// that misses some triangles outside them).
+inline bool outsideBounds(const Point& a, const Point& b, const Point& c, const Bounds& r)
+{
+  return std::max({ a.x, b.x, c.x }) < r.lo.x || std::min({ a.x, b.x, c.x }) > r.hi.x ||
+    std::max({ a.y, b.y, c.y }) < r.lo.y || std::min({ a.y, b.y, c.y }) > r.hi.y;
+}
 
 /// Bounds of points (all zero for none).
 template <typename Points>

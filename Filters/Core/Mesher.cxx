@@ -813,18 +813,18 @@ std::string Mesher::longEdgesWarning(const LongEdges& split) const
 Array<double> Mesher::regionMaxEdges(const Carving& carve, double maxEdge) const
 {
   Array<double> bound(carve.regions, maxEdge);
-  Array<char> claimed(carve.regions, 0);
-  for (std::size_t k = input.regions.size(); k-- > 0;)
+  if (!options.regionAreas)
+    return bound;
+  Array<double> area(carve.regions, -1.0);
+  for (std::size_t k = 0; k < input.regions.size(); ++k)
+    if (carve.seedRegion[k] >= 0)
+      area[carve.seedRegion[k]] = input.regions[k].maxArea; // the last seed wins
+  for (std::size_t r = 0; r < carve.regions; ++r)
   {
-    const int r = carve.seedRegion[k];
-    if (r < 0 || claimed[r])
-      continue;
-    claimed[r] = 1;
-    const double area = input.regions[k].maxArea;
-    if (!options.regionAreas || !(area > 0))
+    if (!(area[r] > 0))
       continue;
     // sqrt(3)/4 h^2 = area; in the core's coordinates, scaled by 2^-exponent.
-    double h = std::ldexp(std::sqrt(4 * area / std::sqrt(3.0)), -exponent);
+    double h = std::ldexp(std::sqrt(4 * area[r] / std::sqrt(3.0)), -exponent);
     // One that underflows stays tiny: the overlay refuses it as too small.
     h = h > 0 ? h : std::numeric_limits<double>::denorm_min();
     bound[r] = bound[r] > 0 ? std::min(bound[r], h) : h;

@@ -122,14 +122,6 @@ void renumberAlongHilbertCurve(Overlay& overlay, RunContext& run, double fractio
     v = newIndex[v];
 }
 
-/// Whether the triangle abc lies beyond one side of the bounds (a cheap test
-/// that misses some triangles outside them, which are then refined).
-bool outside(const Point& a, const Point& b, const Point& c, const Bounds& r)
-{
-  return std::max({ a.x, b.x, c.x }) < r.lo.x || std::min({ a.x, b.x, c.x }) > r.hi.x ||
-    std::max({ a.y, b.y, c.y }) < r.lo.y || std::min({ a.y, b.y, c.y }) > r.hi.y;
-}
-
 class Refiner
 {
 public:
@@ -255,13 +247,13 @@ void Refiner::enqueueIfNeeded(int t)
     const double la = dist2(b, c), lb = dist2(a, c), lc = dist2(a, b);
     const double longest = std::max({ la, lb, lc });
     const bool tooLong =
-      (maxEdge > 0 && longest > maxEdge2 && !(limited && outside(a, b, c, sizeWithin))) ||
+      (maxEdge > 0 && longest > maxEdge2 && !(limited && outsideBounds(a, b, c, sizeWithin))) ||
       (!sizeBoxes.empty() && sizeBoxes.tooLong(a, b, c, longest));
     if (!tooLong && o.x * o.x + o.y * o.y <= gamma2 * std::min({ la, lb, lc }))
       return;
     // Poor, but beyond the bounds where output can be: leave it (tested only
     // here, after the quality test that most new triangles pass).
-    if (limited && outside(a, b, c, within))
+    if (limited && outsideBounds(a, b, c, within))
       return;
   }
   // The key as refineTriangle computes the radius (only its size class counts).

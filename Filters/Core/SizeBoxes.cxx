@@ -9,13 +9,6 @@ namespace osm
 namespace
 {
 
-/// Whether the triangle abc lies beyond one side of the box.
-bool outside(const Point& a, const Point& b, const Point& c, const Bounds& r)
-{
-  return std::max({ a.x, b.x, c.x }) < r.lo.x || std::min({ a.x, b.x, c.x }) > r.hi.x ||
-    std::max({ a.y, b.y, c.y }) < r.lo.y || std::min({ a.y, b.y, c.y }) > r.hi.y;
-}
-
 /// The area of b within r (0 where they do not meet).
 double areaWithin(const Bounds& b, const Bounds& r)
 {
@@ -93,7 +86,7 @@ int SizeBoxes::cellY(double y) const
 
 bool SizeBoxes::tooLong(const Point& a, const Point& b, const Point& c, double longest2) const
 {
-  if (boxes.empty() || !(longest2 > loosest2) || outside(a, b, c, all))
+  if (boxes.empty() || !(longest2 > loosest2) || outsideBounds(a, b, c, all))
     return false;
   const Bounds t{ { std::min({ a.x, b.x, c.x }), std::min({ a.y, b.y, c.y }) },
     { std::max({ a.x, b.x, c.x }), std::max({ a.y, b.y, c.y }) } };
@@ -106,7 +99,7 @@ bool SizeBoxes::tooLong(const Point& a, const Point& b, const Point& c, double l
       for (int k = cellStart[cell]; k < cellStart[cell + 1]; ++k)
       {
         const SizeBox& s = boxes[cellBoxes[k]];
-        if (longest2 > s.maxEdgeLength * s.maxEdgeLength && !outside(a, b, c, s.box))
+        if (longest2 > s.maxEdgeLength * s.maxEdgeLength && !outsideBounds(a, b, c, s.box))
           return true;
       }
     }
