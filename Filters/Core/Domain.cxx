@@ -271,18 +271,51 @@ bool isConstrained(const KnownAdjacency& a, int t, int i)
   return false;
 }
 
-/// Whether q, in the closure of triangle t, lies on one of its constrained
-/// edges within rounding, or at one of its corners where a constrained edge
-/// ends (which may be another triangle's): then which side of the segment q
-/// removes is an accident of the search.
-bool onConstrainedEdge(const Array<Point>& P, const Array<Triangle>& tris, const KnownAdjacency& a,
-  int t, const Point& q, const Array<char>& constrainedEnd)
+/// The components of the triangles not removed around vertex v of triangle t:
+/// whether there are two or more. Rotates one way through the neighbours
+/// across v's edges, and the other way from t if the first stops at the box.
+bool meetsTwoComponents(const Array<Triangle>& tris, const KnownAdjacency& a, int t, int v,
+  const Array<int>& component, const Array<char>& removed)
+{
+  int seen = -1;
+  auto visit = [&](int u) {
+    if (removed[component[u]])
+      return false;
+    if (seen < 0)
+      seen = component[u];
+    return component[u] != seen;
+  };
+  auto at = [&](int u) { return tris[u][0] == v ? 0 : tris[u][1] == v ? 1 : 2; };
+  for (int turn : { 2, 1 }) // the edge after v, then the edge before it
+    for (int u = t, steps = 0; u >= 0 && steps < static_cast<int>(tris.size()); ++steps)
+    {
+      if (visit(u))
+        return true;
+      u = a.nbr[u][(at(u) + turn) % 3];
+      if (u == t)
+        return false;
+    }
+  return false;
+}
+
+/// Whether the search that found q in the closure of triangle t met one side
+/// of a segment by accident: q lies, within rounding, on a constrained edge of
+/// t with triangles of another region on its other side, or at a vertex where
+/// a constrained edge ends and triangles of two regions meet. A seed on the
+/// domain's boundary or on a dangling segment is not in doubt.
+bool seedBetweenRegions(const Array<Point>& P, const Array<Triangle>& tris, const KnownAdjacency& a,
+  int t, const Point& q, const Array<char>& constrainedEnd, const Array<int>& component,
+  const Array<char>& removed)
 {
   for (int i = 0; i < 3; ++i)
   {
-    if (P[tris[t][i]] == q && constrainedEnd[tris[t][i]])
-      return true;
+    const int v = tris[t][i];
+    if (P[v] == q && constrainedEnd[v])
+      return meetsTwoComponents(tris, a, t, v, component, removed);
     if (!isConstrained(a, t, i))
+      continue;
+    const int u = a.nbr[t][i];
+    if (u < 0 || removed[component[u]] || component[u] == component[t])
       continue;
     const Point &b = P[tris[t][(i + 1) % 3]], &c = P[tris[t][(i + 2) % 3]];
     const double length = std::hypot(c.x - b.x, c.y - b.y);
@@ -326,7 +359,7 @@ Carving carveDomain(const Array<Point>& P, const Array<Triangle>& tris,
       for (const Segment& s : constrained)
         constrainedEnd[s[0]] = constrainedEnd[s[1]] = 1;
     }
-    return onConstrainedEdge(P, tris, a, t, q, constrainedEnd);
+    return seedBetweenRegions(P, tris, a, t, q, constrainedEnd, component, removed);
   };
   if (!holes.empty())
   {
@@ -340,9 +373,9 @@ Carving carveDomain(const Array<Point>& P, const Array<Triangle>& tris,
         out.unusedHoles.push_back(static_cast<int>(h));
         continue;
       }
-      removed[component[t]] = 1;
       if (onSegment(t, holes[h]))
         out.seedsOnSegments.push_back(static_cast<int>(h));
+      removed[component[t]] = 1;
     }
   }
   // The grid skips the triangles removed when it was built, and no others.

@@ -32,14 +32,17 @@ struct Carving
   Array<int> regionId; ///< per input triangle: its region, or -1 if removed
   std::size_t regions = 0;
   Array<int> unusedHoles; ///< hole seeds outside the remaining triangles
-  /// Hole seeds on a segment or at a segment's end (within rounding): the
-  /// region removed is the one on the side their triangle search met first.
+  /// Hole seeds on a segment or at a segment's end (within rounding) where
+  /// regions not yet removed meet: the region removed is the one on the side
+  /// their triangle search met first. Seeds on the domain's boundary or on a
+  /// dangling segment are not listed: only one region is there to take.
   Array<int> seedsOnSegments;
   /// Per region seed (carveDomain's regionSeeds): its region, or -1 if it lies
   /// outside the remaining triangles.
   Array<int> seedRegion;
-  /// Region seeds on a segment or at a segment's end (within rounding): the
-  /// region they give their attribute to is the first their search met.
+  /// Region seeds on a segment or at a segment's end (within rounding) where
+  /// two regions meet: the region they give their attribute to is the first
+  /// their search met.
   Array<int> regionSeedsOnSegments;
   /// Removing the exterior left no triangle (before any hole): the segments'
   /// cycles enclose no area (collinear segments over each other).

@@ -530,6 +530,46 @@ Pslg squareInSquare()
   return p;
 }
 
+TEST(Mesher, SeedOnASegmentWithOneRegionBesideItIsNotInDoubt)
+{
+  // On the domain's boundary or on a dangling segment, one region is there to
+  // take (the warning said otherwise before).
+  Pslg p = squareInSquare();
+  p.points.insert(p.points.end(), { { 0.1, 0.1 }, { 0.2, 0.12 } });
+  p.segments.push_back({ 8, 9 }); // dangling, in the ring
+  const Point boundary{ 0.5, 0 }, corner{ 0, 0 }, dangling{ 0.15, 0.11 }, danglingEnd{ 0.1, 0.1 };
+  for (const Point& seed : { boundary, corner, dangling, danglingEnd })
+  {
+    p.holes = { seed };
+    const Result hole = meshAndValidate(p, "hole seed beside one region");
+    EXPECT_FALSE(mentions(hole.warnings, "lie on a segment")) << seed.x << " " << seed.y;
+    EXPECT_NEAR(area(hole.mesh), 0.25, 1e-12) << "the ring is the hole";
+    p.holes.clear();
+    p.regions = { { seed, 3.0 } };
+    const Result region = meshAndValidate(p, "region seed beside one region");
+    EXPECT_FALSE(mentions(region.warnings, "lie on a segment")) << seed.x << " " << seed.y;
+    double ringArea = 0; // where the attribute went
+    for (std::size_t t = 0; t < region.mesh.triangles.size(); ++t)
+      if (region.regionAttribute[t] == 3.0)
+      {
+        const Triangle& tri = region.mesh.triangles[t];
+        ringArea += 0.5 *
+          orient2d(region.mesh.vertices[tri[0]], region.mesh.vertices[tri[1]],
+            region.mesh.vertices[tri[2]]);
+      }
+    EXPECT_NEAR(ringArea, 0.75, 1e-12) << seed.x << " " << seed.y;
+    p.regions.clear();
+  }
+  // Where the inner square's boundary meets the ring, two regions are there.
+  p.holes = { { 0.25, 0.25 } };
+  EXPECT_TRUE(mentions(meshAndValidate(p, "corner between regions").warnings, "lie on a segment"));
+  // In the whole box, the outer boundary has the box's outside beyond it.
+  Options box;
+  box.domain = Domain::Box;
+  p.holes = { boundary };
+  EXPECT_TRUE(mentions(meshAndValidate(p, "box boundary", box).warnings, "lie on a segment"));
+}
+
 /// Whether triangle t of the mesh has its centroid inside the inner square.
 bool inInnerSquare(const Result& r, std::size_t t)
 {
