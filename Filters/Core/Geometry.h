@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 namespace osm
 {
@@ -101,21 +102,36 @@ inline bool outsideBounds(const Point& a, const Point& b, const Point& c, const 
     std::max({ a.y, b.y, c.y }) < r.lo.y || std::min({ a.y, b.y, c.y }) > r.hi.y;
 }
 
+/// Grows b to take in p.
+inline void extend(Bounds& b, const Point& p)
+{
+  b.lo = { std::fmin(b.lo.x, p.x), std::fmin(b.lo.y, p.y) };
+  b.hi = { std::fmax(b.hi.x, p.x), std::fmax(b.hi.y, p.y) };
+}
+
+/// Whether inner lies within outer (boundaries included).
+inline bool within(const Bounds& inner, const Bounds& outer)
+{
+  return inner.lo.x >= outer.lo.x && inner.lo.y >= outer.lo.y && inner.hi.x <= outer.hi.x &&
+    inner.hi.y <= outer.hi.y;
+}
+
+/// Bounds that take in nothing yet: extending them by p gives p's.
+inline Bounds emptyBounds()
+{
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  return { { inf, inf }, { -inf, -inf } };
+}
+
 /// Bounds of points (all zero for none).
 template <typename Points>
 Bounds boundsOf(const Points& points)
 {
-  Bounds b;
-  bool first = true;
+  Bounds b = emptyBounds();
+  bool any = false;
   for (const Point& p : points)
-  {
-    if (first)
-      b.lo = b.hi = p;
-    first = false;
-    b.lo = { std::fmin(b.lo.x, p.x), std::fmin(b.lo.y, p.y) };
-    b.hi = { std::fmax(b.hi.x, p.x), std::fmax(b.hi.y, p.y) };
-  }
-  return b;
+    extend(b, p), any = true;
+  return any ? b : Bounds{};
 }
 
 using Segment = std::array<int, 2>;

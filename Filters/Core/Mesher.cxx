@@ -4,6 +4,7 @@
 
 #include "Clean.h"
 #include "Complete.h"
+#include "CycleComponents.h"
 #include "Domain.h"
 #include "HugePages.h"
 #include "LongEdges.h"
@@ -457,49 +458,13 @@ Result Mesher::execute()
   return std::move(res);
 }
 
-/// Per segment, whether it is on no cycle of the segment graph and on no path
-/// between cycles: what pruning vertices of degree 1 until none is left removes.
-Array<char> danglingSegments(std::size_t pointCount, const Array<Segment>& segments)
-{
-  Array<int> degree(pointCount, 0);
-  for (const Segment& s : segments)
-    ++degree[s[0]], ++degree[s[1]];
-  Array<int> start(pointCount + 1, 0), incident(2 * segments.size());
-  for (std::size_t v = 0; v < pointCount; ++v)
-    start[v + 1] = start[v] + degree[v];
-  Array<int> fill(start.begin(), start.end() - 1);
-  for (std::size_t k = 0; k < segments.size(); ++k)
-    for (int v : segments[k])
-      incident[fill[v]++] = static_cast<int>(k);
-  Array<char> pruned(segments.size(), 0);
-  Array<int> leaves;
-  for (std::size_t v = 0; v < pointCount; ++v)
-    if (degree[v] == 1)
-      leaves.push_back(static_cast<int>(v));
-  while (!leaves.empty())
-  {
-    const int v = leaves.back();
-    leaves.pop_back();
-    for (int k = start[v]; k < start[v + 1]; ++k)
-    {
-      const int e = incident[k];
-      if (pruned[e])
-        continue;
-      pruned[e] = 1;
-      const int u = segments[e][0] == v ? segments[e][1] : segments[e][0];
-      if (--degree[u] == 1)
-        leaves.push_back(u);
-    }
-  }
-  return pruned;
-}
-
 /// Only the domain's triangles are output, and the domain lies within the
 /// bounds of the segments (Enclosed) or of the points (Hull): the overlay
 /// need not refine the box around them, which on small inputs is most of its
 /// triangles.
-/// sizeOnCycles: apply the size bound only within the segments on cycles
-/// (else within all of them, as quality refinement).
+/// sizeOnCycles: apply the size bound only within the segments on cycles,
+/// each group of them joined by cycles within its own bounds (else within all
+/// of the segments, as quality refinement).
 void limitRefinement(OverlayOptions& oo, Domain domain, const Work& w,
   const Array<Segment>& segments, bool sizeOnCycles)
 {
@@ -519,30 +484,45 @@ void limitRefinement(OverlayOptions& oo, Domain domain, const Work& w,
   if (!sizeOnCycles || oo.maxEdgeLength == 0)
     return;
   // The enclosed regions lie within the segments on cycles: segments hanging
-  // off them (a stray segment far away), which carving removes, need a
-  // quality overlay around them for stitching, but not the size bound.
-  const Array<char> pruned = danglingSegments(w.points.size(), segments);
-  Array<Point> onCycles;
-  for (std::size_t k = 0; k < segments.size(); ++k)
-    if (!pruned[k])
-      onCycles.insert(onCycles.end(), { w.points[segments[k][0]], w.points[segments[k][1]] });
+  // off them (a stray segment far away) or joining them (a path from an
+  // island to the coast), which carving removes, need a quality overlay
+  // around them for stitching, but not the size bound. Nor does the space
+  // between separate cycles (islands): each group of cycles gets its box.
+  const CycleComponents cycles = cycleComponents(w.points.size(), segments);
   // No cycle yet (segments that cross enclose regions once split): all of them.
-  if (!onCycles.empty())
-    oo.sizeWithin = boundsOf(onCycles);
+  if (cycles.count == 0)
+    return;
+  Array<Bounds> boxes(cycles.count, emptyBounds());
+  for (std::size_t k = 0; k < segments.size(); ++k)
+    if (const int c = cycles.component[k]; c >= 0)
+      for (int v : segments[k])
+        extend(boxes[c], w.points[v]);
+  if (boxes.size() == 1)
+  {
+    oo.sizeWithin = boxes.front();
+    return;
+  }
+  oo.sizeInBoxesOnly = true;
+  for (const Bounds& b : boxes)
+    oo.sizeBoxes.push_back({ b, oo.maxEdgeLength });
 }
 
-/// Whether every vertex of a kept triangle (regionId >= 0) lies within b.
-bool keptWithin(const Array<Point>& points, const Array<Triangle>& triangles,
-  const Array<int>& regionId, const Bounds& b)
+/// Whether every kept triangle (regionId >= 0) lies where the overlay applied
+/// the size bound: within oo.sizeWithin, or within one of the size boxes.
+bool keptWithinSizeBound(const Array<Point>& points, const Array<Triangle>& triangles,
+  const Array<int>& regionId, const OverlayOptions& oo)
 {
+  const SizeBoxes boxes(oo.sizeInBoxesOnly ? oo.sizeBoxes : Array<SizeBox>{});
   for (std::size_t t = 0; t < triangles.size(); ++t)
-    if (regionId[t] >= 0)
-      for (int v : triangles[t])
-      {
-        const Point& p = points[v];
-        if (p.x < b.lo.x || p.x > b.hi.x || p.y < b.lo.y || p.y > b.hi.y)
-          return false;
-      }
+  {
+    if (regionId[t] < 0)
+      continue;
+    Bounds b = emptyBounds();
+    for (int v : triangles[t])
+      extend(b, points[v]);
+    if (oo.sizeInBoxesOnly ? !boxes.covers(b) : !within(b, oo.sizeWithin))
+      return false;
+  }
   return true;
 }
 
@@ -630,8 +610,8 @@ void Mesher::meshRounds(Work& w)
     if (options.maxEdgeLength > 0 && oo.maxEdgeLength == 0)
       oo.maxEdgeLength = std::numeric_limits<double>::denorm_min();
     oo.maxSteinerPoints = options.maxSteinerPoints;
-    limitRefinement(oo, domain, w, segments, !sizeEverywhere);
     oo.sizeBoxes = regionBoxes;
+    limitRefinement(oo, domain, w, segments, !sizeEverywhere);
     Overlay overlay = buildOverlay(w.points, oo, run);
     st.secondsOverlay += since(t);
 
@@ -718,7 +698,7 @@ void Mesher::meshRounds(Work& w)
     // The size bound must cover every kept triangle: where a region closed
     // by a T-junction reaches beyond it, mesh again with the bound everywhere.
     if (oo.maxEdgeLength > 0 && domain == Domain::Enclosed && !sizeEverywhere &&
-      !keptWithin(g.points, c.triangles, carve.regionId, oo.sizeWithin))
+      !keptWithinSizeBound(g.points, c.triangles, carve.regionId, oo))
     {
       res.warnings.resize(warningsBefore);
       sizeEverywhere = true;

@@ -131,8 +131,8 @@ public:
     , run(run)
     , gamma2(options.gamma * options.gamma * (1.0 + 1e-12))
     , offCenter2(options.offCenters ? std::pow(offCenterHeight(options.gamma), 2) : 0.0)
-    , maxEdge(options.maxEdgeLength)
-    , maxEdge2(options.maxEdgeLength * options.maxEdgeLength)
+    , maxEdge(options.sizeInBoxesOnly ? 0.0 : options.maxEdgeLength)
+    , maxEdge2(maxEdge * maxEdge)
     , steinerCap(options.maxSteinerPoints)
     , limited(options.limitRefinement)
     , beyondGuarantee(options.gamma < 1.0)
@@ -180,7 +180,7 @@ private:
   RunContext& run;
   const double gamma2;
   const double offCenter2; ///< (off-center height / shortest edge)^2; 0: circumcenters only
-  const double maxEdge;    ///< 0: no size bound
+  const double maxEdge;    ///< 0: none over sizeWithin (the size boxes may have theirs)
   const double maxEdge2;
   const std::size_t steinerCap;
   const bool limited;

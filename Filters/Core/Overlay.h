@@ -30,6 +30,9 @@ struct OverlayOptions
   /// that meet these bounds (within refineWithin: where output can be);
   /// beyond them only quality counts.
   Bounds sizeWithin;
+  /// Instead, maxEdgeLength applies only where the size boxes put it (the
+  /// mesher's boxes around separate cycles of segments carry it).
+  bool sizeInBoxesOnly = false;
   /// Triangles that meet one of these boxes have no edge longer than its
   /// bound (whatever maxEdgeLength and sizeWithin say).
   Array<SizeBox> sizeBoxes;

@@ -106,6 +106,18 @@ bool SizeBoxes::tooLong(const Point& a, const Point& b, const Point& c, double l
   return false;
 }
 
+bool SizeBoxes::covers(const Bounds& b) const
+{
+  if (boxes.empty() || !within(b, all))
+    return false;
+  // A box that holds b holds its corner, and is listed in the corner's cell.
+  const int cell = cellY(b.lo.y) * nx + cellX(b.lo.x);
+  for (int k = cellStart[cell]; k < cellStart[cell + 1]; ++k)
+    if (within(b, boxes[cellBoxes[k]].box))
+      return true;
+  return false;
+}
+
 double SizeBoxes::pointsNeeded(const Bounds& within) const
 {
   // A triangle with no edge longer than h has at most the area of the

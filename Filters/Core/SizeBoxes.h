@@ -25,6 +25,8 @@ public:
   /// Whether the triangle abc, whose longest edge has the square longest2,
   /// meets a box whose bound is shorter.
   bool tooLong(const Point& a, const Point& b, const Point& c, double longest2) const;
+  /// Whether b lies within one of the boxes.
+  bool covers(const Bounds& b) const;
   /// An estimate of the points that the boxes' bounds ask for: each box's
   /// area over that of the equilateral triangle of its bound, times 2, and no
   /// more than all of them covered at the tightest bound (they may overlap).

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -61,6 +62,38 @@ TEST(SizeBoxes, TheGridAnswersAsAScanOfEveryBox)
     }
     EXPECT_GT(hits, 0) << count << " boxes";
   }
+}
+
+TEST(SizeBoxes, CoversAsAScanOfEveryBox)
+{
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> U(0, 1);
+  for (int count : { 1, 5, 300 })
+  {
+    Array<SizeBox> boxes;
+    for (int k = 0; k < count; ++k)
+    {
+      const Point lo{ U(rng), U(rng) };
+      const double w = 0.4 * U(rng), h = 0.4 * U(rng);
+      boxes.push_back({ { lo, { lo.x + w, lo.y + h } }, 1.0 });
+    }
+    const SizeBoxes grid(boxes);
+    int hits = 0;
+    for (int t = 0; t < 20000; ++t)
+    {
+      const Point lo{ 1.4 * U(rng) - 0.2, 1.4 * U(rng) - 0.2 };
+      const double r = 0.2 * U(rng) * U(rng);
+      const Bounds b{ lo, { lo.x + r * U(rng), lo.y + r * U(rng) } };
+      const bool expected =
+        std::any_of(boxes.begin(), boxes.end(), [&](const SizeBox& s) { return within(b, s.box); });
+      hits += expected;
+      ASSERT_EQ(grid.covers(b), expected) << count << " boxes, bounds " << t;
+    }
+    EXPECT_GT(hits, 0) << count << " boxes";
+    // A box covers itself, boundaries included.
+    EXPECT_TRUE(grid.covers(boxes.back().box));
+  }
+  EXPECT_FALSE(SizeBoxes({}).covers({ { 0, 0 }, { 0, 0 } }));
 }
 
 TEST(SizeBoxes, BoxesOverTheWholeSpanAreListedInFewCells)
