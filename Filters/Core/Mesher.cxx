@@ -390,6 +390,10 @@ private:
   /// round): their bound over the bounds of each of their triangles.
   Array<SizeBox> regionBoxes;
   bool regionSizesKnown = false;
+  /// The maximum edge length applies only where a first round, without it,
+  /// kept triangles (with regionBoxes): most of the bound's refinement would
+  /// otherwise fall outside the domain (boundMostlyRefines).
+  bool boundWhereKept = false;
   int regionRounds = 0; ///< rounds meshed again for regions found in another place
 };
 
@@ -456,6 +460,25 @@ Result Mesher::execute()
   st.secondsTotal = since(t0);
   res.ok = true;
   return std::move(res);
+}
+
+/// Whether the maximum edge length asks for many more overlay points than
+/// quality does (about 5 per input point): then its refinement dominates, and
+/// what of it falls outside the domain (between the segments' bounds and the
+/// regions, on 9 of the 17 real inputs half or more) is worth a first round
+/// that finds where the regions are.
+bool boundMostlyRefines(const OverlayOptions& oo, std::size_t inputPoints)
+{
+  if (!(oo.maxEdgeLength > 0))
+    return false;
+  double area = 0;
+  if (oo.sizeInBoxesOnly)
+    for (const SizeBox& s : oo.sizeBoxes)
+      area += s.box.width() * s.box.height();
+  else
+    area = oo.sizeWithin.width() * oo.sizeWithin.height();
+  const double points = area / (0.8660254037844386 * oo.maxEdgeLength * oo.maxEdgeLength);
+  return points > 16.0 * double(inputPoints);
 }
 
 /// Only the domain's triangles are output, and the domain lies within the
@@ -526,20 +549,19 @@ bool keptWithinSizeBound(const Array<Point>& points, const Array<Triangle>& tria
   return true;
 }
 
-/// Where each region whose edge bound is tighter than the overlay's own (a
-/// maximum area) lies, with that bound: the bounds of each of its triangles
+/// Where each region whose edge bound is tighter than the overlay's own
+/// overlayBound (0: none) lies, with that bound: the bounds of each of its triangles
 /// in this round. Together they cover the region and little more (a
 /// region's own bounds would take in every region nested within it), and an
 /// overlay triangle that reaches into the region meets one of them.
 Array<SizeBox> regionSizeBoxes(const Array<Point>& points, const Array<Triangle>& triangles,
-  const Array<int>& regionId, const Array<double>& regionMaxEdge, const OverlayOptions& oo)
+  const Array<int>& regionId, const Array<double>& regionMaxEdge, double overlayBound)
 {
   Array<char> tighter(regionMaxEdge.size(), 0);
   bool any = false;
   for (std::size_t r = 0; r < regionMaxEdge.size(); ++r)
   {
-    tighter[r] =
-      regionMaxEdge[r] > 0 && (oo.maxEdgeLength == 0 || regionMaxEdge[r] < oo.maxEdgeLength);
+    tighter[r] = regionMaxEdge[r] > 0 && (overlayBound == 0 || regionMaxEdge[r] < overlayBound);
     any = any || tighter[r];
   }
   if (!any)
@@ -590,18 +612,12 @@ void Mesher::meshRounds(Work& w)
     const std::size_t warningsBefore = res.warnings.size();
     if (round > 0)
       run.newRound();
-    // Region areas mesh again, mostly finer: this round is the smaller part.
-    if (!regionSizesKnown && options.regionAreas &&
-      std::any_of(input.regions.begin(), input.regions.end(),
-        [](const RegionAttribute& r) { return r.maxArea > 0; }))
-      run.shareRound(0.2);
     Array<Segment> segments = w.segments;
     Array<int> hull;
     const Domain domain = chooseDomain(w, hull);
     for (std::size_t i = 0; i < hull.size(); ++i)
       segments.push_back({ hull[i], hull[(i + 1) % hull.size()] });
     auto t = Clock::now();
-    run.phase("overlay", 0.02, 0.6);
     OverlayOptions oo;
     oo.gamma = st.gamma;
     oo.maxEdgeLength = std::ldexp(options.maxEdgeLength, -exponent);
@@ -611,7 +627,24 @@ void Mesher::meshRounds(Work& w)
       oo.maxEdgeLength = std::numeric_limits<double>::denorm_min();
     oo.maxSteinerPoints = options.maxSteinerPoints;
     oo.sizeBoxes = regionBoxes;
+    oo.sizeFromAreas = options.regionAreas &&
+      std::any_of(input.regions.begin(), input.regions.end(),
+        [](const RegionAttribute& r) { return r.maxArea > 0; });
     limitRefinement(oo, domain, w, segments, !sizeEverywhere);
+    if (!regionSizesKnown)
+      boundWhereKept =
+        domain == Domain::Enclosed && !sizeEverywhere && boundMostlyRefines(oo, w.points.size());
+    // The bound only where the first round kept triangles (none in it).
+    if (boundWhereKept)
+    {
+      oo.sizeInBoxesOnly = true;
+      oo.sizeBoxes = regionBoxes;
+    }
+    // Region areas, or the bound where triangles are kept, mesh again, mostly
+    // finer: this round is the smaller part.
+    if (!regionSizesKnown && (boundWhereKept || oo.sizeFromAreas))
+      run.shareRound(0.2);
+    run.phase("overlay", 0.02, 0.6);
     Overlay overlay = buildOverlay(w.points, oo, run);
     st.secondsOverlay += since(t);
 
@@ -697,7 +730,7 @@ void Mesher::meshRounds(Work& w)
     }
     // The size bound must cover every kept triangle: where a region closed
     // by a T-junction reaches beyond it, mesh again with the bound everywhere.
-    if (oo.maxEdgeLength > 0 && domain == Domain::Enclosed && !sizeEverywhere &&
+    if (oo.maxEdgeLength > 0 && domain == Domain::Enclosed && !sizeEverywhere && !boundWhereKept &&
       !keptWithinSizeBound(g.points, c.triangles, carve.regionId, oo))
     {
       res.warnings.resize(warningsBefore);
@@ -707,10 +740,13 @@ void Mesher::meshRounds(Work& w)
     // A region's maximum area is a bound on its edges, which the overlay
     // applies over the region's triangles: found in this round, meshed again.
     const Array<double> regionMaxEdge = regionMaxEdges(carve, oo.maxEdgeLength);
+    // Regions bounded more tightly than the overlay is everywhere get boxes.
+    const double overlayBound = boundWhereKept ? 0.0 : oo.maxEdgeLength;
     if (!regionSizesKnown)
     {
       regionSizesKnown = true;
-      regionBoxes = regionSizeBoxes(g.points, c.triangles, carve.regionId, regionMaxEdge, oo);
+      regionBoxes =
+        regionSizeBoxes(g.points, c.triangles, carve.regionId, regionMaxEdge, overlayBound);
       if (!regionBoxes.empty())
       {
         res.warnings.resize(warningsBefore);
@@ -732,7 +768,7 @@ void Mesher::meshRounds(Work& w)
       {
         ++regionRounds;
         const Array<SizeBox> more =
-          regionSizeBoxes(g.points, c.triangles, carve.regionId, regionMaxEdge, oo);
+          regionSizeBoxes(g.points, c.triangles, carve.regionId, regionMaxEdge, overlayBound);
         regionBoxes.insert(regionBoxes.end(), more.begin(), more.end());
         res.warnings.resize(warningsBefore);
         continue;

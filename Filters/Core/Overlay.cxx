@@ -139,6 +139,7 @@ public:
     , within(options.refineWithin)
     , sizeWithin(options.sizeWithin)
     , sizeBoxes(options.sizeBoxes)
+    , sizeFromAreas(options.sizeFromAreas)
   {}
 
   Overlay refine();
@@ -188,6 +189,7 @@ private:
   const Bounds within;
   const Bounds sizeWithin;
   const SizeBoxes sizeBoxes;
+  const bool sizeFromAreas;
 
   Overlay out;
   Triangulation& mesh = out.mesh;
@@ -286,9 +288,9 @@ Overlay Refiner::refine()
     char need[48] = "more";
     if (std::isfinite(forMaxEdge))
       std::snprintf(need, sizeof need, "at least %.3g", forMaxEdge);
-    throw Stop{ std::string(sizeBoxes.empty() ? "the maximum edge length is too small"
-                                              : "the maximum edge length or a region's maximum "
-                                                "triangle area is too small") +
+    throw Stop{ std::string(!sizeFromAreas ? "the maximum edge length is too small"
+                                           : "the maximum edge length or a region's maximum "
+                                             "triangle area is too small") +
       " for this input: the overlay would need " + need + " points, and a mesh can index " +
       std::to_string(static_cast<long long>(indexable)) };
   }

@@ -36,6 +36,8 @@ struct OverlayOptions
   /// Triangles that meet one of these boxes have no edge longer than its
   /// bound (whatever maxEdgeLength and sizeWithin say).
   Array<SizeBox> sizeBoxes;
+  /// Some size boxes carry a region's maximum triangle area (for messages).
+  bool sizeFromAreas = false;
 };
 
 struct Overlay
