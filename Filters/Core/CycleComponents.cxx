@@ -1,6 +1,7 @@
 #include "CycleComponents.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace osm
 {
@@ -109,6 +110,48 @@ CycleComponents cycleComponents(std::size_t pointCount, const Array<Segment>& se
     }
   }
   return out;
+}
+
+Array<double> simpleCycleAreas(
+  const Array<Point>& points, const Array<Segment>& segments, const CycleComponents& cycles)
+{
+  Array<int> degree(points.size(), 0); // segments on cycles at each point
+  for (std::size_t k = 0; k < segments.size(); ++k)
+    if (cycles.component[k] >= 0)
+      ++degree[segments[k][0]], ++degree[segments[k][1]];
+  Array<double> area(cycles.count, 0.0);
+  for (std::size_t k = 0; k < segments.size(); ++k)
+    if (const int c = cycles.component[k]; c >= 0 && area[c] >= 0)
+      if (degree[segments[k][0]] != 2 || degree[segments[k][1]] != 2)
+        area[c] = -1.0;
+  // Walk each simple cycle from its first segment; the other segment at each
+  // point is its next one.
+  const Incidence at(points.size(), segments);
+  Array<char> started(cycles.count, 0);
+  for (std::size_t first = 0; first < segments.size(); ++first)
+  {
+    const int c = cycles.component[first];
+    if (c < 0 || area[c] < 0 || started[c])
+      continue;
+    started[c] = 1;
+    double twice = 0;
+    int e = static_cast<int>(first), v = segments[first][1], from = segments[first][0];
+    for (;;)
+    {
+      twice += points[from].x * points[v].y - points[v].x * points[from].y;
+      if (v == segments[first][0])
+        break;
+      int next = -1;
+      for (int i = at.start[v]; i < at.start[v + 1] && next < 0; ++i)
+        if (at.items[i] != e && cycles.component[at.items[i]] == c)
+          next = at.items[i];
+      e = next;
+      from = v;
+      v = segments[e][0] == v ? segments[e][1] : segments[e][0];
+    }
+    area[c] = 0.5 * std::abs(twice);
+  }
+  return area;
 }
 
 } // namespace osm

@@ -392,7 +392,7 @@ private:
   bool regionSizesKnown = false;
   /// The maximum edge length applies only where a first round, without it,
   /// kept triangles (with regionBoxes): most of the bound's refinement would
-  /// otherwise fall outside the domain (boundMostlyRefines).
+  /// otherwise fall outside the domain (worthFindingTheDomainFirst).
   bool boundWhereKept = false;
   int regionRounds = 0; ///< rounds meshed again for regions found in another place
 };
@@ -462,12 +462,39 @@ Result Mesher::execute()
   return std::move(res);
 }
 
-/// Whether the maximum edge length asks for many more overlay points than
-/// quality does (about 5 per input point): then its refinement dominates, and
-/// what of it falls outside the domain (between the segments' bounds and the
-/// regions, on 9 of the 17 real inputs half or more) is worth a first round
-/// that finds where the regions are.
-bool boundMostlyRefines(const OverlayOptions& oo, std::size_t inputPoints)
+/// The domain's area as far as it is known cheaply, else -1: the hull's, or
+/// where each group of cycles is one simple cycle, the sum of their areas
+/// (at least the regions' area, unless a T-junction closes one).
+double domainAreaEstimate(
+  const Work& w, const Array<Segment>& segments, const Array<int>& hull, Domain domain)
+{
+  double area = 0;
+  if (domain == Domain::Hull)
+  {
+    for (std::size_t i = 0; i < hull.size(); ++i)
+    {
+      const Point &a = w.points[hull[i]], &b = w.points[hull[(i + 1) % hull.size()]];
+      area += 0.5 * (a.x * b.y - b.x * a.y);
+    }
+    return area;
+  }
+  const CycleComponents cycles = cycleComponents(w.points.size(), segments);
+  for (double a : simpleCycleAreas(w.points, segments, cycles))
+  {
+    if (a < 0)
+      return -1.0;
+    area += a;
+  }
+  return cycles.count > 0 ? area : -1.0;
+}
+
+/// Whether a first round without the maximum edge length, to find where the
+/// domain lies, saves more than it costs: the bound's refinement outside the
+/// domain against the quality overlay (about 5 points per input point).
+/// domainArea: domainAreaEstimate; where it is unknown, half of the bounds
+/// are taken to lie outside (on 9 of the 17 real inputs half or more do).
+bool worthFindingTheDomainFirst(
+  const OverlayOptions& oo, std::size_t inputPoints, double domainArea)
 {
   if (!(oo.maxEdgeLength > 0))
     return false;
@@ -477,8 +504,11 @@ bool boundMostlyRefines(const OverlayOptions& oo, std::size_t inputPoints)
       area += s.box.width() * s.box.height();
   else
     area = oo.sizeWithin.width() * oo.sizeWithin.height();
+  if (!(area > 0))
+    return false;
+  const double outside = domainArea < 0 ? 0.5 : std::max(0.0, 1.0 - domainArea / area);
   const double points = area / (0.8660254037844386 * oo.maxEdgeLength * oo.maxEdgeLength);
-  return points > 16.0 * double(inputPoints);
+  return outside * points > 8.0 * double(inputPoints);
 }
 
 /// Only the domain's triangles are output, and the domain lies within the
@@ -606,7 +636,9 @@ void Mesher::meshRounds(Work& w)
   Statistics& st = res.stats;
   const double sinTheta1 = series::sin(options.minAngleDeg * series::kPi / 180.0);
   // Crossing points are rounded, so splitting may expose new tiny crossings:
-  // repeat a few times, then give up with a clear error.
+  // repeat a few times, then give up with a clear error. Other rounds (the
+  // hull instead, the size bound elsewhere) do not count towards that.
+  int crossingRounds = 0;
   for (int round = 0;; ++round)
   {
     const std::size_t warningsBefore = res.warnings.size();
@@ -632,8 +664,9 @@ void Mesher::meshRounds(Work& w)
         [](const RegionAttribute& r) { return r.maxArea > 0; });
     limitRefinement(oo, domain, w, segments, !sizeEverywhere);
     if (!regionSizesKnown)
-      boundWhereKept =
-        domain == Domain::Enclosed && !sizeEverywhere && boundMostlyRefines(oo, w.points.size());
+      boundWhereKept = domain != Domain::Box && !sizeEverywhere && oo.maxEdgeLength > 0 &&
+        worthFindingTheDomainFirst(
+          oo, w.points.size(), domainAreaEstimate(w, segments, hull, domain));
     // The bound only where the first round kept triangles (none in it).
     if (boundWhereKept)
     {
@@ -663,7 +696,7 @@ void Mesher::meshRounds(Work& w)
     {
       if (!options.resolveCrossings)
         throw Stop{ crossingError(w, walk.segmentCrossings, exponent, options.pointFormat) };
-      if (round >= 4)
+      if (++crossingRounds >= 5)
         throw Stop{ "could not resolve all crossings after 5 rounds: " +
           crossingError(w, walk.segmentCrossings, exponent, options.pointFormat) };
       if (st.crossingsSplit == 0)

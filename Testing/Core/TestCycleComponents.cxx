@@ -86,3 +86,23 @@ TEST(CycleComponents, AgreeWithRemovingEachSegmentOnRandomGraphs)
             << "trial " << trial << " segments " << i << " " << j;
   }
 }
+
+TEST(CycleComponents, SimpleCyclesHaveTheirAreas)
+{
+  // A unit square with segments in either direction, a triangle of area 2
+  // hanging off it by a bridge, and a square with a diagonal (not simple).
+  const Array<Point> points{ { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 }, { 3, 0 }, { 5, 0 }, { 3, 2 },
+    { 10, 0 }, { 11, 0 }, { 11, 1 }, { 10, 1 } };
+  const Array<Segment> s{ { 0, 1 }, { 2, 1 }, { 2, 3 }, { 0, 3 }, { 1, 4 }, { 4, 5 }, { 6, 5 },
+    { 4, 6 }, { 7, 8 }, { 8, 9 }, { 9, 10 }, { 10, 7 }, { 7, 9 } };
+  const CycleComponents c = cycleComponents(points.size(), s);
+  ASSERT_EQ(c.count, 3u);
+  const Array<double> area = simpleCycleAreas(points, s, c);
+  EXPECT_DOUBLE_EQ(area[c.component[0]], 1.0);
+  EXPECT_DOUBLE_EQ(area[c.component[5]], 2.0);
+  EXPECT_EQ(area[c.component[8]], -1.0);
+  // Two segments with the same ends enclose nothing.
+  const Array<Segment> twice{ { 0, 1 }, { 1, 0 } };
+  EXPECT_EQ(
+    simpleCycleAreas(points, twice, cycleComponents(points.size(), twice)), (Array<double>{ 0.0 }));
+}

@@ -885,11 +885,15 @@ struct CountingProgress : Progress
   int abortAfter = -1;
   double last = -1;
   bool monotone = true;
-  void report(double f, const char*) override
+  std::string phase;
+  int overlays = 0; ///< overlay phases begun: one per round that builds one
+  void report(double f, const char* name) override
   {
     monotone = monotone && f >= last - 1e-12;
     last = f;
     ++reports;
+    overlays += phase != name && std::string(name) == "overlay";
+    phase = name;
   }
   bool aborted() override { return abortAfter >= 0 && reports > abortAfter; }
 };
@@ -1123,7 +1127,8 @@ TEST(Mesher, SizeBoundAppliesWhereTheRegionsAre)
 {
   // A thin strip along the diagonal of a 10 x 10 box, with a hole: the bound
   // refined the whole box (201,100 overlay triangles for 9,371 kept ones at
-  // 0.05); a first round without it now finds where the strip lies.
+  // 0.05); a first round without it now finds where the strip lies. So for
+  // points along the diagonal, whose hull is the domain.
   Pslg p;
   p.points = { { 0, 0 }, { 0.2, 0 }, { 10, 9.8 }, { 10, 10 }, { 9.8, 10 }, { 0, 0.2 }, { 4.9, 5 },
     { 5.1, 5 }, { 5, 5.05 } };
@@ -1136,6 +1141,31 @@ TEST(Mesher, SizeBoundAppliesWhereTheRegionsAre)
   EXPECT_NEAR(area(r.mesh), 3.96 - 0.005, 1e-9);
   EXPECT_LE(longestEdge(r.mesh), 0.05);
   EXPECT_LT(r.stats.overlayTriangles, 4 * r.mesh.triangles.size());
+  CountingProgress rounds;
+  ASSERT_TRUE(mesh(p, o, &rounds).ok);
+  EXPECT_EQ(rounds.overlays, 2);
+  EXPECT_TRUE(rounds.monotone);
+  // A domain that fills its bounds has nothing to gain from a first round: a
+  // square, in which a simple cycle's area says so, and uniform points.
+  for (const auto& [input, name] :
+    { std::pair{ square(), "square" }, std::pair{ manyPoints(400), "uniform points" } })
+  {
+    CountingProgress one;
+    Options fine;
+    fine.maxEdgeLength = 0.01;
+    ASSERT_TRUE(mesh(input, fine, &one).ok) << name;
+    EXPECT_EQ(one.overlays, 1) << name;
+  }
+  // The hull domain likewise: points along the diagonal of a 10 x 10 box.
+  Pslg diagonal;
+  for (int i = 0; i <= 400; ++i)
+  {
+    const double t = 0.025 * i, d = 0.1 * std::sin(i * 1.7);
+    diagonal.points.push_back({ t + d, t - d });
+  }
+  const Result h = meshAndValidate(diagonal, "diagonal points", o);
+  EXPECT_LE(longestEdge(h.mesh), 0.05);
+  EXPECT_LT(h.stats.overlayTriangles, 4 * h.mesh.triangles.size());
   // Region areas on top: the tighter bound holds in its region.
   p.regions = { { { 0.1, 0.05 }, 1.0, 0.0005 } };
   o.regionAreas = true;
