@@ -492,7 +492,7 @@ double domainAreaEstimate(
 /// domain lies, saves more than it costs: the bound's refinement outside the
 /// domain against the quality overlay (about 5 points per input point).
 /// domainArea: domainAreaEstimate; where it is unknown, half of the bounds
-/// are taken to lie outside (on 9 of the 17 real inputs half or more do).
+/// are taken to lie outside (on 8 of the 17 real inputs about half or more do).
 bool worthFindingTheDomainFirst(
   const OverlayOptions& oo, std::size_t inputPoints, double domainArea)
 {
