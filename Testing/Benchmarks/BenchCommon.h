@@ -462,6 +462,13 @@ struct RunOutput
   {
     return std::find(args.begin(), args.end(), arg) != args.end();
   }
+  /// The number after option name (as in --max-edge 0.01), or fallback.
+  double number(const std::string& name, double fallback) const
+  {
+    const auto it = std::find(args.begin(), args.end(), name);
+    return it != args.end() && it + 1 != args.end() ? std::strtod((it + 1)->c_str(), nullptr)
+                                                    : fallback;
+  }
 };
 
 /// Runs one tool on the input named by argv[1] and prints its JSON line.

@@ -1,5 +1,6 @@
 // Benchmark driver: CGAL Mesh_2, Delaunay refinement with the default criteria
-// (shape bound 0.125, i.e. a minimum angle of about 20.7 degrees; no size bound),
+// (shape bound 0.125, i.e. a minimum angle of about 20.7 degrees; no size bound
+// unless --max-edge H gives one, on the longest edge of each triangle),
 // timed from the input: building the constrained Delaunay triangulation (as
 // bench_cgal_cdt), choosing the domain, and refining.
 //
@@ -101,7 +102,9 @@ int main(int argc, char** argv)
       osmbench::insertAll(cdt, in);
       const double cdtSeconds = clock.seconds();
       const bool enclosed = markDomain(cdt, input.holes);
-      CGAL::refine_Delaunay_mesh_2(cdt, Criteria(), /*domain_specified=*/true);
+      // --max-edge H: CGAL's size bound, on the longest edge of each triangle.
+      const Criteria criteria(0.125, out.number("--max-edge", 0.0));
+      CGAL::refine_Delaunay_mesh_2(cdt, criteria, /*domain_specified=*/true);
       out.seconds = clock.seconds();
       out.cpuSeconds = clock.cpuSeconds();
       out.systemSeconds = clock.systemSeconds();

@@ -1,6 +1,7 @@
 // Benchmark driver: the OSM core, osm::mesh() with default options, except that
 // the phase-1 overlay and the classified edges are not kept (the mesh only, as
 // the other tools return). Also reports the per-phase seconds of Result::stats.
+// --max-edge H: no edge longer than H (Options::maxEdgeLength).
 #include "BenchCommon.h"
 #include "Mesher.h"
 
@@ -11,6 +12,7 @@ int main(int argc, char** argv)
       osm::Options options;
       options.keepOverlay = false;
       options.keepEdges = false;
+      options.maxEdgeLength = out.number("--max-edge", 0.0);
       out.memory.before();
       osmbench::Stopwatch clock;
       osm::Result result = osm::mesh(input, options);
