@@ -112,6 +112,17 @@ CycleComponents cycleComponents(std::size_t pointCount, const Array<Segment>& se
   return out;
 }
 
+Array<Bounds> cycleBounds(
+  const Array<Point>& points, const Array<Segment>& segments, const CycleComponents& cycles)
+{
+  Array<Bounds> boxes(cycles.count, emptyBounds());
+  for (std::size_t k = 0; k < segments.size(); ++k)
+    if (const int c = cycles.component[k]; c >= 0)
+      for (int v : segments[k])
+        extend(boxes[c], points[v]);
+  return boxes;
+}
+
 Array<double> simpleCycleAreas(
   const Array<Point>& points, const Array<Segment>& segments, const CycleComponents& cycles)
 {

@@ -24,6 +24,10 @@ struct CycleComponents
 /// bridges). Two segments with the same ends form a cycle.
 CycleComponents cycleComponents(std::size_t pointCount, const Array<Segment>& segments);
 
+/// Per component of cycles: the bounds of its segments.
+Array<Bounds> cycleBounds(
+  const Array<Point>& points, const Array<Segment>& segments, const CycleComponents& cycles);
+
 /// Per component of cycles: the area its segments enclose when they form one
 /// simple cycle (each of its points on two of its segments), else -1.
 Array<double> simpleCycleAreas(

@@ -462,12 +462,31 @@ Result Mesher::execute()
   return std::move(res);
 }
 
-/// The domain's area as far as it is known cheaply, else -1: the hull's, or
-/// where each group of cycles is one simple cycle, the sum of their areas
-/// (at least the regions' area, unless a T-junction closes one).
+/// The sum of value[c] over the largest of boxes (by area) and the boxes not
+/// within it: those within it may lie inside what it bounds.
+double sumBesideLargest(const Array<Bounds>& boxes, const Array<double>& value)
+{
+  const auto extent = [](const Bounds& b) { return b.width() * b.height(); };
+  std::size_t largest = 0;
+  for (std::size_t c = 1; c < boxes.size(); ++c)
+    if (extent(boxes[c]) > extent(boxes[largest]))
+      largest = c;
+  double sum = 0;
+  for (std::size_t c = 0; c < boxes.size(); ++c)
+    if (c == largest || !within(boxes[c], boxes[largest]))
+      sum += value[c];
+  return sum;
+}
+
+/// A lower bound of the domain's area where one is known cheaply, else -1:
+/// with no hole seeds, the hull's area, or where each group of cycles is one
+/// simple cycle, the area of the one with the largest bounds plus those of
+/// the cycles outside those bounds (cycles within them may lie inside it).
 double domainAreaEstimate(
   const Work& w, const Array<Segment>& segments, const Array<int>& hull, Domain domain)
 {
+  if (!w.holes.empty())
+    return -1.0;
   double area = 0;
   if (domain == Domain::Hull)
   {
@@ -479,31 +498,38 @@ double domainAreaEstimate(
     return area;
   }
   const CycleComponents cycles = cycleComponents(w.points.size(), segments);
-  for (double a : simpleCycleAreas(w.points, segments, cycles))
-  {
-    if (a < 0)
-      return -1.0;
-    area += a;
-  }
-  return cycles.count > 0 ? area : -1.0;
+  const Array<double> areas = simpleCycleAreas(w.points, segments, cycles);
+  if (areas.empty() || std::any_of(areas.begin(), areas.end(), [](double a) { return a < 0; }))
+    return -1.0;
+  return sumBesideLargest(cycleBounds(w.points, segments, cycles), areas);
 }
 
 /// Whether a first round without the maximum edge length, to find where the
 /// domain lies, saves more than it costs: the bound's refinement outside the
 /// domain against the quality overlay (about 5 points per input point).
 /// domainArea: domainAreaEstimate; where it is unknown, half of the bounds
-/// are taken to lie outside (on 8 of the 17 real inputs about half or more do).
+/// are taken to lie outside (on 8 of the 17 real inputs about half or more
+/// do). Taking the first round where it was not needed costs a round without
+/// the bound; leaving it out where it was costs up to the whole bound's
+/// refinement outside the domain, so the estimate errs towards the former.
 bool worthFindingTheDomainFirst(
   const OverlayOptions& oo, std::size_t inputPoints, double domainArea)
 {
   if (!(oo.maxEdgeLength > 0))
     return false;
-  double area = 0;
+  // The area where the bound applies, boxes within the largest counted once.
+  double area = oo.sizeWithin.width() * oo.sizeWithin.height();
   if (oo.sizeInBoxesOnly)
+  {
+    Array<Bounds> boxes;
+    Array<double> areas;
     for (const SizeBox& s : oo.sizeBoxes)
-      area += s.box.width() * s.box.height();
-  else
-    area = oo.sizeWithin.width() * oo.sizeWithin.height();
+    {
+      boxes.push_back(s.box);
+      areas.push_back(s.box.width() * s.box.height());
+    }
+    area = boxes.empty() ? 0.0 : sumBesideLargest(boxes, areas);
+  }
   if (!(area > 0))
     return false;
   const double outside = domainArea < 0 ? 0.5 : std::max(0.0, 1.0 - domainArea / area);
@@ -545,11 +571,7 @@ void limitRefinement(OverlayOptions& oo, Domain domain, const Work& w,
   // No cycle yet (segments that cross enclose regions once split): all of them.
   if (cycles.count == 0)
     return;
-  Array<Bounds> boxes(cycles.count, emptyBounds());
-  for (std::size_t k = 0; k < segments.size(); ++k)
-    if (const int c = cycles.component[k]; c >= 0)
-      for (int v : segments[k])
-        extend(boxes[c], w.points[v]);
+  const Array<Bounds> boxes = cycleBounds(w.points, segments, cycles);
   if (boxes.size() == 1)
   {
     oo.sizeWithin = boxes.front();

@@ -84,12 +84,11 @@ def fmt(s, key, form):
 
 def row(name, osm, mesh2):
     """A table row: times, their ratio (or which tool failed, and why)."""
-    if "cpu" in osm and "cpu" in mesh2:
+    if osm.get("cpu") and "cpu" in mesh2:
         ratio = "%.2f" % (mesh2["cpu"] / osm["cpu"])
-    elif "error" in mesh2:
-        ratio = "Mesh_2: " + mesh2["error"]
     else:
-        ratio = "OSM: " + osm["error"]
+        ratio = "; ".join(tool + ": " + s["error"]
+                          for tool, s in (("OSM", osm), ("Mesh_2", mesh2)) if "error" in s) or "—"
     missing = "%s, %s" % (fmt(osm, "missing", "{}"), fmt(mesh2, "missing", "{}"))
     sizes = "%.2f" % (osm["triangles"] / mesh2["triangles"]) if (
         osm.get("triangles") and mesh2.get("triangles")) else "—"
@@ -119,14 +118,15 @@ def main():
         print("size_bound.py: no .poly in %s: nothing to measure" % args.data)
         return 0
     started = datetime.datetime.now(datetime.timezone.utc)
-    rows, faster, no_mesh2 = [], 0, []
+    rows, faster, both, no_mesh2 = [], 0, 0, []
     for path in inputs:
         bound = extent(path) / args.fraction
         res = measure(bench, path, bound, args.runs, args.timeout)
         osm, mesh2 = summary(res["OSM"]), summary(res["Mesh_2"])
-        if "cpu" in osm and "cpu" in mesh2 and mesh2["cpu"] > osm["cpu"]:
-            faster += 1
-        if "cpu" in osm and "error" in mesh2:
+        if "cpu" in osm and "cpu" in mesh2:
+            both += 1
+            faster += mesh2["cpu"] > osm["cpu"]
+        elif "cpu" in osm:
             no_mesh2.append(os.path.basename(path))
         rows.append(row(os.path.basename(path), osm, mesh2))
         print(rows[-1], flush=True)
@@ -147,9 +147,11 @@ def main():
         "*s*: median CPU seconds of the meshing call. *Mesh_2 / OSM* above 1 favours OSM." % (
             args.fraction, args.runs, args.timeout),
         "",
-        "OSM is faster on %d of the %d inputs both meshed%s." % (
-            faster, len(inputs) - len(no_mesh2),
-            "; Mesh_2 gave no mesh of %s" % ", ".join(no_mesh2) if no_mesh2 else ""),
+        "OSM is faster on %d of the %d inputs both meshed%s%s." % (
+            faster, both,
+            "; Mesh_2 gave no mesh of %s" % ", ".join(no_mesh2) if no_mesh2 else "",
+            "; OSM gave none of %d (see the table)" % (len(inputs) - both - len(no_mesh2))
+            if len(inputs) > both + len(no_mesh2) else ""),
         "",
         "| input | OSM s | Mesh_2 s | Mesh_2 / OSM | OSM triangles | Mesh_2 triangles "
         "| OSM / Mesh_2 triangles | OSM max angle | Mesh_2 max angle "

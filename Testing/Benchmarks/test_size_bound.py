@@ -44,6 +44,10 @@ class Turns(unittest.TestCase):
         self.assertIn("| 10 | — | — |", row)
         self.assertIn("| 0, — |", row)
 
+    def test_both_failures_are_shown(self):
+        row = sb.row("z", {"error": "crash"}, {"error": "no mesh after 1 s"})
+        self.assertIn("| OSM: crash; Mesh_2: no mesh after 1 s |", row)
+
     def test_ratio_favours_the_faster(self):
         osm = {"cpu": 0.5, "triangles": 1000, "max_angle": 140.0, "missing": 0}
         mesh2 = {"cpu": 2.0, "triangles": 900, "max_angle": 120.0, "missing": 0}

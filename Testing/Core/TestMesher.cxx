@@ -1156,6 +1156,23 @@ TEST(Mesher, SizeBoundAppliesWhereTheRegionsAre)
     ASSERT_TRUE(mesh(input, fine, &one).ok) << name;
     EXPECT_EQ(one.overlays, 1) << name;
   }
+  // Nested cycles fill their bounds together, but not with a hole in the
+  // inner one (found by a review: the sum of the cycles' areas counted the
+  // hole, 20.5 million overlay triangles for 3.9 million output ones).
+  Pslg ring = squareInSquare();
+  for (const bool hole : { false, true })
+  {
+    ring.holes.clear();
+    if (hole)
+      ring.holes.push_back({ 0.5, 0.5 });
+    CountingProgress counted;
+    Options fine;
+    fine.maxEdgeLength = 0.01;
+    const Result nested = mesh(ring, fine, &counted);
+    ASSERT_TRUE(nested.ok) << nested.error;
+    EXPECT_EQ(counted.overlays, hole ? 2 : 1) << "hole " << hole;
+    EXPECT_LT(nested.stats.overlayTriangles, 2 * nested.mesh.triangles.size()) << "hole " << hole;
+  }
   // The hull domain likewise: points along the diagonal of a 10 x 10 box.
   Pslg diagonal;
   for (int i = 0; i <= 400; ++i)
