@@ -210,18 +210,18 @@ def group_options():
     check(default.get("MaxAngleDeg", 999) <= default.get("PredictedMaxAngleDeg", 0) + 1e-9,
           "default run within its predicted angle bound")
 
-    # --max-edge refines, and no edge is longer (at 0.25 completion makes one
+    # --max-edge refines, and no edge is longer (at 0.4 completion makes one
     # longer diagonal, which is split).
-    fine = stats_of(square, "--max-edge", "0.25")
+    fine = stats_of(square, "--max-edge", "0.4")
     check(fine.get("OutputTriangles", 0) > default.get("OutputTriangles", 0),
-          "--max-edge 0.25 gives more triangles (%s > %s)" % (
+          "--max-edge 0.4 gives more triangles (%s > %s)" % (
               fine.get("OutputTriangles"), default.get("OutputTriangles")))
     check(fine.get("LongEdgesSplit", 0) >= 1,
-          "--max-edge 0.25 splits a long completed edge (LongEdgesSplit %s)" % (
+          "--max-edge 0.4 splits a long completed edge (LongEdgesSplit %s)" % (
               fine.get("LongEdgesSplit")))
-    mesh_ok(square, "-o", out("fine.node"), "--max-edge", "0.25")
-    validate(square, out("fine.node"), "--allow-missing", "--max-edge", "0.25",
-             what="--max-edge mesh is valid, no edge longer than 0.25")
+    mesh_ok(square, "-o", out("fine.node"), "--max-edge", "0.4")
+    validate(square, out("fine.node"), "--allow-missing", "--max-edge", "0.4",
+             what="--max-edge mesh is valid, no edge longer than 0.4")
 
     # --no-resolve: same mesh as the default on an input without crossings.
     mesh_ok(square, "-o", out("noresolve.vtp"), "--no-resolve")
