@@ -482,8 +482,9 @@ double sumBesideLargest(const Array<Bounds>& boxes, const Array<double>& value)
 /// with no hole seeds, the hull's area, or where each group of cycles is one
 /// simple cycle, the area of the one with the largest bounds plus those of
 /// the cycles outside those bounds (cycles within them may lie inside it).
-double domainAreaEstimate(
-  const Work& w, const Array<Segment>& segments, const Array<int>& hull, Domain domain)
+/// cycles: those of segments (for the enclosed domain).
+double domainAreaEstimate(const Work& w, const Array<Segment>& segments,
+  const CycleComponents& cycles, const Array<int>& hull, Domain domain)
 {
   if (!w.holes.empty())
     return -1.0;
@@ -497,7 +498,6 @@ double domainAreaEstimate(
     }
     return area;
   }
-  const CycleComponents cycles = cycleComponents(w.points.size(), segments);
   const Array<double> areas = simpleCycleAreas(w.points, segments, cycles);
   if (areas.empty() || std::any_of(areas.begin(), areas.end(), [](double a) { return a < 0; }))
     return -1.0;
@@ -543,9 +543,10 @@ bool worthFindingTheDomainFirst(
 /// triangles.
 /// sizeOnCycles: apply the size bound only within the segments on cycles,
 /// each group of them joined by cycles within its own bounds (else within all
-/// of the segments, as quality refinement).
+/// of the segments, as quality refinement). cycles: those of segments, with a
+/// maximum edge length in the enclosed domain.
 void limitRefinement(OverlayOptions& oo, Domain domain, const Work& w,
-  const Array<Segment>& segments, bool sizeOnCycles)
+  const Array<Segment>& segments, const CycleComponents& cycles, bool sizeOnCycles)
 {
   if (domain == Domain::Box || (domain == Domain::Enclosed && segments.empty()))
     return;
@@ -567,7 +568,6 @@ void limitRefinement(OverlayOptions& oo, Domain domain, const Work& w,
   // island to the coast), which carving removes, need a quality overlay
   // around them for stitching, but not the size bound. Nor does the space
   // between separate cycles (islands): each group of cycles gets its box.
-  const CycleComponents cycles = cycleComponents(w.points.size(), segments);
   // No cycle yet (segments that cross enclose regions once split): all of them.
   if (cycles.count == 0)
     return;
@@ -684,11 +684,15 @@ void Mesher::meshRounds(Work& w)
     oo.sizeFromAreas = options.regionAreas &&
       std::any_of(input.regions.begin(), input.regions.end(),
         [](const RegionAttribute& r) { return r.maxArea > 0; });
-    limitRefinement(oo, domain, w, segments, !sizeEverywhere);
+    // Both the size boxes and the domain's estimate read the cycles.
+    const CycleComponents cycles = domain == Domain::Enclosed && oo.maxEdgeLength > 0
+      ? cycleComponents(w.points.size(), segments)
+      : CycleComponents{};
+    limitRefinement(oo, domain, w, segments, cycles, !sizeEverywhere);
     if (!regionSizesKnown)
       boundWhereKept = domain != Domain::Box && !sizeEverywhere && oo.maxEdgeLength > 0 &&
         worthFindingTheDomainFirst(
-          oo, w.points.size(), domainAreaEstimate(w, segments, hull, domain));
+          oo, w.points.size(), domainAreaEstimate(w, segments, cycles, hull, domain));
     // The bound only where the first round kept triangles (none in it).
     if (boundWhereKept)
     {
