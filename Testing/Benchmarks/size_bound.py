@@ -23,18 +23,16 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import run_benchmarks as rb  # noqa: E402
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Python"))
+from poly_rows import poly_rows  # noqa: E402
+
 TOOLS = (("OSM", "bench_osm"), ("Mesh_2", "bench_cgal_mesh2"))
 
 
 def extent(path):
     """The larger side of the bounding box of a .poly's points (or of the
     .node beside it when the .poly lists none)."""
-    rows = []
-    with open(path) as f:
-        for line in f:
-            fields = line.split("#", 1)[0].split()
-            if fields:
-                rows.append(fields)
+    rows = poly_rows(path)
     count = int(rows[0][0])
     if count == 0:
         return extent(os.path.splitext(path)[0] + ".node")

@@ -18,6 +18,9 @@ from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
 from vtkmodules.vtkIOLegacy import vtkPolyDataReader
 from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Python"))
+from poly_rows import poly_rows  # noqa: E402
+
 
 def make_polydata(points, segments, holes, global_ids=None):
     """points: [(x, y)], segments: [(a, b)] 0-based, holes: [(x, y)]; global_ids: per
@@ -60,12 +63,7 @@ def make_polydata(points, segments, holes, global_ids=None):
 
 def read_poly(path):
     """A minimal reader of Triangle's .poly format (test-side, independent of the core's)."""
-    rows = []
-    with open(path) as f:
-        for line in f:
-            fields = line.split("#", 1)[0].split()
-            if fields:
-                rows.append(fields)
+    rows = poly_rows(path)
     count, dim, nattr, nmark = (int(v) for v in rows[0][:4])
     if count == 0 or dim != 2:
         raise ValueError("%s: needs its vertices inline and dim 2" % path)
