@@ -156,15 +156,34 @@ double ulpAt(const Point& p)
   return std::numeric_limits<double>::epsilon() * std::max(std::fabs(p.x), std::fabs(p.y));
 }
 
-/// Whether p can stand for a crossing on segment s: within a quarter of the
-/// merge distance of its line, and strictly inside it, away from its ends.
-bool onSegment(const Work& w, int s, const Point& p)
+/// The unit of the last place of crossing c's computation: its point is
+/// placed along the shorter of its two segments, so it is off by a few units
+/// at that segment's scale, not at its own (near the origin, its own is far
+/// smaller: three segments through (0, 0) crossed 1e-16 apart, and the mesh
+/// graded down to that). With a hull edge, whose ends are not at hand, p's.
+double crossingUlp(const Work& w, const SegmentCrossing& c)
+{
+  const int n = static_cast<int>(w.segments.size());
+  if (c.a >= n || c.b >= n)
+    return ulpAt(c.p);
+  const auto shorter = dist2(w.points[w.segments[c.a][0]], w.points[w.segments[c.a][1]]) <=
+      dist2(w.points[w.segments[c.b][0]], w.points[w.segments[c.b][1]])
+    ? c.a
+    : c.b;
+  return std::max({ ulpAt(c.p), ulpAt(w.points[w.segments[shorter][0]]),
+    ulpAt(w.points[w.segments[shorter][1]]) });
+}
+
+/// Whether p, a crossing computed to within ulp, can stand for a crossing on
+/// segment s: within a quarter of the merge distance of its line, and
+/// strictly inside it, away from its ends.
+bool onSegment(const Work& w, int s, const Point& p, double ulp)
 {
   const Point &a = w.points[w.segments[s][0]], &b = w.points[w.segments[s][1]];
   const double length = std::sqrt(dist2(a, b));
   const double t = along(w, s, p) / (length * length);
-  const double margin = kCrossingMergeUlps * ulpAt(p) / length;
-  return std::fabs(orient2d(a, b, p)) / length <= kCrossingMergeUlps / 4 * ulpAt(p) && t > margin &&
+  const double margin = kCrossingMergeUlps * ulp / length;
+  return std::fabs(orient2d(a, b, p)) / length <= kCrossingMergeUlps / 4 * ulp && t > margin &&
     t < 1 - margin;
 }
 
@@ -193,7 +212,8 @@ Array<int> representatives(
     for (std::size_t j = i; j < end && chosen < 0 && end - i > 1; ++j)
     {
       const Point& p = crossings[byClass[j]].p;
-      if (std::all_of(lines.begin(), lines.end(), [&](int s) { return onSegment(w, s, p); }))
+      const double ulp = crossingUlp(w, crossings[byClass[j]]);
+      if (std::all_of(lines.begin(), lines.end(), [&](int s) { return onSegment(w, s, p, ulp); }))
         chosen = byClass[j];
     }
     for (std::size_t j = i; j < end; ++j)
@@ -237,10 +257,10 @@ Array<int> mergeNearCrossings(const Work& w, const Array<SegmentCrossing>& cross
   {
     if (cuts[i].segment != cuts[i - 1].segment)
       continue;
-    const Point& p = crossings[cuts[i - 1].crossing].p;
-    const Point& q = crossings[cuts[i].crossing].p;
-    const double tolerance = kCrossingMergeUlps * std::max(ulpAt(p), ulpAt(q));
-    if (dist2(p, q) <= tolerance * tolerance)
+    const SegmentCrossing& p = crossings[cuts[i - 1].crossing];
+    const SegmentCrossing& q = crossings[cuts[i].crossing];
+    const double tolerance = kCrossingMergeUlps * std::max(crossingUlp(w, p), crossingUlp(w, q));
+    if (dist2(p.p, q.p) <= tolerance * tolerance)
     {
       const int a = find(cuts[i - 1].crossing), b = find(cuts[i].crossing);
       root[std::max(a, b)] = std::min(a, b);

@@ -363,6 +363,26 @@ TEST(Clean, SegmentsThroughOnePointMeetAtOneVertex)
     const Result f = meshAndValidate(fan, "fan of " + std::to_string(n), hull);
     EXPECT_EQ(std::count(f.mesh.vertices.begin(), f.mesh.vertices.end(), Point{ 0, 0 }), 1) << n;
   }
+  // Rounded directions: each pair's crossing is off by a few units in the
+  // last place of the segments' coordinates (about 1), which near the origin
+  // are many of its own: there they crossed 1e-16 apart and the mesh graded
+  // down to a triangle of crossings (8,239 triangles for 3 segments).
+  for (const Point centre : { Point{ 0, 0 }, Point{ 0.1234567, 0.7654321 } })
+    for (int n : { 3, 5, 8 })
+    {
+      Pslg star;
+      for (int k = 0; k < n; ++k)
+      {
+        const double t = 3.141592653589793 * k / n + 0.01;
+        star.points.push_back({ centre.x + std::cos(t), centre.y + std::sin(t) });
+        star.points.push_back({ centre.x - std::cos(t), centre.y - std::sin(t) });
+        star.segments.push_back({ 2 * k, 2 * k + 1 });
+      }
+      const std::string name = "star of " + std::to_string(n) + " at " + std::to_string(centre.x);
+      const Result r = meshAndValidate(star, name, hull);
+      EXPECT_EQ(verticesNear(r, centre), 1) << name;
+      EXPECT_LE(r.mesh.triangles.size(), 40u * n) << name;
+    }
 }
 
 TEST(Clean, CrossingsAreMergedOnlyWhereEverySegmentStaysStraight)
