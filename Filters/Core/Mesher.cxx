@@ -176,10 +176,15 @@ double crossingUlp(const Work& w, const SegmentCrossing& c)
 
 /// Whether p, a crossing computed to within ulp, can stand for a crossing on
 /// segment s: within a quarter of the merge distance of its line, and
-/// strictly inside it, away from its ends.
-bool onSegment(const Work& w, int s, const Point& p, double ulp)
+/// strictly inside it, away from its ends. s bends to p, so that distance
+/// is also at most 1.5 times as many units at s's own scale (12, where the
+/// validator takes 16 as conforming): a segment far smaller than the one p
+/// was computed on must not bend at the larger one's scale.
+bool onSegment(const Work& w, int s, const Point& p, double crossingUlp)
 {
   const Point &a = w.points[w.segments[s][0]], &b = w.points[w.segments[s][1]];
+  const double own = std::max({ ulpAt(a), ulpAt(b), ulpAt(p) });
+  const double ulp = std::min(std::max(crossingUlp, own), 1.5 * own);
   const double length = std::sqrt(dist2(a, b));
   const double t = along(w, s, p) / (length * length);
   const double margin = kCrossingMergeUlps * ulp / length;

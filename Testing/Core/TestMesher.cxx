@@ -385,6 +385,22 @@ TEST(Clean, SegmentsThroughOnePointMeetAtOneVertex)
     }
 }
 
+TEST(Clean, ATinySegmentBesideACrossingIsNotBentAtTheLongSegmentsScale)
+{
+  // Two axes of length 2 cross at (0, 0); a segment 2e-13 long crosses the
+  // x axis 1e-15 from there: a few units in the last place of the axes, but
+  // far more of its own. Merging its crossing into the axes' bent it by
+  // 1e-15 and the mesh did not follow it (the validator said so, before and
+  // after merging took the computation's scale).
+  Pslg p;
+  p.points = { { -1, 0 }, { 1, 0 }, { 0, -1 }, { 0, 1 }, { -9e-15, -1e-13 }, { 1.1e-14, 1e-13 } };
+  p.segments = { { 0, 1 }, { 2, 3 }, { 4, 5 } };
+  Options hull;
+  hull.domain = Domain::Hull;
+  const Result r = meshAndValidate(p, "tiny segment beside a crossing", hull);
+  EXPECT_EQ(r.stats.crossingsSplit, 3u);
+}
+
 TEST(Clean, CrossingsAreMergedOnlyWhereEverySegmentStaysStraight)
 {
   // Found by the fuzzer: four segments from (1.5e9, 15) towards the origin
