@@ -174,8 +174,8 @@ Pslg tinySegmentsAtACrossing(std::mt19937_64& rng)
   {
     const double length = std::pow(10.0, -10 - 4 * U(rng));
     const double off = std::pow(10.0, -13 - 3 * U(rng));
-    add({ c.x + off * (2 * U(rng) - 1), c.y + off * (2 * U(rng) - 1) }, kPi * U(rng), length,
-      length);
+    add(
+      { c.x + off * (2 * U(rng) - 1), c.y + off * (2 * U(rng) - 1) }, kPi * U(rng), length, length);
   }
   return p;
 }
@@ -266,7 +266,8 @@ TEST(Properties, TinySegmentsAtCrossingsOfLongOnes)
     const Result r = mesh(p, hull);
     if (!r.ok)
     {
-      EXPECT_NE(r.error.find("than double precision"), std::string::npos) << name << ": " << r.error;
+      EXPECT_NE(r.error.find("than double precision"), std::string::npos)
+        << name << ": " << r.error;
       continue;
     }
     meshAndValidate(p, name, hull);
