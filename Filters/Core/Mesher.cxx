@@ -480,6 +480,10 @@ Result Mesher::execute()
       stop.reason += " near " +
         formatPoint({ std::ldexp(stop.at.x, exponent), std::ldexp(stop.at.y, exponent) },
           options.pointFormat);
+    // Borders that two polygons share, digitised twice, differ by such gaps.
+    if (stop.pointsTooClose)
+      stop.reason += "; points meant to be one are merged by a merge tolerance larger than "
+                     "their distance (osm-mesh --merge-tolerance, the filter's MergeTolerance)";
     throw;
   }
   st.secondsTotal = since(t0);

@@ -450,7 +450,7 @@ void Refiner::refineTriangle(int t)
   if (r2 < resolution * resolution)
     throw Stop{ "input points are closer together than double precision resolves at their "
                 "coordinates (features below about 1e-14 of the coordinate magnitude)",
-      true, c };
+      true, c, { -1, -1 }, true };
   if (!mesh.cavityOf(c, start, cavity))
   {
     ++out.refinementsSkipped;

@@ -18,6 +18,8 @@ struct Stop
   Point at;
   /// The segments at fault (indices of the round's segments), -1 for none.
   std::array<int, 2> segments{ -1, -1 };
+  /// Input points too close for double precision: a merge tolerance may help.
+  bool pointsTooClose = false;
 };
 
 class RunContext

@@ -698,7 +698,7 @@ PlanarGraph stitch(OverlayEdges ov, Array<Point> points, const Array<char>& isIn
           throw Stop{ "a segment passes input points closer together than double precision "
                       "resolves at the coordinates of both its ends (features below about "
                       "1e-14 of them)",
-            true, c.p, { segment, -1 } };
+            true, c.p, { segment, -1 }, true };
         // Crossings within rounding of each other (or of the edge's ends) cannot
         // be told apart: the segments meet at an angle below double precision.
         if (tooClose(c.p, g.points[prev], edgeLength))

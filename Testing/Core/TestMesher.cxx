@@ -1347,6 +1347,30 @@ TEST(Clean, MergesNearDuplicatesWithinTheTolerance)
   EXPECT_FALSE(mesh(p, o).ok);
 }
 
+TEST(Clean, ABorderDigitisedTwiceIsMeshedWithAMergeTolerance)
+{
+  // Two squares sharing the border x = 1, whose second copy lies 3 units in
+  // the last place away: too close to mesh apart. The error says where, and
+  // that a merge tolerance joins them; with one the two squares are meshed.
+  const double gap = 3 * std::numeric_limits<double>::epsilon();
+  Pslg p;
+  p.points = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 }, { 1 + gap, 0 }, { 2, 0 }, { 2, 1 },
+    { 1 + gap, 1 } };
+  p.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 }, { 4, 5 }, { 5, 6 }, { 6, 7 }, { 7, 4 } };
+  const Result refused = mesh(p);
+  ASSERT_FALSE(refused.ok);
+  EXPECT_NE(refused.error.find("closer together than double precision"), std::string::npos)
+    << refused.error;
+  EXPECT_NE(refused.error.find("merged by a merge tolerance"), std::string::npos) << refused.error;
+  Options o;
+  o.mergeTolerance = 1e-12;
+  const Result r = mesh(p, o);
+  ASSERT_TRUE(r.ok) << r.error;
+  EXPECT_EQ(r.stats.duplicatePointsMerged, 2u);
+  EXPECT_EQ(r.stats.regions, 2u);
+  EXPECT_NEAR(area(r.mesh), 2.0, 1e-12);
+}
+
 TEST(Mesher, RefusesCoordinatesNearTheDoubleLimit)
 {
   Pslg p;
