@@ -140,8 +140,10 @@ public:
   ///@{
   /**
    * Input points closer than this distance are merged into the first of them
-   * (counted in the statistic DuplicatePointsMerged). 0, the default, merges
-   * only exact duplicates.
+   * (counted in the statistic DuplicatePointsMerged), and segments split at
+   * the points closer than this to them, bending to pass through them
+   * (PointsSnappedOntoSegments): a border digitised twice becomes one. 0, the
+   * default, merges only exact duplicates.
    */
   vtkSetClampMacro(MergeTolerance, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(MergeTolerance, double);

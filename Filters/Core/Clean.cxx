@@ -1,6 +1,7 @@
 #include "Clean.h"
 
 #include "HugePages.h"
+#include "Snap.h"
 
 #include <algorithm>
 #include <cmath>
@@ -135,8 +136,10 @@ void mergeDuplicates(const Pslg& in, CleanPslg& out, Statistics& stats,
       std::to_string(representative[example]) + " at " + formatPoint(in.points[example], format));
 }
 
-std::string mapSegments(
-  const Pslg& in, CleanPslg& out, Statistics& stats, std::vector<std::string>& warnings)
+/// The segments on the merged points; with a tolerance, split at the points
+/// within it (Snap.h); zero-length and duplicate ones dropped.
+std::string mapSegments(const Pslg& in, CleanPslg& out, Statistics& stats,
+  std::vector<std::string>& warnings, double tol, const PointFormat& format)
 {
   const long long n = static_cast<long long>(in.points.size());
   Array<std::pair<Segment, int>> segs;
@@ -162,6 +165,16 @@ std::string mapSegments(
   if (zeroExample >= 0)
     warnings.push_back("dropped " + std::to_string(stats.zeroLengthSegmentsDropped) +
       " zero-length segment(s), e.g. segment " + std::to_string(zeroExample));
+  SnapExample snapped;
+  stats.pointsSnappedOntoSegments = snapPointsOntoSegments(out.points, segs, tol, snapped);
+  if (stats.pointsSnappedOntoSegments > 0)
+  {
+    const auto first = std::find(out.pointOf.begin(), out.pointOf.end(), snapped.point);
+    warnings.push_back("split segments at " + std::to_string(stats.pointsSnappedOntoSegments) +
+      " point(s) within the merge tolerance of them, e.g. segment " +
+      std::to_string(snapped.segment) + " at point " + std::to_string(first - out.pointOf.begin()) +
+      " " + formatPoint(out.points[snapped.point], format));
+  }
   std::sort(segs.begin(), segs.end());
   int dupExample = -1;
   for (std::size_t k = 0; k < segs.size(); ++k)
@@ -202,7 +215,7 @@ std::string cleanPslg(const Pslg& in, CleanPslg& out, Statistics& stats,
       return "region " + std::to_string(r) + " has a non-finite attribute";
   }
   mergeDuplicates(in, out, stats, warnings, mergeTolerance, format);
-  return mapSegments(in, out, stats, warnings);
+  return mapSegments(in, out, stats, warnings, mergeTolerance, format);
 }
 
 } // namespace osm

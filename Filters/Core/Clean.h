@@ -1,6 +1,7 @@
-// Input cleaning: the combinatorial repairs done before meshing.
-// (Geometric repairs — vertices on segments, overlaps, crossings — are found
-// while stitching, by walking the overlay: see Stitch.h.)
+// Input cleaning: the combinatorial repairs done before meshing, and with a
+// merge tolerance the snapping of points onto segments (Snap.h). (Geometric
+// repairs within rounding — vertices on segments, overlaps, crossings — are
+// found while stitching, by walking the overlay: see Stitch.h.)
 #ifndef osm_Clean_h
 #define osm_Clean_h
 
@@ -24,7 +25,8 @@ struct CleanPslg
 
 /// Check and clean the input. Returns an empty string, or an error naming the
 /// offending item (a non-finite coordinate, an index out of range).
-/// Points within mergeTolerance of an earlier point are merged into it.
+/// Points within mergeTolerance of an earlier point are merged into it, and
+/// segments split at the points within mergeTolerance of them (Snap.h).
 std::string cleanPslg(const Pslg& in, CleanPslg& out, Statistics& stats,
   std::vector<std::string>& warnings, double mergeTolerance = 0.0, const PointFormat& format = {});
 

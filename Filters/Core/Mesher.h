@@ -35,7 +35,8 @@ struct Options
   /// Split crossing segments at their intersection (true) or refuse them (false).
   bool resolveCrossings = true;
   /// Points closer than this (absolute distance) are merged into the first of
-  /// them; 0 merges only exact duplicates.
+  /// them, and segments split at the points closer than this to them (they
+  /// bend by at most this much; Snap.h); 0 merges only exact duplicates.
   double mergeTolerance = 0.0;
   /// Stop with an error when more Steiner points than this would be needed (0: no cap).
   std::size_t maxSteinerPoints = 0;

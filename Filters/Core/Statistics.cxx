@@ -12,6 +12,7 @@ std::vector<std::pair<std::string, double>> Statistics::items() const
     { "ZeroLengthSegmentsDropped", n(zeroLengthSegmentsDropped) },
     { "DuplicateSegmentsMerged", n(duplicateSegmentsMerged) },
     { "SegmentsSplitAtVertices", n(segmentsSplitAtVertices) },
+    { "PointsSnappedOntoSegments", n(pointsSnappedOntoSegments) },
     { "CrossingsSplit", n(crossingsSplit) },
     { "Gamma", gamma },
     { "Theta1Deg", theta1Deg },

@@ -18,7 +18,8 @@ struct Statistics
   std::size_t duplicatePointsMerged = 0;
   std::size_t zeroLengthSegmentsDropped = 0;
   std::size_t duplicateSegmentsMerged = 0;
-  std::size_t segmentsSplitAtVertices = 0; ///< T-junctions and collinear overlaps
+  std::size_t segmentsSplitAtVertices = 0;   ///< T-junctions and collinear overlaps
+  std::size_t pointsSnappedOntoSegments = 0; ///< splits at points within the merge tolerance
   std::size_t crossingsSplit = 0;
   // Phase 1: overlay.
   double gamma = 0.0; ///< radius/edge bound Γ

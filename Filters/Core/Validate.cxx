@@ -869,13 +869,13 @@ void checkInputVertices(const Pslg& input, const VertexMap& map, Errors& errors)
 }
 
 /// Searches a chain of mesh edges for input segment ab, from vertex A to vertex B. Each step
-/// goes to a neighbour within the rounding tolerance of line ab and strictly further along it.
-/// Depth first, nearest the line first, and back out of dead ends: where another input segment
-/// runs within the tolerance of this one (two segments diverging by 1e-9 rad from a shared end),
-/// the step most directly towards b could take its chain and get stuck, though this segment's
-/// own chain was there. Each vertex is entered once, so the search is linear. Returns "" or why
-/// no chain was found (from the furthest vertex reached).
-std::string walkSegment(const Mesh& m, int A, int B)
+/// goes to a neighbour within the rounding tolerance (plus bend) of line ab and strictly further
+/// along it. Depth first, nearest the line first, and back out of dead ends: where another input
+/// segment runs within the tolerance of this one (two segments diverging by 1e-9 rad from a shared
+/// end), the step most directly towards b could take its chain and get stuck, though this
+/// segment's own chain was there. Each vertex is entered once, so the search is linear. Returns ""
+/// or why no chain was found (from the furthest vertex reached).
+std::string walkSegment(const Mesh& m, int A, int B, double bend)
 {
   const Point &a = m.at(A), &b = m.at(B);
   const double dx = b.x - a.x, dy = b.y - a.y, len = std::hypot(dx, dy);
@@ -909,7 +909,7 @@ std::string walkSegment(const Mesh& m, int A, int B)
           continue;
         const double off = std::fabs(dx * (pw.y - a.y) - dy * (pw.x - a.x)) / len;
         const double tol =
-          1e-9 * len + 16 * eps * std::max({ scale, std::fabs(pw.x), std::fabs(pw.y) });
+          1e-9 * len + 16 * eps * std::max({ scale, std::fabs(pw.x), std::fabs(pw.y) }) + bend;
         if (off > tol)
           nearestOff = std::min(nearestOff, off);
         else
@@ -948,7 +948,8 @@ std::string walkSegment(const Mesh& m, int A, int B)
 }
 
 /// Check 6: input segments whose endpoints are mesh vertices are chains of mesh edges.
-void checkConformity(const Pslg& input, const Mesh& m, const VertexMap& map, Errors& errors)
+void checkConformity(
+  const Pslg& input, const Mesh& m, const VertexMap& map, double bend, Errors& errors)
 {
   const auto np = input.points.size();
   for (std::size_t s = 0; s < input.segments.size(); ++s)
@@ -965,7 +966,7 @@ void checkConformity(const Pslg& input, const Mesh& m, const VertexMap& map, Err
     const int A = meshVertex(map, input.points[seg[0]]), B = meshVertex(map, input.points[seg[1]]);
     if (A < 0 || B < 0 || A == B)
       continue; // not both in the mesh (or degenerate): nothing to conform to
-    const std::string why = walkSegment(m, A, B);
+    const std::string why = walkSegment(m, A, B, bend);
     if (!why.empty())
       errors.add([&] { return name + " is not a chain of mesh edges: " + why; });
   }
@@ -1033,7 +1034,7 @@ ValidationReport validate(const Pslg& input, const Array<Point>& vertices,
   if (options.requireAllInputVertices)
     checkInputVertices(input, map, errors); // 5
   if (options.checkConformity)
-    checkConformity(input, m, map, errors); // 6
+    checkConformity(input, m, map, options.conformityBend, errors); // 6
   return report;
 }
 

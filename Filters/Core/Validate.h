@@ -22,6 +22,9 @@ struct ValidationOptions
   /// Also check conformity (every input segment is a chain of mesh edges) for
   /// segments whose endpoints are both mesh vertices.
   bool checkConformity = true;
+  /// How far a chain may run off its segment's line beyond rounding: the
+  /// merge tolerance, within which segments bend onto points near them.
+  double conformityBend = 0.0;
   /// Also check that every input point is a mesh vertex. Off when holes may remove some.
   bool requireAllInputVertices = true;
   /// Keep at most this many messages in ValidationReport::errors (all are still counted).

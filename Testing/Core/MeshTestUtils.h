@@ -20,6 +20,9 @@ inline Result meshAndValidate(
   // A size bound asked of the mesher is checked on every edge.
   if (vo.maxEdgeLength == 0)
     vo.maxEdgeLength = options.maxEdgeLength;
+  // Segments bend onto points within the merge tolerance of them.
+  if (vo.conformityBend == 0)
+    vo.conformityBend = options.mergeTolerance;
   Result r = mesh(input, options);
   EXPECT_TRUE(r.ok) << name << ": " << r.error;
   if (!r.ok)

@@ -1371,6 +1371,55 @@ TEST(Clean, ABorderDigitisedTwiceIsMeshedWithAMergeTolerance)
   EXPECT_NEAR(area(r.mesh), 2.0, 1e-12);
 }
 
+TEST(Clean, SegmentsBendOntoPointsWithinTheMergeTolerance)
+{
+  // A segment and two partial copies of it, digitised a gap off its line on
+  // either side, so that the three cross at angles about as small as the
+  // gap. With a merge tolerance above the gap, the copies' ends split the
+  // segments they lie near and the copies are duplicates of its pieces.
+  auto copies = [](double gap) {
+    const Point a{ 0.5, 1 }, b{ 3.5, 2.3 };
+    const double len = std::hypot(b.x - a.x, b.y - a.y);
+    auto at = [&](double t, double side) {
+      return Point{ a.x + t * (b.x - a.x) - side * gap * (b.y - a.y) / len,
+        a.y + t * (b.y - a.y) + side * gap * (b.x - a.x) / len };
+    };
+    Pslg p = square();
+    for (Point& q : p.points)
+      q = { 4 * q.x, 4 * q.y };
+    const int i = static_cast<int>(p.points.size());
+    p.points.insert(p.points.end(), { a, b, at(0.2, 1), at(0.6, -1), at(0.4, -1), at(0.8, 1) });
+    p.segments.insert(p.segments.end(), { { i, i + 1 }, { i + 2, i + 3 }, { i + 4, i + 5 } });
+    return p;
+  };
+  // A gap of 1e-10: the crossings along the overlay's edges cannot be told
+  // apart, and the input is refused; with a tolerance of 1e-9 it is meshed.
+  const Pslg close = copies(1e-10);
+  const Result refused = mesh(close);
+  ASSERT_FALSE(refused.ok);
+  EXPECT_NE(refused.error.find("double precision"), std::string::npos) << refused.error;
+  Options o;
+  o.mergeTolerance = 1e-9;
+  const Result snapped = meshAndValidate(close, "gap 1e-10, tolerance 1e-9", o);
+  // The 4 ends of the copies on the segment, and one end of each copy on the other.
+  EXPECT_EQ(snapped.stats.pointsSnappedOntoSegments, 6u);
+  EXPECT_EQ(snapped.stats.duplicateSegmentsMerged, 4u);
+  EXPECT_TRUE(
+    mentions(snapped.warnings, "split segments at 6 point(s) within the merge tolerance"));
+
+  // A gap of 1e-6: meshed apart, graded down to the crossings; with a
+  // tolerance of 1e-5 the segments bend by 1e-6 (beyond rounding: the
+  // validator needs that allowed) and the mesh is as without the gap.
+  const Pslg apart = copies(1e-6);
+  const Result graded = meshAndValidate(apart, "gap 1e-6");
+  o.mergeTolerance = 1e-5;
+  const Result bent = meshAndValidate(apart, "gap 1e-6, tolerance 1e-5", o);
+  EXPECT_EQ(bent.stats.pointsSnappedOntoSegments, 6u);
+  EXPECT_LT(10 * bent.mesh.triangles.size(), graded.mesh.triangles.size());
+  EXPECT_EQ(bent.mesh.triangles.size(), snapped.mesh.triangles.size());
+  EXPECT_FALSE(validate(apart, bent.mesh.vertices, bent.mesh.triangles).ok);
+}
+
 TEST(Mesher, RefusesCoordinatesNearTheDoubleLimit)
 {
   Pslg p;

@@ -220,6 +220,25 @@ int TestMergeTolerance()
   mesh = h.Run(input, "tolerance 1e-8");
   Check(Statistic(mesh, "DuplicatePointsMerged") == 0,
     "tolerance 1e-8 (below the gap): nothing merged");
+
+  // A point 1e-7 off the bottom edge: within the tolerance, the edge bends
+  // to pass through it, and the statistic and a warning say so.
+  auto nearEdge =
+    MakeLines({ { 0, 0, 0 }, { 10, 0, 0 }, { 10, 10, 0 }, { 0, 10, 0 }, { 4, 1e-7, 0 } },
+      { { 0, 1, 2, 3, 0 } });
+  h.Mesher->SetMergeTolerance(1e-6);
+  mesh = h.Run(nearEdge, "point near an edge, tolerance 1e-6");
+  Check(h.NoError(), "point near an edge: no error");
+  Check(Statistic(mesh, "PointsSnappedOntoSegments") == 1,
+    "point near an edge: PointsSnappedOntoSegments = " +
+      Num(Statistic(mesh, "PointsSnappedOntoSegments")));
+  Check(h.Messages->HasWarning(
+          { "split segments at 1 point(s) within the merge tolerance", "segment 0 at point 4" }),
+    "point near an edge: a warning names the segment and the point");
+  h.Mesher->SetMergeTolerance(1e-8);
+  mesh = h.Run(nearEdge, "point near an edge, tolerance 1e-8");
+  Check(Statistic(mesh, "PointsSnappedOntoSegments") == 0,
+    "point near an edge, tolerance 1e-8: not snapped");
   return 0;
 }
 

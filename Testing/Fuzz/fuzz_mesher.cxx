@@ -93,6 +93,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     p.regions.push_back(
       { seed, double(k + 1), kind == 0 ? -1.0 : extent * extent / (kind == 1 ? 20.0 : 200.0) });
   }
+  // Then a merge tolerance of 1e-1 to 1e-6 of the extent for an eighth of
+  // the inputs: points merge, and segments bend onto points near them.
+  if (const int digits = in.byte() % 48; digits >= 1 && digits <= 6)
+    o.mergeTolerance = extent * std::pow(10.0, -digits);
   const osm::Result r = osm::mesh(p, o);
   if (!r.ok)
     return 0; // refused: the message is checked by the unit tests
@@ -110,19 +114,26 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         "triangle " + std::to_string(t) + " of area " + std::to_string(area) + " > " +
           std::to_string(p.regions[k].maxArea));
   }
-  // Validate against the input points that the domain kept (the rest are warned about).
+  // Validate against the input points that the domain kept (the rest are
+  // warned about), each where it was merged to: within the tolerance.
   osm::Pslg present;
   std::vector<int> index(p.points.size(), -1);
   for (std::size_t i = 0; i < p.points.size(); ++i)
     if (r.inputVertex[i] >= 0)
     {
+      const osm::Point& at = r.mesh.vertices[r.inputVertex[i]];
+      if (!(at == p.points[i]) &&
+        !(std::hypot(at.x - p.points[i].x, at.y - p.points[i].y) <= o.mergeTolerance))
+        fail("input point moved", "point " + std::to_string(i));
       index[i] = static_cast<int>(present.points.size());
-      present.points.push_back(p.points[i]);
+      present.points.push_back(at);
     }
   for (const osm::Segment& s : p.segments)
-    if (index[s[0]] >= 0 && index[s[1]] >= 0 && !(p.points[s[0]] == p.points[s[1]]))
+    if (index[s[0]] >= 0 && index[s[1]] >= 0 &&
+      !(present.points[index[s[0]]] == present.points[index[s[1]]]))
       present.segments.push_back({ index[s[0]], index[s[1]] });
   osm::ValidationOptions vo;
+  vo.conformityBend = o.mergeTolerance;
   vo.maxAngleDeg = r.stats.predictedMaxAngleDeg + 1e-9;
   // No edge longer than the size bound, unless a warning says which is.
   bool longKept = false;

@@ -1,0 +1,37 @@
+// Snapping points onto segments within the merge tolerance: the other half
+// of what a tolerance means for data digitised twice (a border two polygons
+// share, with a vertex on one copy only, lies a tiny gap off the other copy).
+#ifndef osm_Snap_h
+#define osm_Snap_h
+
+#include "HugePages.h"
+#include "Pslg.h"
+
+#include <cstddef>
+#include <utility>
+
+namespace osm
+{
+
+/// A segment (its points in index order) with the input segment it came from.
+using OriginSegment = std::pair<Segment, int>;
+
+struct SnapExample
+{
+  int point = -1;   ///< an index into points
+  int segment = -1; ///< the input segment (origin) it split
+};
+
+/// Split every segment at the points within tol of it that lie strictly
+/// between its ends, in order along it: the segment then bends by at most tol
+/// to pass through them. The points are those left after merging within tol
+/// (pairwise further apart than tol). Each piece keeps its segment's origin.
+/// Returns how many (point, segment) pairs were snapped; example names one.
+/// Linear in the points and in the segments' lengths over the grid's cells
+/// (a grid of about one cell per segment, at least 2 tol wide).
+std::size_t snapPointsOntoSegments(
+  const Array<Point>& points, Array<OriginSegment>& segments, double tol, SnapExample& example);
+
+} // namespace osm
+
+#endif
