@@ -1,7 +1,6 @@
 #include "Snap.h"
 
 #include "Geometry.h"
-#include "Predicates.h"
 
 #include <algorithm>
 #include <cmath>
@@ -26,17 +25,26 @@ public:
   SegmentGrid(const Array<Point>& points, const Array<OriginSegment>& segments, double tol)
     : bounds(boundsOf(points))
   {
-    double total = 0;
-    for (const auto& [s, origin] : segments)
-      total += std::sqrt(dist2(points[s[0]], points[s[1]]));
+    double mean = 0; // as a running mean: a sum could overflow
+    for (std::size_t k = 0; k < segments.size(); ++k)
+    {
+      const Point &a = points[segments[k].first[0]], &b = points[segments[k].first[1]];
+      mean += (std::hypot(b.x - a.x, b.y - a.y) - mean) / double(k + 1);
+    }
     // At most 2^40 cells across: their indices stay far inside 64 bits.
     const double extent = std::max(bounds.width(), bounds.height());
-    cell = std::max({ 2 * tol, total / double(segments.size()), std::ldexp(extent, -40) });
+    cell = std::max({ 2 * tol, mean, std::ldexp(extent, -40) });
+    if (!usable())
+      return;
     for (std::size_t s = 0; s < segments.size(); ++s)
       addSamples(points[segments[s].first[0]], points[segments[s].first[1]], int(s));
     std::sort(entries.begin(), entries.end());
     entries.erase(std::unique(entries.begin(), entries.end()), entries.end());
   }
+
+  /// False where the extent overflows (coordinates near the double limit,
+  /// which the mesher refuses as too large): nothing is listed.
+  bool usable() const { return std::isfinite(cell) && std::isfinite(2 * cell); }
 
   /// The segments listed in the 3 x 3 cells around p (with repeats).
   template <typename Visit>
@@ -69,7 +77,7 @@ private:
 
   void addSamples(const Point& a, const Point& b, int s)
   {
-    const double length = std::sqrt(dist2(a, b));
+    const double length = std::hypot(b.x - a.x, b.y - a.y);
     const auto steps = static_cast<std::int64_t>(std::ceil(length / (cell / 2)));
     for (std::int64_t k = 0; k <= steps; ++k)
     {
@@ -104,6 +112,8 @@ Array<Snap> findSnaps(const Array<Point>& points, const Array<OriginSegment>& se
 {
   const SegmentGrid grid(points, segments, tol);
   Array<Snap> snaps;
+  if (!grid.usable())
+    return snaps;
   for (std::size_t i = 0; i < points.size(); ++i)
   {
     const Point& p = points[i];
@@ -111,14 +121,15 @@ Array<Snap> findSnaps(const Array<Point>& points, const Array<OriginSegment>& se
       const Segment& e = segments[s].first;
       if (e[0] == int(i) || e[1] == int(i))
         return;
+      // Along and off the segment's unit direction: no square of a
+      // coordinate difference, which overflows near the coordinates' limit.
       const Point &a = points[e[0]], &b = points[e[1]];
-      const double len2 = dist2(a, b);
-      const double t = ((p.x - a.x) * (b.x - a.x) + (p.y - a.y) * (b.y - a.y)) / len2;
-      if (!(t > 0 && t < 1))
-        return;
-      const double off = std::fabs(orient2d(a, b, p));
-      if (off * off <= tol * tol * len2)
-        snaps.push_back({ s, t, int(i) });
+      const double length = std::hypot(b.x - a.x, b.y - a.y);
+      const double ux = (b.x - a.x) / length, uy = (b.y - a.y) / length;
+      const double along = (p.x - a.x) * ux + (p.y - a.y) * uy;
+      const double off = (p.y - a.y) * ux - (p.x - a.x) * uy;
+      if (along > 0 && along < length && std::fabs(off) <= tol)
+        snaps.push_back({ s, along / length, int(i) });
     });
   }
   std::sort(snaps.begin(), snaps.end());

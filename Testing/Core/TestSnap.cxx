@@ -116,3 +116,19 @@ TEST(Snap, FindsWhatEveryPairOfPointAndSegmentWouldFind)
   // Most of the points placed near a segment are within the tolerance.
   EXPECT_GT(snapped, 1000u);
 }
+
+TEST(Snap, CoordinatesNearTheDoubleLimit)
+{
+  // Squared lengths and sums of lengths overflow here: found by the fuzzer
+  // (a NaN sample count). Within 1.1e307 the mesher accepts coordinates.
+  const Array<Point> points = { { -1e307, 0 }, { 1e307, 0 }, { 0, 1e292 }, { 5e306, -1e294 } };
+  Array<OriginSegment> segments = { { { 0, 1 }, 0 } };
+  SnapExample example;
+  EXPECT_EQ(snapPointsOntoSegments(points, segments, 1e293, example), 1u);
+  EXPECT_EQ(example.point, 2);
+  // Beyond it (the mesher refuses such input): nothing, and no overflow.
+  const Array<Point> huge = { { -1.7e308, 0 }, { 1.7e308, 0 }, { 0, 1 } };
+  Array<OriginSegment> across = { { { 0, 1 }, 0 } };
+  EXPECT_EQ(snapPointsOntoSegments(huge, across, 10.0, example), 0u);
+  EXPECT_EQ(across.size(), 1u);
+}
