@@ -3,6 +3,7 @@
 #include "Geometry.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 
@@ -12,86 +13,101 @@ namespace osm
 namespace
 {
 
-/// A uniform grid over the points' bounds in which each segment is listed in
-/// the cells of samples along it at most half a cell apart. A point within
-/// tol <= cell / 2 of a segment is then within 3 / 4 of a cell of a sample,
-/// so in the 3 x 3 cells around its own. Cells as wide as the segments'
-/// mean length keep the samples to about 3 per segment, and few segments in
-/// a cell where their lengths are alike (cells a fraction of the extent put
-/// hundreds of a coastline's segments in each).
-class SegmentGrid
+/// A k-d tree of the points: each node a range of them, split at its median
+/// along the wider side of its bounds, down to leaves of at most 8. A
+/// segment finds the points within tol of it by descending only into nodes
+/// whose bounds come that close to it, so the work follows the points near
+/// each segment. (A grid fails on inputs that mix lengths: cells as wide as
+/// the mean segment put a cluster of 40,000 short segments in a few cells,
+/// 8.6 s; cells per length made every point near a long segment visit it.)
+class PointTree
 {
 public:
-  SegmentGrid(const Array<Point>& points, const Array<OriginSegment>& segments, double tol)
-    : bounds(boundsOf(points))
+  explicit PointTree(const Array<Point>& points)
+    : P(points)
+    , order(points.size())
   {
-    double mean = 0; // as a running mean: a sum could overflow
-    for (std::size_t k = 0; k < segments.size(); ++k)
-    {
-      const Point &a = points[segments[k].first[0]], &b = points[segments[k].first[1]];
-      mean += (std::hypot(b.x - a.x, b.y - a.y) - mean) / double(k + 1);
-    }
-    // At most 2^40 cells across: their indices stay far inside 64 bits.
-    const double extent = std::max(bounds.width(), bounds.height());
-    cell = std::max({ 2 * tol, mean, std::ldexp(extent, -40) });
-    if (!usable())
-      return;
-    for (std::size_t s = 0; s < segments.size(); ++s)
-      addSamples(points[segments[s].first[0]], points[segments[s].first[1]], int(s));
-    std::sort(entries.begin(), entries.end());
-    entries.erase(std::unique(entries.begin(), entries.end()), entries.end());
+    for (std::size_t i = 0; i < order.size(); ++i)
+      order[i] = static_cast<int>(i);
+    std::size_t leaves = 1;
+    while (leaves * kLeaf < points.size())
+      leaves *= 2;
+    box.resize(2 * leaves - 1);
+    build(0, 0, order.size());
   }
 
-  /// False where the extent overflows (coordinates near the double limit,
-  /// which the mesher refuses as too large): nothing is listed.
-  bool usable() const { return std::isfinite(cell) && std::isfinite(2 * cell); }
-
-  /// The segments listed in the 3 x 3 cells around p (with repeats).
+  /// Visits every point within tol of segment ab (and some a little beyond).
   template <typename Visit>
-  void around(const Point& p, Visit visit) const
+  void near(const Point& a, const Point& b, double tol, Visit visit) const
   {
-    const std::int64_t cx = index(p.x, bounds.lo.x), cy = index(p.y, bounds.lo.y);
-    // The three cells of a column are consecutive in the sorted entries.
-    for (std::int64_t x = cx - 1; x <= cx + 1; ++x)
-      for (auto it = std::lower_bound(entries.begin(), entries.end(), Entry{ x, cy - 1, -1 });
-           it != entries.end() && it->x == x && it->y <= cy + 1; ++it)
-        visit(it->segment);
+    const double length = std::hypot(b.x - a.x, b.y - a.y);
+    const double ux = (b.x - a.x) / length, uy = (b.y - a.y) / length;
+    Bounds reach{ { std::min(a.x, b.x) - tol, std::min(a.y, b.y) - tol },
+      { std::max(a.x, b.x) + tol, std::max(a.y, b.y) + tol } };
+    // Nodes as (node, first point, end).
+    Array<std::array<std::size_t, 3>> stack{ { 0, 0, order.size() } };
+    while (!stack.empty())
+    {
+      const auto [node, lo, hi] = stack.back();
+      stack.pop_back();
+      if (lo == hi || !meets(box[node], reach) || !nearLine(box[node], a, ux, uy, tol))
+        continue;
+      if (hi - lo <= kLeaf || 2 * node + 2 >= box.size())
+      {
+        for (std::size_t k = lo; k < hi; ++k)
+          visit(order[k]);
+        continue;
+      }
+      const std::size_t mid = lo + (hi - lo) / 2;
+      stack.push_back({ 2 * node + 1, lo, mid });
+      stack.push_back({ 2 * node + 2, mid, hi });
+    }
   }
 
 private:
-  struct Entry
-  {
-    std::int64_t x, y; ///< the cell
-    int segment;
-    bool operator<(const Entry& o) const
-    {
-      return x != o.x ? x < o.x : y != o.y ? y < o.y : segment < o.segment;
-    }
-    bool operator==(const Entry& o) const { return x == o.x && y == o.y && segment == o.segment; }
-  };
+  static constexpr std::size_t kLeaf = 8;
 
-  std::int64_t index(double v, double lo) const
+  void build(std::size_t node, std::size_t lo, std::size_t hi)
   {
-    return static_cast<std::int64_t>(std::floor((v - lo) / cell));
+    Bounds b = emptyBounds();
+    for (std::size_t k = lo; k < hi; ++k)
+      extend(b, P[order[k]]);
+    box[node] = b;
+    if (hi - lo <= kLeaf || 2 * node + 2 >= box.size())
+      return;
+    const std::size_t mid = lo + (hi - lo) / 2;
+    const bool byX = b.width() >= b.height();
+    std::nth_element(order.begin() + lo, order.begin() + mid, order.begin() + hi,
+      [&](int i, int j) { return byX ? P[i].x < P[j].x : P[i].y < P[j].y; });
+    build(2 * node + 1, lo, mid);
+    build(2 * node + 2, mid, hi);
   }
 
-  void addSamples(const Point& a, const Point& b, int s)
+  static bool meets(const Bounds& b, const Bounds& r)
   {
-    const double length = std::hypot(b.x - a.x, b.y - a.y);
-    const auto steps = static_cast<std::int64_t>(std::ceil(length / (cell / 2)));
-    for (std::int64_t k = 0; k <= steps; ++k)
-    {
-      const double t = steps == 0 ? 0.0 : double(k) / double(steps);
-      const Entry e{ index(a.x + t * (b.x - a.x), bounds.lo.x),
-        index(a.y + t * (b.y - a.y), bounds.lo.y), s };
-      if (k == 0 || e.x != entries.back().x || e.y != entries.back().y)
-        entries.push_back(e);
-    }
+    return b.lo.x <= r.hi.x && r.lo.x <= b.hi.x && b.lo.y <= r.hi.y && r.lo.y <= b.hi.y;
   }
 
-  Bounds bounds;
-  double cell = 1;
-  Array<Entry> entries; ///< sorted
+  /// Whether the line through a with unit direction u comes within tol of
+  /// box b: not all of its corners beyond tol on one side.
+  static bool nearLine(const Bounds& b, const Point& a, double ux, double uy, double tol)
+  {
+    double least = 0, most = 0;
+    bool first = true;
+    for (const double x : { b.lo.x, b.hi.x })
+      for (const double y : { b.lo.y, b.hi.y })
+      {
+        const double off = (y - a.y) * ux - (x - a.x) * uy;
+        least = first ? off : std::min(least, off);
+        most = first ? off : std::max(most, off);
+        first = false;
+      }
+    return least <= tol && most >= -tol;
+  }
+
+  const Array<Point>& P;
+  Array<int> order;
+  Array<Bounds> box; ///< per node, its points' bounds
 };
 
 struct Snap
@@ -110,26 +126,26 @@ struct Snap
 /// along each segment.
 Array<Snap> findSnaps(const Array<Point>& points, const Array<OriginSegment>& segments, double tol)
 {
-  const SegmentGrid grid(points, segments, tol);
+  const PointTree tree(points);
   Array<Snap> snaps;
-  if (!grid.usable())
-    return snaps;
-  for (std::size_t i = 0; i < points.size(); ++i)
+  for (std::size_t s = 0; s < segments.size(); ++s)
   {
-    const Point& p = points[i];
-    grid.around(p, [&](int s) {
-      const Segment& e = segments[s].first;
-      if (e[0] == int(i) || e[1] == int(i))
+    const Segment& e = segments[s].first;
+    // Along and off the segment's unit direction: no square of a coordinate
+    // difference, which overflows near the coordinates' limit.
+    const Point &a = points[e[0]], &b = points[e[1]];
+    const double length = std::hypot(b.x - a.x, b.y - a.y);
+    if (!std::isfinite(length))
+      continue; // beyond the coordinates the mesher accepts
+    const double ux = (b.x - a.x) / length, uy = (b.y - a.y) / length;
+    tree.near(a, b, tol, [&](int i) {
+      if (i == e[0] || i == e[1])
         return;
-      // Along and off the segment's unit direction: no square of a
-      // coordinate difference, which overflows near the coordinates' limit.
-      const Point &a = points[e[0]], &b = points[e[1]];
-      const double length = std::hypot(b.x - a.x, b.y - a.y);
-      const double ux = (b.x - a.x) / length, uy = (b.y - a.y) / length;
+      const Point& p = points[i];
       const double along = (p.x - a.x) * ux + (p.y - a.y) * uy;
       const double off = (p.y - a.y) * ux - (p.x - a.x) * uy;
       if (along > 0 && along < length && std::fabs(off) <= tol)
-        snaps.push_back({ s, along / length, int(i) });
+        snaps.push_back({ static_cast<int>(s), along / length, i });
     });
   }
   std::sort(snaps.begin(), snaps.end());

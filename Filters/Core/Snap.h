@@ -27,8 +27,9 @@ struct SnapExample
 /// to pass through them. The points are those left after merging within tol
 /// (pairwise further apart than tol). Each piece keeps its segment's origin.
 /// Returns how many (point, segment) pairs were snapped; example names one.
-/// Linear in the points and in the segments' lengths over the grid's cells
-/// (a grid of about one cell per segment, at least 2 tol wide).
+/// O(n log n) for a k-d tree of the points, then per segment a descent into
+/// the nodes that come within tol of it: the work follows the points near
+/// each segment.
 std::size_t snapPointsOntoSegments(
   const Array<Point>& points, Array<OriginSegment>& segments, double tol, SnapExample& example);
 
