@@ -1,5 +1,6 @@
 #include "Clean.h"
 
+#include "Geometry.h"
 #include "HugePages.h"
 #include "Snap.h"
 
@@ -9,6 +10,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <unordered_map>
+#include <utility>
 
 namespace osm
 {
@@ -70,23 +72,39 @@ Array<int> exactRepresentatives(const Array<Point>& pts)
 }
 
 /// For each point, the first earlier kept point within tol, or itself. A hash
-/// grid of cell size tol finds the candidates in the 3 x 3 cells around it.
+/// grid of cells at least tol wide finds the candidates in the 3 x 3 cells
+/// around it. Cells are also at least 2^-60 of the extent wide, counted from
+/// its corner: a cell index of x / tol overflowed 64 bits (1e6 at 1e-13),
+/// and the wrapped keys made the search quadratic.
 Array<int> nearRepresentatives(const Array<Point>& pts, double tol)
 {
-  std::unordered_map<std::uint64_t, Array<int>> grid;
-  auto key = [](std::int64_t x, std::int64_t y) {
-    return (static_cast<std::uint64_t>(x) << 32) ^ static_cast<std::uint64_t>(y & 0xffffffff);
+  using Cell = std::pair<std::int64_t, std::int64_t>;
+  struct CellHash
+  {
+    std::size_t operator()(const Cell& c) const
+    {
+      return static_cast<std::size_t>(static_cast<std::uint64_t>(c.first) * 0x9E3779B97F4A7C15ull ^
+        static_cast<std::uint64_t>(c.second));
+    }
   };
+  const Bounds bounds = boundsOf(pts);
+  const double cell = std::max(tol, std::ldexp(std::max(bounds.width(), bounds.height()), -60));
+  // An extent that overflows (coordinates the mesher refuses) leaves every
+  // point in cell 0: slow but defined.
+  auto index = [&](double v, double lo) {
+    const double c = std::floor((v - lo) / cell);
+    return std::isfinite(c) ? static_cast<std::int64_t>(c) : std::int64_t{ 0 };
+  };
+  std::unordered_map<Cell, Array<int>, CellHash> grid;
   Array<int> representative(pts.size());
   for (std::size_t i = 0; i < pts.size(); ++i)
   {
-    const auto cx = static_cast<std::int64_t>(std::floor(pts[i].x / tol));
-    const auto cy = static_cast<std::int64_t>(std::floor(pts[i].y / tol));
+    const std::int64_t cx = index(pts[i].x, bounds.lo.x), cy = index(pts[i].y, bounds.lo.y);
     int found = -1;
     for (std::int64_t dx = -1; dx <= 1 && found < 0; ++dx)
       for (std::int64_t dy = -1; dy <= 1 && found < 0; ++dy)
       {
-        const auto it = grid.find(key(cx + dx, cy + dy));
+        const auto it = grid.find({ cx + dx, cy + dy });
         if (it == grid.end())
           continue;
         for (int j : it->second)
@@ -98,7 +116,7 @@ Array<int> nearRepresentatives(const Array<Point>& pts, double tol)
       }
     representative[i] = found >= 0 ? found : static_cast<int>(i);
     if (found < 0)
-      grid[key(cx, cy)].push_back(static_cast<int>(i));
+      grid[{ cx, cy }].push_back(static_cast<int>(i));
   }
   return representative;
 }
@@ -136,13 +154,35 @@ void mergeDuplicates(const Pslg& in, CleanPslg& out, Statistics& stats,
       std::to_string(representative[example]) + " at " + formatPoint(in.points[example], format));
 }
 
+/// Sorts the segments and drops repeats of one (the first in input order
+/// stays): how many, and the input segment of one dropped.
+std::pair<std::size_t, int> dropDuplicates(Array<OriginSegment>& segs)
+{
+  std::sort(segs.begin(), segs.end());
+  std::size_t kept = 0, dropped = 0;
+  int example = -1;
+  for (std::size_t k = 0; k < segs.size(); ++k)
+  {
+    if (kept > 0 && segs[k].first == segs[kept - 1].first)
+    {
+      ++dropped;
+      if (example < 0)
+        example = segs[k].second;
+      continue;
+    }
+    segs[kept++] = segs[k];
+  }
+  segs.resize(kept);
+  return { dropped, example };
+}
+
 /// The segments on the merged points; with a tolerance, split at the points
 /// within it (Snap.h); zero-length and duplicate ones dropped.
 std::string mapSegments(const Pslg& in, CleanPslg& out, Statistics& stats,
   std::vector<std::string>& warnings, double tol, const PointFormat& format)
 {
   const long long n = static_cast<long long>(in.points.size());
-  Array<std::pair<Segment, int>> segs;
+  Array<OriginSegment> segs;
   segs.reserve(in.segments.size());
   int zeroExample = -1;
   for (std::size_t s = 0; s < in.segments.size(); ++s)
@@ -165,33 +205,33 @@ std::string mapSegments(const Pslg& in, CleanPslg& out, Statistics& stats,
   if (zeroExample >= 0)
     warnings.push_back("dropped " + std::to_string(stats.zeroLengthSegmentsDropped) +
       " zero-length segment(s), e.g. segment " + std::to_string(zeroExample));
+  // Duplicates in the input are counted as such; pieces that snapping makes
+  // coincide (a segment and a copy of part of it) are said with the snaps.
+  const auto [duplicates, dupExample] = dropDuplicates(segs);
+  stats.duplicateSegmentsMerged = duplicates;
+  if (duplicates > 0)
+    warnings.push_back("merged " + std::to_string(duplicates) +
+      " duplicate segment(s), e.g. segment " + std::to_string(dupExample));
   SnapExample snapped;
   stats.pointsSnappedOntoSegments = snapPointsOntoSegments(out.points, segs, tol, snapped);
   if (stats.pointsSnappedOntoSegments > 0)
   {
+    const std::size_t coincide = dropDuplicates(segs).first;
     const auto first = std::find(out.pointOf.begin(), out.pointOf.end(), snapped.point);
-    warnings.push_back("split segments at " + std::to_string(stats.pointsSnappedOntoSegments) +
-      " point(s) within the merge tolerance of them, e.g. segment " +
-      std::to_string(snapped.segment) + " at point " + std::to_string(first - out.pointOf.begin()) +
-      " " + formatPoint(out.points[snapped.point], format));
+    warnings.push_back("split segments " + std::to_string(stats.pointsSnappedOntoSegments) +
+      " time(s) at points within the merge tolerance of them" +
+      (coincide > 0
+          ? " (" + std::to_string(coincide) + " of the pieces then coincided and were merged)"
+          : std::string()) +
+      ", e.g. segment " + std::to_string(snapped.segment) + " at point " +
+      std::to_string(first - out.pointOf.begin()) + " " +
+      formatPoint(out.points[snapped.point], format));
   }
-  std::sort(segs.begin(), segs.end());
-  int dupExample = -1;
-  for (std::size_t k = 0; k < segs.size(); ++k)
+  for (const auto& [segment, origin] : segs)
   {
-    if (k > 0 && segs[k].first == segs[k - 1].first)
-    {
-      ++stats.duplicateSegmentsMerged;
-      if (dupExample < 0)
-        dupExample = segs[k].second;
-      continue;
-    }
-    out.segments.push_back(segs[k].first);
-    out.segmentOrigin.push_back(segs[k].second);
+    out.segments.push_back(segment);
+    out.segmentOrigin.push_back(origin);
   }
-  if (dupExample >= 0)
-    warnings.push_back("merged " + std::to_string(stats.duplicateSegmentsMerged) +
-      " duplicate segment(s), e.g. segment " + std::to_string(dupExample));
   return {};
 }
 

@@ -375,7 +375,7 @@ std::string crossingError(
   // every pair of them.
   if (crossings.size() > 1)
     msg += " (and at least " + std::to_string(crossings.size() - 1) + " more crossing pair(s))";
-  return msg + "; enable resolving intersections to split them";
+  return msg;
 }
 
 class Mesher
@@ -482,8 +482,9 @@ Result Mesher::execute()
           options.pointFormat);
     // Borders that two polygons share, digitised twice, differ by such gaps.
     if (stop.pointsTooClose)
-      stop.reason += "; points meant to be one are merged by a merge tolerance larger than "
-                     "their distance (osm-mesh --merge-tolerance, the filter's MergeTolerance)";
+      stop.reason += std::string("; if input points there are meant to be one, a ") +
+        (options.mergeTolerance > 0 ? "larger " : "") +
+        "merge tolerance (osm-mesh --merge-tolerance, the filter's MergeTolerance) joins them";
     throw;
   }
   st.secondsTotal = since(t0);
@@ -750,10 +751,14 @@ void Mesher::meshRounds(Work& w)
     if (!walk.segmentCrossings.empty())
     {
       if (!options.resolveCrossings)
-        throw Stop{ crossingError(w, walk.segmentCrossings, exponent, options.pointFormat) };
+        throw Stop{ crossingError(w, walk.segmentCrossings, exponent, options.pointFormat) +
+          "; enable resolving intersections to split them" };
+      // Each round splits at rounded points, which may cross again.
       if (++crossingRounds >= 5)
-        throw Stop{ "could not resolve all crossings after 5 rounds: " +
-          crossingError(w, walk.segmentCrossings, exponent, options.pointFormat) };
+        throw Stop{ "could not resolve all crossings after 5 rounds of splitting them at their "
+                    "rounded intersection points, which crossed again: " +
+          crossingError(w, walk.segmentCrossings, exponent, options.pointFormat) +
+          "; the segments there come closer than double precision separates" };
       if (st.crossingsSplit == 0)
         firstCrossing =
           describeCrossing(w, walk.segmentCrossings.front(), exponent, options.pointFormat);

@@ -869,13 +869,13 @@ void checkInputVertices(const Pslg& input, const VertexMap& map, Errors& errors)
 }
 
 /// Searches a chain of mesh edges for input segment ab, from vertex A to vertex B. Each step
-/// goes to a neighbour within the rounding tolerance (plus bend) of line ab and strictly further
+/// goes to a neighbour within the rounding tolerance of line ab and strictly further
 /// along it. Depth first, nearest the line first, and back out of dead ends: where another input
 /// segment runs within the tolerance of this one (two segments diverging by 1e-9 rad from a shared
 /// end), the step most directly towards b could take its chain and get stuck, though this
 /// segment's own chain was there. Each vertex is entered once, so the search is linear. Returns ""
 /// or why no chain was found (from the furthest vertex reached).
-std::string walkSegment(const Mesh& m, int A, int B, double bend)
+std::string walkSegment(const Mesh& m, int A, int B)
 {
   const Point &a = m.at(A), &b = m.at(B);
   const double dx = b.x - a.x, dy = b.y - a.y, len = std::hypot(dx, dy);
@@ -909,7 +909,7 @@ std::string walkSegment(const Mesh& m, int A, int B, double bend)
           continue;
         const double off = std::fabs(dx * (pw.y - a.y) - dy * (pw.x - a.x)) / len;
         const double tol =
-          1e-9 * len + 16 * eps * std::max({ scale, std::fabs(pw.x), std::fabs(pw.y) }) + bend;
+          1e-9 * len + 16 * eps * std::max({ scale, std::fabs(pw.x), std::fabs(pw.y) });
         if (off > tol)
           nearestOff = std::min(nearestOff, off);
         else
@@ -948,8 +948,7 @@ std::string walkSegment(const Mesh& m, int A, int B, double bend)
 }
 
 /// Check 6: input segments whose endpoints are mesh vertices are chains of mesh edges.
-void checkConformity(
-  const Pslg& input, const Mesh& m, const VertexMap& map, double bend, Errors& errors)
+void checkConformity(const Pslg& input, const Mesh& m, const VertexMap& map, Errors& errors)
 {
   const auto np = input.points.size();
   for (std::size_t s = 0; s < input.segments.size(); ++s)
@@ -966,7 +965,7 @@ void checkConformity(
     const int A = meshVertex(map, input.points[seg[0]]), B = meshVertex(map, input.points[seg[1]]);
     if (A < 0 || B < 0 || A == B)
       continue; // not both in the mesh (or degenerate): nothing to conform to
-    const std::string why = walkSegment(m, A, B, bend);
+    const std::string why = walkSegment(m, A, B);
     if (!why.empty())
       errors.add([&] { return name + " is not a chain of mesh edges: " + why; });
   }
@@ -1000,6 +999,46 @@ Array<Point> scaled(const Array<Point>& pts, int e)
   return out;
 }
 
+/// The input with each segment split at the points within tol of it,
+/// strictly between its ends, in order along it: what a merge tolerance does
+/// to the segments (the mesher's Snap.h, here by brute force).
+Pslg snapped(const Pslg& input, double tol)
+{
+  Pslg out = input;
+  out.segments.clear();
+  const int n = static_cast<int>(input.points.size());
+  std::vector<std::pair<double, int>> cuts;
+  for (const Segment& s : input.segments)
+  {
+    if (s[0] < 0 || s[1] < 0 || s[0] >= n || s[1] >= n)
+    {
+      out.segments.push_back(s); // reported as out of range
+      continue;
+    }
+    const Point &a = input.points[s[0]], &b = input.points[s[1]];
+    const double length = std::hypot(b.x - a.x, b.y - a.y);
+    const double ux = (b.x - a.x) / length, uy = (b.y - a.y) / length;
+    cuts.clear();
+    for (int i = 0; i < n; ++i)
+    {
+      const Point& p = input.points[i];
+      const double along = (p.x - a.x) * ux + (p.y - a.y) * uy;
+      const double off = (p.y - a.y) * ux - (p.x - a.x) * uy;
+      if (i != s[0] && i != s[1] && along > 0 && along < length && std::fabs(off) <= tol)
+        cuts.push_back({ along, i });
+    }
+    std::sort(cuts.begin(), cuts.end());
+    int from = s[0];
+    for (const auto& [along, i] : cuts)
+    {
+      out.segments.push_back({ from, i });
+      from = i;
+    }
+    out.segments.push_back({ from, s[1] });
+  }
+  return out;
+}
+
 } // namespace
 
 ValidationReport validate(const Pslg& input, const Array<Point>& vertices,
@@ -1012,6 +1051,7 @@ ValidationReport validate(const Pslg& input, const Array<Point>& vertices,
     in.points = scaled(input.points, e);
     ValidationOptions o = options;
     o.maxEdgeLength = std::ldexp(options.maxEdgeLength, -e);
+    o.snapTolerance = std::ldexp(options.snapTolerance, -e);
     ValidationReport r = validate(in, scaled(vertices, e), triangles, o);
     if (!r.ok)
       r.errors.push_back("(coordinates in these messages are scaled by 2^" + std::to_string(-e) +
@@ -1034,7 +1074,8 @@ ValidationReport validate(const Pslg& input, const Array<Point>& vertices,
   if (options.requireAllInputVertices)
     checkInputVertices(input, map, errors); // 5
   if (options.checkConformity)
-    checkConformity(input, m, map, options.conformityBend, errors); // 6
+    checkConformity(options.snapTolerance > 0 ? snapped(input, options.snapTolerance) : input, m,
+      map, errors); // 6
   return report;
 }
 

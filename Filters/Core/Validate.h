@@ -22,9 +22,11 @@ struct ValidationOptions
   /// Also check conformity (every input segment is a chain of mesh edges) for
   /// segments whose endpoints are both mesh vertices.
   bool checkConformity = true;
-  /// How far a chain may run off its segment's line beyond rounding: the
-  /// merge tolerance, within which segments bend onto points near them.
-  double conformityBend = 0.0;
+  /// If > 0, the merge tolerance the mesh was made with: before checking
+  /// conformity, each input segment is split at the input points within this
+  /// distance of it (strictly between its ends, by brute force over every
+  /// point and segment: O(points x segments)), and each piece must be a chain.
+  double snapTolerance = 0.0;
   /// Also check that every input point is a mesh vertex. Off when holes may remove some.
   bool requireAllInputVertices = true;
   /// Keep at most this many messages in ValidationReport::errors (all are still counted).

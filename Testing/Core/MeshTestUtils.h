@@ -21,8 +21,8 @@ inline Result meshAndValidate(
   if (vo.maxEdgeLength == 0)
     vo.maxEdgeLength = options.maxEdgeLength;
   // Segments bend onto points within the merge tolerance of them.
-  if (vo.conformityBend == 0)
-    vo.conformityBend = options.mergeTolerance;
+  if (vo.snapTolerance == 0)
+    vo.snapTolerance = options.mergeTolerance;
   Result r = mesh(input, options);
   EXPECT_TRUE(r.ok) << name << ": " << r.error;
   if (!r.ok)

@@ -448,6 +448,7 @@ TEST(Clean, RefusesCrossingsWhenAskedTo)
   EXPECT_FALSE(r.ok);
   EXPECT_NE(r.error.find("input segment 4 and input segment 5 cross"), std::string::npos)
     << r.error;
+  EXPECT_NE(r.error.find("enable resolving intersections"), std::string::npos) << r.error;
   EXPECT_TRUE(r.mesh.triangles.empty());
 }
 
@@ -1361,7 +1362,8 @@ TEST(Clean, ABorderDigitisedTwiceIsMeshedWithAMergeTolerance)
   ASSERT_FALSE(refused.ok);
   EXPECT_NE(refused.error.find("closer together than double precision"), std::string::npos)
     << refused.error;
-  EXPECT_NE(refused.error.find("merged by a merge tolerance"), std::string::npos) << refused.error;
+  EXPECT_NE(refused.error.find("a merge tolerance (osm-mesh --merge-tolerance"), std::string::npos)
+    << refused.error;
   Options o;
   o.mergeTolerance = 1e-12;
   const Result r = mesh(p, o);
@@ -1403,9 +1405,11 @@ TEST(Clean, SegmentsBendOntoPointsWithinTheMergeTolerance)
   const Result snapped = meshAndValidate(close, "gap 1e-10, tolerance 1e-9", o);
   // The 4 ends of the copies on the segment, and one end of each copy on the other.
   EXPECT_EQ(snapped.stats.pointsSnappedOntoSegments, 6u);
-  EXPECT_EQ(snapped.stats.duplicateSegmentsMerged, 4u);
-  EXPECT_TRUE(
-    mentions(snapped.warnings, "split segments at 6 point(s) within the merge tolerance"));
+  // The input has no duplicates; 4 pieces coincide once split, said with the snaps.
+  EXPECT_EQ(snapped.stats.duplicateSegmentsMerged, 0u);
+  EXPECT_TRUE(mentions(snapped.warnings,
+    "split segments 6 time(s) at points within the merge tolerance of them (4 of the pieces "
+    "then coincided and were merged)"));
 
   // A gap of 1e-6: meshed apart, graded down to the crossings; with a
   // tolerance of 1e-5 the segments bend by 1e-6 (beyond rounding: the
@@ -1418,6 +1422,44 @@ TEST(Clean, SegmentsBendOntoPointsWithinTheMergeTolerance)
   EXPECT_LT(10 * bent.mesh.triangles.size(), graded.mesh.triangles.size());
   EXPECT_EQ(bent.mesh.triangles.size(), snapped.mesh.triangles.size());
   EXPECT_FALSE(validate(apart, bent.mesh.vertices, bent.mesh.triangles).ok);
+  // The validator splits the input as the tolerance does, by brute force,
+  // and then wants every piece exactly: the straight mesh fails that.
+  ValidationOptions snap;
+  snap.snapTolerance = 1e-5;
+  EXPECT_TRUE(validate(apart, bent.mesh.vertices, bent.mesh.triangles, snap).ok);
+  EXPECT_FALSE(validate(apart, graded.mesh.vertices, graded.mesh.triangles, snap).ok);
+
+  // Far below 2^-100 the validator scales the coordinates, and the
+  // tolerance with them.
+  Pslg tiny = copies(1e-6);
+  for (Point& q : tiny.points)
+    q = { q.x * 1e-40, q.y * 1e-40 };
+  o.mergeTolerance = 1e-45;
+  const Result small = meshAndValidate(tiny, "1e-40 times smaller", o);
+  EXPECT_EQ(small.stats.pointsSnappedOntoSegments, 6u);
+}
+
+TEST(Clean, MergeToleranceFarBelowTheCoordinates)
+{
+  // Cell indices of x / tol overflowed 64 bits here (1e6 / 1e-13: undefined
+  // behaviour, and the wrapped keys made the merge quadratic). Points 1e-3
+  // apart stay apart; an exact duplicate and one 1e-13 off (below an ulp of
+  // 1e6, so equal) merge.
+  Pslg p;
+  for (int k = 0; k < 1000; ++k)
+    p.points.push_back({ 1e6 + k * 1e-3, 2e6 });
+  p.points.push_back(p.points[0]);
+  p.points.push_back({ p.points[5].x + 1e-13, 2e6 });
+  for (int k = 0; k + 1 < 1000; ++k)
+    p.segments.push_back({ k, k + 1 });
+  Options o;
+  o.mergeTolerance = 1e-13;
+  o.domain = Domain::Box;
+  const Result r = mesh(p, o);
+  ASSERT_TRUE(r.ok) << r.error;
+  EXPECT_EQ(r.stats.duplicatePointsMerged, 2u);
+  EXPECT_EQ(r.inputVertex[1000], r.inputVertex[0]);
+  EXPECT_EQ(r.inputVertex[1001], r.inputVertex[5]);
 }
 
 TEST(Mesher, RefusesCoordinatesNearTheDoubleLimit)

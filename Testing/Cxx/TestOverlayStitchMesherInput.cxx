@@ -233,7 +233,7 @@ int TestMergeTolerance()
     "point near an edge: PointsSnappedOntoSegments = " +
       Num(Statistic(mesh, "PointsSnappedOntoSegments")));
   Check(h.Messages->HasWarning(
-          { "split segments at 1 point(s) within the merge tolerance", "segment 0 at point 4" }),
+          { "split segments 1 time(s) at points within the merge tolerance", "segment 0 at point 4" }),
     "point near an edge: a warning names the segment and the point");
   h.Mesher->SetMergeTolerance(1e-8);
   mesh = h.Run(nearEdge, "point near an edge, tolerance 1e-8");

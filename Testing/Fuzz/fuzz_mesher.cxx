@@ -133,7 +133,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       !(present.points[index[s[0]]] == present.points[index[s[1]]]))
       present.segments.push_back({ index[s[0]], index[s[1]] });
   osm::ValidationOptions vo;
-  vo.conformityBend = o.mergeTolerance;
+  vo.snapTolerance = o.mergeTolerance;
   vo.maxAngleDeg = r.stats.predictedMaxAngleDeg + 1e-9;
   // No edge longer than the size bound, unless a warning says which is.
   bool longKept = false;
