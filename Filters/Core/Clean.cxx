@@ -176,6 +176,45 @@ std::pair<std::size_t, int> dropDuplicates(Array<OriginSegment>& segs)
   return { dropped, example };
 }
 
+/// Hole and region seeds within tol of a segment that snapping bent may now
+/// lie on its other side (its region and theirs swapped): say so, as the
+/// mesh shows no trace of it. Seeds by the split segments: both are few.
+void warnAboutSeedsBesideBends(const Pslg& in, const Array<Point>& points,
+  const Array<OriginSegment>& split, double tol, std::vector<std::string>& warnings)
+{
+  auto beside = [&](const Point& q) {
+    for (const auto& [s, origin] : split)
+    {
+      const Point &a = points[s[0]], &b = points[s[1]];
+      const double length = std::hypot(b.x - a.x, b.y - a.y);
+      const double ux = (b.x - a.x) / length, uy = (b.y - a.y) / length;
+      const double along = (q.x - a.x) * ux + (q.y - a.y) * uy;
+      const double off = (q.y - a.y) * ux - (q.x - a.x) * uy;
+      if (along >= -tol && along <= length + tol && std::fabs(off) <= tol)
+        return origin;
+    }
+    return -1;
+  };
+  std::size_t count = 0;
+  std::string example;
+  auto check = [&](const Point& q, const char* kind, std::size_t k) {
+    if (const int s = beside(q); s >= 0 && count++ == 0)
+      example = std::string(kind) + " " + std::to_string(k) +
+        " lies within the merge tolerance of segment " + std::to_string(s);
+  };
+  if (split.empty())
+    return;
+  for (std::size_t h = 0; h < in.holes.size(); ++h)
+    check(in.holes[h], "hole", h);
+  for (std::size_t r = 0; r < in.regions.size(); ++r)
+    check(in.regions[r].seed, "region", r);
+  if (count > 0)
+    warnings.push_back(std::to_string(count) +
+      " hole or region seed(s) lie within the merge tolerance of a segment that was split at "
+      "points near it, and may now lie on its other side: e.g. " +
+      example);
+}
+
 /// The segments on the merged points; with a tolerance, split at the points
 /// within it (Snap.h); zero-length and duplicate ones dropped.
 std::string mapSegments(const Pslg& in, CleanPslg& out, Statistics& stats,
@@ -213,7 +252,8 @@ std::string mapSegments(const Pslg& in, CleanPslg& out, Statistics& stats,
     warnings.push_back("merged " + std::to_string(duplicates) +
       " duplicate segment(s), e.g. segment " + std::to_string(dupExample));
   SnapExample snapped;
-  stats.pointsSnappedOntoSegments = snapPointsOntoSegments(out.points, segs, tol, snapped);
+  Array<OriginSegment> split;
+  stats.pointsSnappedOntoSegments = snapPointsOntoSegments(out.points, segs, tol, snapped, &split);
   if (stats.pointsSnappedOntoSegments > 0)
   {
     const std::size_t coincide = dropDuplicates(segs).first;
@@ -232,6 +272,7 @@ std::string mapSegments(const Pslg& in, CleanPslg& out, Statistics& stats,
     out.segments.push_back(segment);
     out.segmentOrigin.push_back(origin);
   }
+  warnAboutSeedsBesideBends(in, out.points, split, tol, warnings);
   return {};
 }
 

@@ -155,8 +155,8 @@ Array<Snap> findSnaps(const Array<Point>& points, const Array<OriginSegment>& se
 
 } // namespace
 
-std::size_t snapPointsOntoSegments(
-  const Array<Point>& points, Array<OriginSegment>& segments, double tol, SnapExample& example)
+std::size_t snapPointsOntoSegments(const Array<Point>& points, Array<OriginSegment>& segments,
+  double tol, SnapExample& example, Array<OriginSegment>* split)
 {
   if (!(tol > 0) || segments.empty())
     return 0;
@@ -167,6 +167,8 @@ std::size_t snapPointsOntoSegments(
   for (std::size_t k = 0; k < snaps.size();)
   {
     const int s = snaps[k].segment;
+    if (split)
+      split->push_back(segments[s]);
     const auto [ends, origin] = segments[s];
     // Along the segment from ends[0] (t is measured from it): the first piece
     // replaces the segment, the others are appended.

@@ -29,9 +29,10 @@ struct SnapExample
 /// Returns how many (point, segment) pairs were snapped; example names one.
 /// O(n log n) for a k-d tree of the points, then per segment a descent into
 /// the nodes that come within tol of it: the work follows the points near
-/// each segment.
-std::size_t snapPointsOntoSegments(
-  const Array<Point>& points, Array<OriginSegment>& segments, double tol, SnapExample& example);
+/// each segment. split, if given, receives the segments that were split, as
+/// they were.
+std::size_t snapPointsOntoSegments(const Array<Point>& points, Array<OriginSegment>& segments,
+  double tol, SnapExample& example, Array<OriginSegment>* split = nullptr);
 
 } // namespace osm
 

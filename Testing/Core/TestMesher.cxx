@@ -1439,6 +1439,34 @@ TEST(Clean, SegmentsBendOntoPointsWithinTheMergeTolerance)
   EXPECT_EQ(small.stats.pointsSnappedOntoSegments, 6u);
 }
 
+TEST(Clean, ASeedBesideABentSegmentIsWarnedAbout)
+{
+  // A divider at y = 5 with a point 0.9 above it, and a hole seed 0.5 above
+  // it: with a tolerance of 1 the divider bends up through the point, past
+  // the seed, and the hole takes the other half. Found by a review; the
+  // mesh shows no trace of it, so a warning says it.
+  Pslg p = square();
+  for (Point& q : p.points)
+    q = { 10 * q.x, 10 * q.y };
+  p.points.insert(p.points.end(), { { 0, 5 }, { 10, 5 }, { 5, 5.9 } });
+  p.segments.push_back({ 4, 5 });
+  p.holes.push_back({ 5, 5.5 });
+  const Result straight = mesh(p);
+  ASSERT_TRUE(straight.ok) << straight.error;
+  EXPECT_FALSE(mentions(straight.warnings, "seed(s) lie within the merge tolerance"));
+  Options o;
+  o.mergeTolerance = 1;
+  const Result bent = mesh(p, o);
+  ASSERT_TRUE(bent.ok) << bent.error;
+  EXPECT_EQ(bent.stats.pointsSnappedOntoSegments, 3u); // and the divider's ends on the sides
+  EXPECT_TRUE(mentions(bent.warnings,
+    "1 hole or region seed(s) lie within the merge tolerance of a segment that was split"));
+  EXPECT_TRUE(mentions(bent.warnings, "hole 0 lies within the merge tolerance of segment 4"));
+  // A seed further off than the tolerance is not in doubt.
+  p.holes = { { 5, 7 } };
+  EXPECT_FALSE(mentions(mesh(p, o).warnings, "seed(s) lie within the merge tolerance"));
+}
+
 TEST(Clean, MergeToleranceFarBelowTheCoordinates)
 {
   // Cell indices of x / tol overflowed 64 bits here (1e6 / 1e-13: undefined
