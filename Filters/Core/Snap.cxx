@@ -110,20 +110,32 @@ private:
   Array<Bounds> box; ///< per node, its points' bounds
 };
 
+/// The end of a segment that its snaps are ordered from: the lower in (x, y)
+/// order, so that the order does not depend on how the segment is numbered.
+int lowerEnd(const Array<Point>& points, const Segment& e)
+{
+  return points[e[1]] < points[e[0]] ? e[1] : e[0];
+}
+
 struct Snap
 {
   int segment; ///< index into the segments
-  double t;    ///< where along it
+  double t;    ///< where along it from its lower end
+  Point at;    ///< the point's, for ties: the order of points equally far along
   int point;
   bool operator<(const Snap& o) const
   {
-    return segment != o.segment ? segment < o.segment : t != o.t ? t < o.t : point < o.point;
+    return segment != o.segment ? segment < o.segment
+      : t != o.t                ? t < o.t
+      : !(at == o.at)           ? at < o.at
+                                : point < o.point;
   }
   bool operator==(const Snap& o) const { return segment == o.segment && point == o.point; }
 };
 
 /// The points within tol of each segment, strictly between its ends, sorted
-/// along each segment.
+/// along each segment from its lower end, and points equally far along (on
+/// either side of it: a zigzag) by their coordinates.
 Array<Snap> findSnaps(const Array<Point>& points, const Array<OriginSegment>& segments, double tol)
 {
   const PointTree tree(points);
@@ -133,7 +145,8 @@ Array<Snap> findSnaps(const Array<Point>& points, const Array<OriginSegment>& se
     const Segment& e = segments[s].first;
     // Along and off the segment's unit direction: no square of a coordinate
     // difference, which overflows near the coordinates' limit.
-    const Point &a = points[e[0]], &b = points[e[1]];
+    const int lower = lowerEnd(points, e);
+    const Point &a = points[lower], &b = points[lower == e[0] ? e[1] : e[0]];
     const double length = std::hypot(b.x - a.x, b.y - a.y);
     if (!std::isfinite(length))
       continue; // beyond the coordinates the mesher accepts
@@ -145,7 +158,7 @@ Array<Snap> findSnaps(const Array<Point>& points, const Array<OriginSegment>& se
       const double along = (p.x - a.x) * ux + (p.y - a.y) * uy;
       const double off = (p.y - a.y) * ux - (p.x - a.x) * uy;
       if (along > 0 && along < length && std::fabs(off) <= tol)
-        snaps.push_back({ static_cast<int>(s), along / length, i });
+        snaps.push_back({ static_cast<int>(s), along / length, p, i });
     });
   }
   std::sort(snaps.begin(), snaps.end());
@@ -170,12 +183,13 @@ std::size_t snapPointsOntoSegments(const Array<Point>& points, Array<OriginSegme
     if (split)
       split->push_back(segments[s]);
     const auto [ends, origin] = segments[s];
-    // Along the segment from ends[0] (t is measured from it): the first piece
-    // replaces the segment, the others are appended.
+    // Along the segment from its lower end: the first piece replaces the
+    // segment, the others are appended.
     auto piece = [origin = origin](int u, int v) {
       return OriginSegment{ { std::min(u, v), std::max(u, v) }, origin };
     };
-    int from = ends[0];
+    int from = lowerEnd(points, ends);
+    const int to = from == ends[0] ? ends[1] : ends[0];
     for (const std::size_t first = k; k < snaps.size() && snaps[k].segment == s; ++k)
     {
       if (k == first)
@@ -184,7 +198,7 @@ std::size_t snapPointsOntoSegments(const Array<Point>& points, Array<OriginSegme
         segments.push_back(piece(from, snaps[k].point));
       from = snaps[k].point;
     }
-    segments.push_back(piece(from, ends[1]));
+    segments.push_back(piece(from, to));
   }
   return snaps.size();
 }

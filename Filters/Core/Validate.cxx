@@ -1000,8 +1000,9 @@ Array<Point> scaled(const Array<Point>& pts, int e)
 }
 
 /// The input with each segment split at the points within tol of it,
-/// strictly between its ends, in order along it: what a merge tolerance does
-/// to the segments (the mesher's Snap.h, here by brute force).
+/// strictly between its ends, in order along it from its lower end in (x, y)
+/// order, points equally far along in (x, y) order: what a merge tolerance
+/// does to the segments (the mesher's Snap.h, here by brute force).
 Pslg snapped(const Pslg& input, double tol)
 {
   Pslg out = input;
@@ -1015,7 +1016,9 @@ Pslg snapped(const Pslg& input, double tol)
       out.segments.push_back(s); // reported as out of range
       continue;
     }
-    const Point &a = input.points[s[0]], &b = input.points[s[1]];
+    const bool flip = input.points[s[1]] < input.points[s[0]];
+    const int lower = flip ? s[1] : s[0], upper = flip ? s[0] : s[1];
+    const Point &a = input.points[lower], &b = input.points[upper];
     const double length = std::hypot(b.x - a.x, b.y - a.y);
     const double ux = (b.x - a.x) / length, uy = (b.y - a.y) / length;
     cuts.clear();
@@ -1027,14 +1030,17 @@ Pslg snapped(const Pslg& input, double tol)
       if (i != s[0] && i != s[1] && along > 0 && along < length && std::fabs(off) <= tol)
         cuts.push_back({ along, i });
     }
-    std::sort(cuts.begin(), cuts.end());
-    int from = s[0];
+    std::sort(cuts.begin(), cuts.end(), [&](const auto& x, const auto& y) {
+      const Point &p = input.points[x.second], &q = input.points[y.second];
+      return x.first != y.first ? x.first < y.first : !(p == q) ? p < q : x.second < y.second;
+    });
+    int from = lower;
     for (const auto& [along, i] : cuts)
     {
       out.segments.push_back({ from, i });
       from = i;
     }
-    out.segments.push_back({ from, s[1] });
+    out.segments.push_back({ from, upper });
   }
   return out;
 }

@@ -135,3 +135,29 @@ TEST(Snap, CoordinatesNearTheDoubleLimit)
   EXPECT_EQ(snapPointsOntoSegments(huge, across, 10.0, example), 0u);
   EXPECT_EQ(across.size(), 1u);
 }
+
+TEST(Snap, PointsEquallyFarAlongAreOrderedTheSameWhicheverWayTheSegmentRuns)
+{
+  // (2, 0) and (0, 2) are equally far along (0, 0)-(12, 12), on either side:
+  // the segment zigzags through both, and the order must not depend on the
+  // segment's or the points' numbering (the validator, splitting by brute
+  // force, numbered them otherwise than the mesher, and the fuzzer caught it).
+  auto chainPoints = [](const Array<Point>& points, Segment s) {
+    Array<OriginSegment> segments = { { s, 0 } };
+    SnapExample example;
+    EXPECT_EQ(snapPointsOntoSegments(points, segments, 1.5, example), 2u);
+    const int from = points[s[0]] < points[s[1]] ? s[0] : s[1];
+    const int to = from == s[0] ? s[1] : s[0];
+    std::vector<Point> chain;
+    for (int v : chainOf(segments, 0, from, to))
+      chain.push_back(points[v]);
+    return chain;
+  };
+  const std::vector<Point> want = { { 0, 0 }, { 0, 2 }, { 2, 0 }, { 12, 12 } };
+  const Array<Point> one = { { 0, 0 }, { 12, 12 }, { 2, 0 }, { 0, 2 } };
+  const Array<Point> other = { { 12, 12 }, { 0, 2 }, { 2, 0 }, { 0, 0 } };
+  EXPECT_EQ(chainPoints(one, { 0, 1 }), want);
+  EXPECT_EQ(chainPoints(one, { 1, 0 }), want);
+  EXPECT_EQ(chainPoints(other, { 0, 3 }), want);
+  EXPECT_EQ(chainPoints(other, { 3, 0 }), want);
+}
