@@ -185,12 +185,8 @@ void warnAboutSeedsBesideBends(const Pslg& in, const Array<Point>& points,
   auto beside = [&](const Point& q) {
     for (const auto& [s, origin] : split)
     {
-      const Point &a = points[s[0]], &b = points[s[1]];
-      const double length = std::hypot(b.x - a.x, b.y - a.y);
-      const double ux = (b.x - a.x) / length, uy = (b.y - a.y) / length;
-      const double along = (q.x - a.x) * ux + (q.y - a.y) * uy;
-      const double off = (q.y - a.y) * ux - (q.x - a.x) * uy;
-      if (along >= -tol && along <= length + tol && std::fabs(off) <= tol)
+      const AlongOff w = alongAndOff(points[s[0]], points[s[1]], q);
+      if (w.along >= -tol && w.along <= w.length + tol && std::fabs(w.off) <= tol)
         return origin;
     }
     return -1;

@@ -143,22 +143,16 @@ Array<Snap> findSnaps(const Array<Point>& points, const Array<OriginSegment>& se
   for (std::size_t s = 0; s < segments.size(); ++s)
   {
     const Segment& e = segments[s].first;
-    // Along and off the segment's unit direction: no square of a coordinate
-    // difference, which overflows near the coordinates' limit.
     const int lower = lowerEnd(points, e);
     const Point &a = points[lower], &b = points[lower == e[0] ? e[1] : e[0]];
-    const double length = std::hypot(b.x - a.x, b.y - a.y);
-    if (!std::isfinite(length))
+    if (!std::isfinite(std::hypot(b.x - a.x, b.y - a.y)))
       continue; // beyond the coordinates the mesher accepts
-    const double ux = (b.x - a.x) / length, uy = (b.y - a.y) / length;
     tree.near(a, b, tol, [&](int i) {
       if (i == e[0] || i == e[1])
         return;
-      const Point& p = points[i];
-      const double along = (p.x - a.x) * ux + (p.y - a.y) * uy;
-      const double off = (p.y - a.y) * ux - (p.x - a.x) * uy;
-      if (along > 0 && along < length && std::fabs(off) <= tol)
-        snaps.push_back({ static_cast<int>(s), along / length, p, i });
+      const AlongOff w = alongAndOff(a, b, points[i]);
+      if (w.along > 0 && w.along < w.length && std::fabs(w.off) <= tol)
+        snaps.push_back({ static_cast<int>(s), w.along / w.length, points[i], i });
     });
   }
   std::sort(snaps.begin(), snaps.end());
