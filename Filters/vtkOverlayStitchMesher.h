@@ -142,8 +142,11 @@ public:
    * Input points closer than this distance are merged into the first of them
    * (counted in the statistic DuplicatePointsMerged), and segments split at
    * the points closer than this to them, bending to pass through them
-   * (PointsSnappedOntoSegments): a border digitised twice becomes one. 0, the
-   * default, merges only exact duplicates.
+   * (PointsSnappedOntoSegments): a border digitised twice becomes one. Where
+   * crossing segments are split, crossings closer than this to a point or to
+   * another crossing join it: segments meant to meet at one point, whose
+   * rounded crossings scatter, meet there. 0, the default, merges only exact
+   * duplicates.
    */
   vtkSetClampMacro(MergeTolerance, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(MergeTolerance, double);

@@ -85,7 +85,9 @@ INPUT                  Triangle .poly (holes honoured) or .node file, or
                        few longer completed edges (default 0: no limit)
   --no-resolve         crossing segments are an error (default: split them)
   --merge-tolerance D  merge points closer than D, and split segments at points
-                       closer than D to them (default 0: exact duplicates)
+                       closer than D to them; crossings of segments closer
+                       than D to a point or crossing join it (default 0:
+                       exact duplicates)
   --max-steiner N      fail if more than N Steiner points are needed (0: no cap)
   --project-xy         mesh the projection onto the XY plane of input points
                        that are not coplanar (default: an error), at their

@@ -330,17 +330,24 @@ void splitCrossings(Work& w, const Array<SegmentCrossing>& crossings, Statistics
   }
 }
 
-/// Crossing points can coincide after rounding: merge them, drop what degenerates.
-void mergeEqualPoints(Work& w)
+/// Crossing points can coincide after rounding: merge them, drop what
+/// degenerates. With a merge tolerance (tol, scaled), as in the input: the
+/// crossings within it of a point join it, and segments bend onto the points
+/// within it (the crossings of segments meant to meet at one point, which
+/// rounding scatters over more than kCrossingMergeUlps where two of them are
+/// nearly parallel). Input points, pairwise further apart than tol, come
+/// first and stay where they are: a crossing joins them, not they it.
+void mergeEqualPoints(Work& w, double tol)
 {
   Pslg p{ w.points, w.segments, {} };
   CleanPslg c;
   Statistics ignored;
   std::vector<std::string> ignoredWarnings;
-  cleanPslg(p, c, ignored, ignoredWarnings);
-  Array<char> crossing(c.points.size(), 0);
+  cleanPslg(p, c, ignored, ignoredWarnings, tol);
+  // A point is the split's own only if every point merged into it is.
+  Array<char> crossing(c.points.size(), 1);
   for (std::size_t i = 0; i < w.points.size(); ++i)
-    crossing[c.pointOf[i]] |= w.isCrossingPoint[i];
+    crossing[c.pointOf[i]] &= w.isCrossingPoint[i];
   Array<int> origin;
   for (int o : c.segmentOrigin)
     origin.push_back(w.segmentOrigin[o]);
@@ -480,11 +487,15 @@ Result Mesher::execute()
       stop.reason += " near " +
         formatPoint({ std::ldexp(stop.at.x, exponent), std::ldexp(stop.at.y, exponent) },
           options.pointFormat);
-    // Borders that two polygons share, digitised twice, differ by such gaps.
+    // Borders that two polygons share, digitised twice, differ by such gaps;
+    // segments meant to meet at one point cross at points rounded apart.
+    const std::string tolerance = std::string(options.mergeTolerance > 0 ? "larger " : "") +
+      "merge tolerance (osm-mesh --merge-tolerance, the filter's MergeTolerance)";
     if (stop.pointsTooClose)
-      stop.reason += std::string("; if input points there are meant to be one, a ") +
-        (options.mergeTolerance > 0 ? "larger " : "") +
-        "merge tolerance (osm-mesh --merge-tolerance, the filter's MergeTolerance) joins them";
+      stop.reason += "; if input points there are meant to be one, a " + tolerance + " joins them";
+    else if (stop.segmentsTooClose)
+      stop.reason += "; if segments there are meant to meet at one point, a " + tolerance +
+        " joins their crossings and bends segments onto the points near them";
     throw;
   }
   st.secondsTotal = since(t0);
@@ -757,13 +768,14 @@ void Mesher::meshRounds(Work& w)
       if (++crossingRounds >= 5)
         throw Stop{ "could not resolve all crossings after 5 rounds of splitting them at their "
                     "rounded intersection points, which crossed again: " +
-          crossingError(w, walk.segmentCrossings, exponent, options.pointFormat) +
-          "; the segments there come closer than double precision separates" };
+            crossingError(w, walk.segmentCrossings, exponent, options.pointFormat) +
+            "; the segments there come closer than double precision separates",
+          false, {}, { -1, -1 }, false, true };
       if (st.crossingsSplit == 0)
         firstCrossing =
           describeCrossing(w, walk.segmentCrossings.front(), exponent, options.pointFormat);
       splitCrossings(w, walk.segmentCrossings, st);
-      mergeEqualPoints(w);
+      mergeEqualPoints(w, std::ldexp(options.mergeTolerance, -exponent));
       continue;
     }
     // Say why the domain changed, once.

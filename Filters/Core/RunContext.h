@@ -20,6 +20,9 @@ struct Stop
   std::array<int, 2> segments{ -1, -1 };
   /// Input points too close for double precision: a merge tolerance may help.
   bool pointsTooClose = false;
+  /// Segments too close (crossings rounded apart, segments at tiny angles):
+  /// a merge tolerance joins crossings and bends segments onto points.
+  bool segmentsTooClose = false;
 };
 
 class RunContext

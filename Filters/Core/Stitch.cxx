@@ -704,11 +704,11 @@ PlanarGraph stitch(OverlayEdges ov, Array<Point> points, const Array<char>& isIn
         if (tooClose(c.p, g.points[prev], edgeLength))
           throw Stop{ "input segments come closer to each other than double precision can "
                       "separate",
-            true, c.p, { segment, prevSegment } };
+            true, c.p, { segment, prevSegment }, false, true };
         if (tooClose(c.p, g.points[ends[1]], edgeLength))
           throw Stop{ "input segments come closer to each other than double precision can "
                       "separate",
-            true, c.p, { segment, -1 } };
+            true, c.p, { segment, -1 }, false, true };
         prevSegment = segment;
         const int v = static_cast<int>(g.points.size());
         g.points.push_back(c.p);

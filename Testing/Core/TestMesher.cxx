@@ -294,15 +294,23 @@ TEST(Clean, SplitsCrossingSegments)
   EXPECT_TRUE(mentions(r.warnings, "input segment 4 and input segment 5 cross near"));
 }
 
+namespace
+{
+
+/// How many mesh vertices lie within 1e-9 of q.
+long verticesNear(const Result& r, const Point& q)
+{
+  return std::count_if(r.mesh.vertices.begin(), r.mesh.vertices.end(),
+    [&](const Point& v) { return std::hypot(v.x - q.x, v.y - q.y) < 1e-9; });
+}
+
+} // namespace
+
 TEST(Clean, SegmentsThroughOnePointMeetAtOneVertex)
 {
   // Found by an adversarial run: each pair of segments through one point
   // crossed at its own rounded point, a few units in the last place from the
   // others, and meshing failed ("closer together than double precision").
-  auto verticesNear = [](const Result& r, const Point& q) {
-    return std::count_if(r.mesh.vertices.begin(), r.mesh.vertices.end(),
-      [&](const Point& v) { return std::hypot(v.x - q.x, v.y - q.y) < 1e-9; });
-  };
   auto withMedians = [](Point a, Point b, Point c) {
     Pslg p;
     p.points = { a, b, c, { (b.x + c.x) / 2, (b.y + c.y) / 2 },
@@ -435,6 +443,43 @@ TEST(Clean, CrossingsNearACornerOrCloseParallelsAreNotMerged)
     { 0.5000000000005, 0.499999 }, { 0.5000000000005, 0.500001 } };
   parallels.segments = { { 0, 1 }, { 2, 3 }, { 4, 5 } };
   meshAndValidate(parallels, "parallels 5e-13 apart");
+}
+
+TEST(Clean, SegmentsMeantToMeetAtOnePointMeetThereWithAMergeTolerance)
+{
+  // Found by Properties.FreelyCrossingSegments: three segments through about
+  // (0.5414, 0.0320), two of them 0.1 degrees apart, so that their rounded
+  // crossing lies 1.5e-14 from the others' (over 100 units in the last
+  // place): no double-precision mesh holds the segments that close, and a
+  // merge tolerance, which joined only input points, did not help.
+  Pslg p;
+  p.points = { { 0.75405714913725919, 1.0576785251462395 },
+    { 0.39631934915876532, -0.66764224114040482 }, { 0.70942280477679931, 0.83562287083477826 },
+    { 0.38423032257363843, -0.71959559162754017 }, { 0.72433239578061492, 0.17183018340234424 },
+    { 0.086094152576148664, -0.31604537297490071 } };
+  p.segments = { { 0, 1 }, { 2, 3 }, { 4, 5 } };
+  Options hull;
+  hull.domain = Domain::Hull;
+  const Result refused = mesh(p, hull);
+  ASSERT_FALSE(refused.ok);
+  EXPECT_NE(refused.error.find("than double precision can separate"), std::string::npos)
+    << refused.error;
+  EXPECT_NE(refused.error.find("if segments there are meant to meet at one point, a merge "
+                               "tolerance (osm-mesh --merge-tolerance, the filter's "
+                               "MergeTolerance) joins their crossings"),
+    std::string::npos)
+    << refused.error;
+  // With one, the crossings within it join: one vertex where they meet.
+  hull.mergeTolerance = 1e-12;
+  const Result r = meshAndValidate(p, "three segments meant to meet", hull);
+  EXPECT_EQ(verticesNear(r, { 0.5413834567392246, 0.0319822247853442 }), 1);
+  std::size_t other = 0;
+  for (VertexOrigin o : r.vertexOrigin)
+    other += o == VertexOrigin::Other;
+  EXPECT_EQ(other, 1u);
+  // A larger tolerance is asked for when one is set.
+  hull.mergeTolerance = 1e-30;
+  EXPECT_NE(mesh(p, hull).error.find("a larger merge tolerance"), std::string::npos);
 }
 
 TEST(Clean, RefusesCrossingsWhenAskedTo)
