@@ -228,6 +228,50 @@ Array<int> representatives(
   return best;
 }
 
+/// A crossing on a segment, where along it (along()), for sorting.
+struct CrossingCut
+{
+  int segment;
+  double t;
+  int crossing;
+};
+
+/// A crossing of two nearly parallel segments is placed far along them by
+/// rounding, ill-conditioned (an ulp off their lines moves it by an ulp over
+/// their angle): 1.5e-14, over 100 units, from the crossings of a third
+/// segment through the same point, for two segments 0.1 degrees apart, which
+/// no mesh in double precision then separates. Such a crossing, alone in its
+/// class, joins the class next to it along a segment whose point lies on both
+/// of its segments (onSegment): they bend by as little as for any merge.
+void joinIllConditioned(const Work& w, const Array<SegmentCrossing>& crossings,
+  const Array<CrossingCut>& cuts, Array<int>& best)
+{
+  const int n = static_cast<int>(w.segments.size());
+  Array<int> classSize(crossings.size(), 0);
+  for (int b : best)
+    ++classSize[b];
+  auto join = [&](int lone, int other) {
+    const SegmentCrossing& c = crossings[lone];
+    if (best[lone] != lone || classSize[lone] != 1 || c.a >= n || c.b >= n)
+      return;
+    const int rep = best[other];
+    const double ulp = crossingUlp(w, crossings[rep]);
+    if (onSegment(w, c.a, crossings[rep].p, ulp) && onSegment(w, c.b, crossings[rep].p, ulp))
+    {
+      best[lone] = rep;
+      --classSize[lone];
+      ++classSize[rep];
+    }
+  };
+  for (std::size_t i = 1; i < cuts.size(); ++i)
+  {
+    if (cuts[i].segment != cuts[i - 1].segment)
+      continue;
+    join(cuts[i - 1].crossing, cuts[i].crossing);
+    join(cuts[i].crossing, cuts[i - 1].crossing);
+  }
+}
+
 /// Per crossing, the crossing whose point it takes: crossings next to each
 /// other along a segment and closer than kCrossingMergeUlps are one point.
 /// Three or more segments through one point (the medians of a triangle, roads
@@ -244,18 +288,12 @@ Array<int> mergeNearCrossings(const Work& w, const Array<SegmentCrossing>& cross
       k = root[k] = root[root[k]];
     return k;
   };
-  struct Cut
-  {
-    int segment;
-    double t;
-    int crossing;
-  };
-  Array<Cut> cuts;
+  Array<CrossingCut> cuts;
   for (std::size_t k = 0; k < crossings.size(); ++k)
     for (int s : { crossings[k].a, crossings[k].b })
       if (s < static_cast<int>(w.segments.size())) // not a hull edge
         cuts.push_back({ s, along(w, s, crossings[k].p), static_cast<int>(k) });
-  std::sort(cuts.begin(), cuts.end(), [](const Cut& x, const Cut& y) {
+  std::sort(cuts.begin(), cuts.end(), [](const CrossingCut& x, const CrossingCut& y) {
     return x.segment != y.segment ? x.segment < y.segment : x.t < y.t;
   });
   for (std::size_t i = 1; i < cuts.size(); ++i)
@@ -273,7 +311,9 @@ Array<int> mergeNearCrossings(const Work& w, const Array<SegmentCrossing>& cross
   }
   for (std::size_t k = 0; k < root.size(); ++k)
     root[k] = find(static_cast<int>(k));
-  return representatives(w, crossings, root);
+  Array<int> best = representatives(w, crossings, root);
+  joinIllConditioned(w, crossings, cuts, best);
+  return best;
 }
 
 /// Split every segment at the points where others cross it.
@@ -337,7 +377,8 @@ void splitCrossings(Work& w, const Array<SegmentCrossing>& crossings, Statistics
 /// rounding scatters over more than kCrossingMergeUlps where two of them are
 /// nearly parallel). Input points, pairwise further apart than tol, come
 /// first and stay where they are: a crossing joins them, not they it.
-void mergeEqualPoints(Work& w, double tol)
+/// Returns how many points joined another (at tol > 0; else coincided).
+std::size_t mergeEqualPoints(Work& w, double tol)
 {
   Pslg p{ w.points, w.segments, {} };
   CleanPslg c;
@@ -351,10 +392,12 @@ void mergeEqualPoints(Work& w, double tol)
   Array<int> origin;
   for (int o : c.segmentOrigin)
     origin.push_back(w.segmentOrigin[o]);
+  const std::size_t joined = w.points.size() - c.points.size();
   w.points = std::move(c.points);
   w.isCrossingPoint = std::move(crossing);
   w.segments = std::move(c.segments);
   w.segmentOrigin = std::move(origin);
+  return joined;
 }
 
 /// Segment s of a round (the input's, then the hull's) as the user numbers it.
@@ -411,7 +454,8 @@ private:
   Result res;
   CleanPslg clean;
   int exponent = 0;
-  std::string firstCrossing; ///< the first crossing split, for the warning
+  std::string firstCrossing;       ///< the first crossing split, for the warning
+  std::size_t crossingsJoined = 0; ///< crossing points joined within the merge tolerance
   /// The auto domain found cycles of segments that enclose no area: hull.
   bool enclosesNothing = false;
   /// The enclosed regions reached beyond the segments on cycles (closed by a
@@ -775,7 +819,9 @@ void Mesher::meshRounds(Work& w)
         firstCrossing =
           describeCrossing(w, walk.segmentCrossings.front(), exponent, options.pointFormat);
       splitCrossings(w, walk.segmentCrossings, st);
-      mergeEqualPoints(w, std::ldexp(options.mergeTolerance, -exponent));
+      const std::size_t joined = mergeEqualPoints(w, std::ldexp(options.mergeTolerance, -exponent));
+      if (options.mergeTolerance > 0)
+        crossingsJoined += joined;
       continue;
     }
     // Say why the domain changed, once.
@@ -788,7 +834,10 @@ void Mesher::meshRounds(Work& w)
                              "segments over each other): the auto domain meshes the convex hull");
     if (st.crossingsSplit > 0)
       res.warnings.push_back("split " + std::to_string(st.crossingsSplit) +
-        " crossing(s) of input segments at their intersection points, e.g. " + firstCrossing);
+        " crossing(s) of input segments at their intersection points, e.g. " + firstCrossing +
+        (crossingsJoined > 0 ? "; " + std::to_string(crossingsJoined) +
+              " of those points joined another within the merge tolerance"
+                             : ""));
     st.segmentsSplitAtVertices = walk.splitsAtInputVertices + walk.duplicatePieces;
     st.overlayVertices = overlay.mesh.points.size();
     st.overlaySteinerPoints = overlay.steinerPoints + 4;

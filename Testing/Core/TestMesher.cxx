@@ -445,13 +445,14 @@ TEST(Clean, CrossingsNearACornerOrCloseParallelsAreNotMerged)
   meshAndValidate(parallels, "parallels 5e-13 apart");
 }
 
-TEST(Clean, SegmentsMeantToMeetAtOnePointMeetThereWithAMergeTolerance)
+TEST(Clean, NearlyParallelSegmentsCrossingWithAThirdMeetAtOneVertex)
 {
   // Found by Properties.FreelyCrossingSegments: three segments through about
   // (0.5414, 0.0320), two of them 0.1 degrees apart, so that their rounded
   // crossing lies 1.5e-14 from the others' (over 100 units in the last
-  // place): no double-precision mesh holds the segments that close, and a
-  // merge tolerance, which joined only input points, did not help.
+  // place, beyond what crossings merge by): refused, as no double-precision
+  // mesh separates the segments there. The others' point lies on both within
+  // a unit or two: their crossing joins it.
   Pslg p;
   p.points = { { 0.75405714913725919, 1.0576785251462395 },
     { 0.39631934915876532, -0.66764224114040482 }, { 0.70942280477679931, 0.83562287083477826 },
@@ -460,26 +461,46 @@ TEST(Clean, SegmentsMeantToMeetAtOnePointMeetThereWithAMergeTolerance)
   p.segments = { { 0, 1 }, { 2, 3 }, { 4, 5 } };
   Options hull;
   hull.domain = Domain::Hull;
-  const Result refused = mesh(p, hull);
-  ASSERT_FALSE(refused.ok);
-  EXPECT_NE(refused.error.find("than double precision can separate"), std::string::npos)
-    << refused.error;
-  EXPECT_NE(refused.error.find("if segments there are meant to meet at one point, a merge "
-                               "tolerance (osm-mesh --merge-tolerance, the filter's "
-                               "MergeTolerance) joins their crossings"),
-    std::string::npos)
-    << refused.error;
-  // With one, the crossings within it join: one vertex where they meet.
-  hull.mergeTolerance = 1e-12;
-  const Result r = meshAndValidate(p, "three segments meant to meet", hull);
+  const Result r = meshAndValidate(p, "nearly parallel segments crossing with a third", hull);
   EXPECT_EQ(verticesNear(r, { 0.5413834567392246, 0.0319822247853442 }), 1);
   std::size_t other = 0;
   for (VertexOrigin o : r.vertexOrigin)
     other += o == VertexOrigin::Other;
   EXPECT_EQ(other, 1u);
-  // A larger tolerance is asked for when one is set.
-  hull.mergeTolerance = 1e-30;
-  EXPECT_NE(mesh(p, hull).error.find("a larger merge tolerance"), std::string::npos);
+}
+
+TEST(Clean, AMergeToleranceJoinsCrossings)
+{
+  // Roads meant to meet at a junction, digitised 1e-11 off it: their three
+  // crossings are meshed apart, graded down to them; with a merge tolerance
+  // above the scatter they join into one vertex, and the mesh is coarse.
+  const Point c{ 0.3, 0.4 };
+  const double offsets[] = { 0, 1e-11, -0.7e-11 };
+  Pslg p;
+  for (int k = 0; k < 3; ++k)
+  {
+    const double t = 1.0 + 1.1 * k, nx = -std::sin(t), ny = std::cos(t);
+    const Point o{ c.x + offsets[k] * nx, c.y + offsets[k] * ny };
+    p.points.push_back({ o.x + std::cos(t), o.y + std::sin(t) });
+    p.points.push_back({ o.x - std::cos(t), o.y - std::sin(t) });
+    p.segments.push_back({ 2 * k, 2 * k + 1 });
+  }
+  Options hull;
+  hull.domain = Domain::Hull;
+  auto crossingVertices = [](const Result& r) {
+    return std::count(r.vertexOrigin.begin(), r.vertexOrigin.end(), VertexOrigin::Other);
+  };
+  const Result apart = meshAndValidate(p, "three crossings 1e-11 apart", hull);
+  EXPECT_EQ(crossingVertices(apart), 3);
+  hull.mergeTolerance = 1e-9;
+  const Result joined = meshAndValidate(p, "three crossings joined", hull);
+  EXPECT_EQ(crossingVertices(joined), 1);
+  EXPECT_TRUE(
+    mentions(joined.warnings, "2 of those points joined another within the merge tolerance"));
+  EXPECT_FALSE(mentions(apart.warnings, "joined another"));
+  EXPECT_EQ(verticesNear(joined, c), 1);
+  EXPECT_LT(joined.mesh.triangles.size() * 4, apart.mesh.triangles.size())
+    << joined.mesh.triangles.size() << " against " << apart.mesh.triangles.size();
 }
 
 TEST(Clean, RefusesCrossingsWhenAskedTo)
@@ -1561,6 +1582,14 @@ TEST(Stitch, SegmentsTooCloseToSeparateAreNamed)
                          "segment 1 and input segment 0) near ("),
     std::string::npos)
     << r.error;
+  // With the remedy it says: the points within the tolerance of a segment
+  // bend it, and the two become one.
+  EXPECT_NE(r.error.find("; if segments there are meant to meet at one point, a merge tolerance"),
+    std::string::npos)
+    << r.error;
+  Options o;
+  o.mergeTolerance = 1e-12;
+  meshAndValidate(p, "two segments 1e-17 radians apart, merged", o);
 }
 
 TEST(Stitch, TinyFeaturesNearTheOriginNextToHugeOnes)
