@@ -223,6 +223,36 @@ Pslg crossingSegments(std::mt19937_64& rng)
   return p;
 }
 
+/// Segments digitised to end on another and missing it by `gap`: a unit
+/// square's sides and a diagonal, and 3 to 12 segments from inside it each
+/// ending `gap` short of a side or of the diagonal (an undershoot) or `gap`
+/// past it (an overshoot, crossing it).
+Pslg nearTJunctions(std::mt19937_64& rng, double gap)
+{
+  std::uniform_real_distribution<double> U(0.05, 0.95);
+  Pslg p;
+  p.points = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } };
+  p.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 }, { 0, 2 } };
+  for (int k = 3 + static_cast<int>(rng() % 10); k > 0; --k)
+  {
+    const int target = static_cast<int>(rng() % 5);
+    const Point a = p.points[p.segments[target][0]], b = p.points[p.segments[target][1]];
+    const double t = U(rng), len = std::hypot(b.x - a.x, b.y - a.y);
+    // The unit normal to the target towards the start, which lies 0.05 to
+    // 0.3 off it, on the square's inside.
+    Point n{ -(b.y - a.y) / len, (b.x - a.x) / len };
+    const Point mid{ a.x + t * (b.x - a.x), a.y + t * (b.y - a.y) };
+    if (n.x * (0.5 - mid.x) + n.y * (0.5 - mid.y) < 0 || (target == 4 && rng() % 2))
+      n = { -n.x, -n.y };
+    const double off = 0.05 + 0.25 * U(rng), miss = rng() % 2 ? gap : -gap;
+    const int i = static_cast<int>(p.points.size());
+    p.points.push_back({ mid.x + off * n.x + 0.1 * (U(rng) - 0.5), mid.y + off * n.y });
+    p.points.push_back({ mid.x + miss * n.x, mid.y + miss * n.y });
+    p.segments.push_back({ i, i + 1 });
+  }
+  return p;
+}
+
 /// Seeds per family; OSM_PROPERTY_SEEDS raises it for a long stress run.
 const int kSeeds =
   std::getenv("OSM_PROPERTY_SEEDS") ? std::atoi(std::getenv("OSM_PROPERTY_SEEDS")) : 25;
@@ -309,6 +339,38 @@ TEST(Properties, FreelyCrossingSegments)
     meshAndValidate(p, name + " (hull, merge tolerance 1e-12)", hull);
   }
   EXPECT_GE(meshed, cases * 99 / 100);
+}
+
+TEST(Properties, SegmentsEndingNearAnother)
+{
+  // Undershoots and overshoots (a crossing) of 1e-6 down to 1e-15 of the
+  // extent, as digitised networks have. Without a merge tolerance, the
+  // gaps above about 1e-14 of the coordinates mesh, graded down to them, and
+  // below that they may be refused, with where and the remedy; with a merge
+  // tolerance of twice the gap every segment ends on the one it meant to,
+  // crossings included, and the mesh follows every one.
+  // In the box domain, where every segment is meshed (the hull's edges
+  // would run within the gap of the square's sides, past the overshoots).
+  Options box;
+  box.domain = Domain::Box;
+  for (double gap : { 1e-6, 1e-9, 1e-12, 1e-15 })
+    for (int seed = 0; seed < kSeeds; ++seed)
+    {
+      std::mt19937_64 rng(seed);
+      const Pslg p = nearTJunctions(rng, gap);
+      const std::string name = "gap " + std::to_string(gap) + " seed " + std::to_string(seed);
+      Options exact = box;
+      if (const Result r = mesh(p, exact); r.ok)
+        meshAndValidate(p, name, exact);
+      else
+      {
+        EXPECT_LT(gap, 1e-13) << name << ": " << r.error;
+        EXPECT_NE(r.error.find("merge tolerance"), std::string::npos) << name << ": " << r.error;
+      }
+      Options snapped = box;
+      snapped.mergeTolerance = 2 * gap;
+      meshAndValidate(p, name + ", merge tolerance", snapped);
+    }
 }
 
 TEST(Properties, ClustersWithSpread1e8)
