@@ -4,7 +4,8 @@
 // C++ tests of what vtkOverlayStitchMesher accepts, run as
 //   TestOverlayStitchMesherInput <name>
 // with <name> one of:
-//   merge-tolerance  near-duplicate points merged only within MergeTolerance
+//   merge-tolerance  near-duplicate points merged only within MergeTolerance, and
+//                    crossings joined within it
 //   tilted-plane     coplanar 3D input meshed in its plane, input vertices bit-identical
 //   non-coplanar     points off one plane: an error naming the farthest point
 //   project-xy       ProjectToXYPlane meshes the XY projection at the mean z
@@ -232,13 +233,31 @@ int TestMergeTolerance()
   Check(Statistic(mesh, "PointsSnappedOntoSegments") == 1,
     "point near an edge: PointsSnappedOntoSegments = " +
       Num(Statistic(mesh, "PointsSnappedOntoSegments")));
-  Check(h.Messages->HasWarning(
-          { "split segments 1 time(s) at points within the merge tolerance", "segment 0 at point 4" }),
+  Check(h.Messages->HasWarning({ "split segments 1 time(s) at points within the merge tolerance",
+          "segment 0 at point 4" }),
     "point near an edge: a warning names the segment and the point");
   h.Mesher->SetMergeTolerance(1e-8);
   mesh = h.Run(nearEdge, "point near an edge, tolerance 1e-8");
   Check(Statistic(mesh, "PointsSnappedOntoSegments") == 0,
     "point near an edge, tolerance 1e-8: not snapped");
+
+  // Three lines meant to meet at (5, 5), digitised up to 1e-7 off it: their
+  // three crossings are kept apart, or within the tolerance joined into one.
+  auto junction = MakeLines({ { 1, 5, 0 }, { 9, 5, 0 }, { 5 + 1e-7, 1, 0 }, { 5 + 1e-7, 9, 0 },
+                              { 2, 2 + 5e-8, 0 }, { 8, 8 + 5e-8, 0 } },
+    { { 0, 1 }, { 2, 3 }, { 4, 5 } });
+  h.Mesher->SetMergeTolerance(0.0);
+  mesh = h.Run(junction, "junction, tolerance 0");
+  Check(h.NoError() && CountOrigin(mesh, 3) == 3,
+    "junction, tolerance 0: 3 crossing vertices, got " + Num(CountOrigin(mesh, 3)));
+  h.Mesher->SetMergeTolerance(1e-6);
+  mesh = h.Run(junction, "junction, tolerance 1e-6");
+  Check(h.NoError() && CountOrigin(mesh, 3) == 1,
+    "junction, tolerance 1e-6: 1 crossing vertex, got " + Num(CountOrigin(mesh, 3)));
+  Check(h.Messages->HasWarning({ "split 3 crossing(s)",
+          "2 of those points joined another within "
+          "the merge tolerance" }),
+    "junction, tolerance 1e-6: the warning says the crossings joined");
   return 0;
 }
 
