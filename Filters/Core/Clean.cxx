@@ -214,7 +214,7 @@ void warnAboutSeedsBesideBends(const Pslg& in, const Array<Point>& points,
 /// The segments on the merged points; with a tolerance, split at the points
 /// within it (Snap.h); zero-length and duplicate ones dropped.
 std::string mapSegments(const Pslg& in, CleanPslg& out, Statistics& stats,
-  std::vector<std::string>& warnings, double tol, const PointFormat& format)
+  std::vector<std::string>& warnings, double tol, const PointFormat& format, bool snap)
 {
   const long long n = static_cast<long long>(in.points.size());
   Array<OriginSegment> segs;
@@ -249,7 +249,8 @@ std::string mapSegments(const Pslg& in, CleanPslg& out, Statistics& stats,
       " duplicate segment(s), e.g. segment " + std::to_string(dupExample));
   SnapExample snapped;
   Array<OriginSegment> split;
-  stats.pointsSnappedOntoSegments = snapPointsOntoSegments(out.points, segs, tol, snapped, &split);
+  stats.pointsSnappedOntoSegments =
+    snap ? snapPointsOntoSegments(out.points, segs, tol, snapped, &split) : 0;
   if (stats.pointsSnappedOntoSegments > 0)
   {
     const std::size_t coincide = dropDuplicates(segs).first;
@@ -275,7 +276,7 @@ std::string mapSegments(const Pslg& in, CleanPslg& out, Statistics& stats,
 } // namespace
 
 std::string cleanPslg(const Pslg& in, CleanPslg& out, Statistics& stats,
-  std::vector<std::string>& warnings, double mergeTolerance, const PointFormat& format)
+  std::vector<std::string>& warnings, double mergeTolerance, const PointFormat& format, bool snap)
 {
   out = CleanPslg{};
   if (std::string e = checkFinite(in.points, "point"); !e.empty())
@@ -292,7 +293,7 @@ std::string cleanPslg(const Pslg& in, CleanPslg& out, Statistics& stats,
       return "region " + std::to_string(r) + " has a non-finite attribute";
   }
   mergeDuplicates(in, out, stats, warnings, mergeTolerance, format);
-  return mapSegments(in, out, stats, warnings, mergeTolerance, format);
+  return mapSegments(in, out, stats, warnings, mergeTolerance, format, snap);
 }
 
 } // namespace osm

@@ -26,9 +26,11 @@ struct CleanPslg
 /// Check and clean the input. Returns an empty string, or an error naming the
 /// offending item (a non-finite coordinate, an index out of range).
 /// Points within mergeTolerance of an earlier point are merged into it, and
-/// segments split at the points within mergeTolerance of them (Snap.h).
+/// (with snap) segments split at the points within mergeTolerance of them
+/// (Snap.h).
 std::string cleanPslg(const Pslg& in, CleanPslg& out, Statistics& stats,
-  std::vector<std::string>& warnings, double mergeTolerance = 0.0, const PointFormat& format = {});
+  std::vector<std::string>& warnings, double mergeTolerance = 0.0, const PointFormat& format = {},
+  bool snap = true);
 
 /// "(x, y)" with enough digits to tell nearby points apart.
 std::string formatPoint(const Point& p);

@@ -236,13 +236,23 @@ struct CrossingCut
   int crossing;
 };
 
+/// How far (in units of the last place of its computation) a crossing may
+/// move to join another in joinIllConditioned: 256 covers two segments 0.2
+/// degrees apart. Further, the segments are so nearly parallel that where
+/// they meet barely matters to them but much to a third nearly parallel one
+/// through the other point (a review: three such segments meshed apart, and
+/// joined 3.5e-13 away they were refused).
+constexpr double kIllConditionedJoinUlps = 256;
+
 /// A crossing of two nearly parallel segments is placed far along them by
 /// rounding, ill-conditioned (an ulp off their lines moves it by an ulp over
-/// their angle): 1.5e-14, over 100 units, from the crossings of a third
-/// segment through the same point, for two segments 0.1 degrees apart, which
-/// no mesh in double precision then separates. Such a crossing, alone in its
-/// class, joins the class next to it along a segment whose point lies on both
-/// of its segments (onSegment): they bend by as little as for any merge.
+/// their angle): 1.5e-14, over 60 units in the last place, from the crossings
+/// of a third segment through the same point, for two segments 0.1 degrees
+/// apart, which no mesh in double precision then separates. Such a crossing,
+/// alone in its class, joins the nearest class of two or more next to it
+/// along one of its segments whose point lies on both of its segments
+/// (onSegment) within kIllConditionedJoinUlps: they bend by as little as for
+/// any merge.
 void joinIllConditioned(const Work& w, const Array<SegmentCrossing>& crossings,
   const Array<CrossingCut>& cuts, Array<int>& best)
 {
@@ -250,26 +260,30 @@ void joinIllConditioned(const Work& w, const Array<SegmentCrossing>& crossings,
   Array<int> classSize(crossings.size(), 0);
   for (int b : best)
     ++classSize[b];
-  auto join = [&](int lone, int other) {
+  Array<int> target(crossings.size(), -1);
+  auto consider = [&](int lone, int other) {
     const SegmentCrossing& c = crossings[lone];
-    if (best[lone] != lone || classSize[lone] != 1 || c.a >= n || c.b >= n)
-      return;
     const int rep = best[other];
+    if (best[lone] != lone || classSize[lone] != 1 || classSize[rep] < 2 || c.a >= n || c.b >= n)
+      return;
+    const Point& p = crossings[rep].p;
     const double ulp = crossingUlp(w, crossings[rep]);
-    if (onSegment(w, c.a, crossings[rep].p, ulp) && onSegment(w, c.b, crossings[rep].p, ulp))
-    {
-      best[lone] = rep;
-      --classSize[lone];
-      ++classSize[rep];
-    }
+    const double reach = kIllConditionedJoinUlps * std::max(ulp, crossingUlp(w, c));
+    if (dist2(c.p, p) > reach * reach || !onSegment(w, c.a, p, ulp) || !onSegment(w, c.b, p, ulp))
+      return;
+    if (target[lone] < 0 || dist2(c.p, p) < dist2(c.p, crossings[target[lone]].p))
+      target[lone] = rep;
   };
   for (std::size_t i = 1; i < cuts.size(); ++i)
   {
     if (cuts[i].segment != cuts[i - 1].segment)
       continue;
-    join(cuts[i - 1].crossing, cuts[i].crossing);
-    join(cuts[i].crossing, cuts[i - 1].crossing);
+    consider(cuts[i - 1].crossing, cuts[i].crossing);
+    consider(cuts[i].crossing, cuts[i - 1].crossing);
   }
+  for (std::size_t k = 0; k < target.size(); ++k)
+    if (target[k] >= 0)
+      best[k] = target[k];
 }
 
 /// Per crossing, the crossing whose point it takes: crossings next to each
@@ -371,12 +385,15 @@ void splitCrossings(Work& w, const Array<SegmentCrossing>& crossings, Statistics
 }
 
 /// Crossing points can coincide after rounding: merge them, drop what
-/// degenerates. With a merge tolerance (tol, scaled), as in the input: the
-/// crossings within it of a point join it, and segments bend onto the points
-/// within it (the crossings of segments meant to meet at one point, which
-/// rounding scatters over more than kCrossingMergeUlps where two of them are
-/// nearly parallel). Input points, pairwise further apart than tol, come
-/// first and stay where they are: a crossing joins them, not they it.
+/// degenerates. With a merge tolerance (tol, scaled), the crossings within it
+/// of a point join it (the crossings of segments meant to meet at one point,
+/// digitised apart). Input points, pairwise further apart than tol, come
+/// first and stay where they are: a crossing joins them, not they it. No
+/// segment is split at the points within tol of it, as in the input: a
+/// crossing within tol of a third segment, but not of its crossings, would
+/// bend it into a sliver with theirs, thinner than the tolerance and than
+/// what the crossings left (a review: 52 of 12,600 generated inputs then
+/// refused, and aust.poly at 1e-4 of its extent crossed anew every round).
 /// Returns how many points joined another (at tol > 0; else coincided).
 std::size_t mergeEqualPoints(Work& w, double tol)
 {
@@ -384,7 +401,7 @@ std::size_t mergeEqualPoints(Work& w, double tol)
   CleanPslg c;
   Statistics ignored;
   std::vector<std::string> ignoredWarnings;
-  cleanPslg(p, c, ignored, ignoredWarnings, tol);
+  cleanPslg(p, c, ignored, ignoredWarnings, tol, {}, false);
   // A point is the split's own only if every point merged into it is.
   Array<char> crossing(c.points.size(), 1);
   for (std::size_t i = 0; i < w.points.size(); ++i)
