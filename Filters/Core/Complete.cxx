@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <cstdio>
 #include <limits>
 #include <string>
 #include <utility>
@@ -314,6 +316,40 @@ int tailOf(const Rotation& r, int h)
 
 } // namespace
 
+/// A face no more than this many units in the last place of the largest
+/// coordinate across is below what the stitched points resolve: a crossing
+/// with a segment that spans the input is placed to within a few units of
+/// the segment's scale, not of the face's.
+constexpr double kResolvedUlps = 4096;
+
+/// Why a face could not be triangulated. A face near the resolution of the
+/// input's scale (tiny segments at the crossing of long ones, 1e-13 from it
+/// at coordinates about 1) is distorted by the rounding of the points placed
+/// on the long ones, and may not be simple (Properties.TinySegmentsAt...: a
+/// face 2e-14 across ran twice through crossings of long segments 1e-18
+/// apart); else it is a defect of ours.
+Stop untriangulable(const Array<Point>& points, const Array<Point>& polygon)
+{
+  double scale = 0, across = 0;
+  for (const Point& p : points)
+    scale = std::max({ scale, std::fabs(p.x), std::fabs(p.y) });
+  for (std::size_t i = 0; i < polygon.size(); ++i)
+    for (std::size_t j = i + 1; j < polygon.size(); ++j)
+      across = std::max(across, std::sqrt(dist2(polygon[i], polygon[j])));
+  const std::string face =
+    "a face of the stitched mesh with " + std::to_string(polygon.size()) + " sides";
+  if (across <= kResolvedUlps * std::numeric_limits<double>::epsilon() * scale)
+  {
+    char size[32];
+    std::snprintf(size, sizeof size, "%.2g", across / scale);
+    return Stop{ "input points are closer together than double precision resolves at the "
+                 "input's scale (" +
+        face + ", " + size + " of the mesh's extent across, could not be triangulated)",
+      true, polygon[0], { -1, -1 }, true };
+  }
+  return Stop{ "internal error: " + face + " could not be triangulated", true, polygon[0] };
+}
+
 Completion complete(PlanarGraph& g, Statistics& stats, RunContext& run)
 {
   Completion out;
@@ -376,9 +412,7 @@ Completion complete(PlanarGraph& g, Statistics& stats, RunContext& run)
     for (int v : face)
       polygon.push_back(g.points[v]);
     if (!triangulateMinMaxAngle(polygon, face, out.triangles, scratch))
-      throw Stop{ "internal error: a face with " + std::to_string(face.size()) +
-          " sides could not be triangulated",
-        true, polygon[0] };
+      throw untriangulable(g.points, polygon);
   }
   return out;
 }

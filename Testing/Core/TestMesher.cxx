@@ -409,6 +409,44 @@ TEST(Clean, ATinySegmentBesideACrossingIsNotBentAtTheLongSegmentsScale)
   EXPECT_EQ(r.stats.crossingsSplit, 3u);
 }
 
+TEST(Clean, TinySegmentsAmongCrossingsOfLongOnesAreRefusedAsBelowPrecision)
+{
+  // Found by Properties.TinySegmentsAtCrossingsOfLongOnes at 400 seeds (seed
+  // 241): segments 1e-10 and 3e-13 long within 1e-13 of where four long ones
+  // cross; the long ones' crossings with one overlay edge there came 1e-18
+  // apart, placed to within 1e-16, in the wrong order, and the face they
+  // made ran twice through them: "internal error: a face with 12 sides
+  // could not be triangulated". Below what double precision resolves at the
+  // input's scale: refused as such, with where and the remedy.
+  Pslg p;
+  p.points = { { 1.5921147501605128, 0.7059046524850171 },
+    { -0.73960436503097082, -0.32792244542734966 }, { 1.1812011094083736, 0.68085332804616405 },
+    { -0.6988745144343933, -0.40283660017694395 }, { -0.75982245065094078, 0.5354466380238978 },
+    { 0.90642592460827631, -0.63875805924582907 }, { -1.7333175993050005, 0.90277055397699479 },
+    { 1.4101416765854553, -0.73444957985053738 },
+    { -5.6446678284962284e-11, 6.9719170772245023e-12 },
+    { 5.6448600506547244e-11, -6.9735031516977033e-12 },
+    { 1.1770915109034077e-11, 6.806149024422692e-12 },
+    { -1.1769178404386048e-11, -6.8047818352561174e-12 },
+    { 1.5215892734573025e-13, 2.7462067774215728e-14 },
+    { -1.5271535117165839e-13, -2.7228936834718633e-14 } };
+  p.segments = { { 0, 1 }, { 2, 3 }, { 4, 5 }, { 6, 7 }, { 8, 9 }, { 10, 11 }, { 12, 13 } };
+  Options hull;
+  hull.domain = Domain::Hull;
+  const Result r = mesh(p, hull);
+  ASSERT_FALSE(r.ok);
+  EXPECT_EQ(r.error.find("internal error"), std::string::npos) << r.error;
+  EXPECT_NE(r.error.find("closer together than double precision resolves at the input's scale"),
+    std::string::npos)
+    << r.error;
+  EXPECT_NE(r.error.find("a merge tolerance"), std::string::npos) << r.error;
+  // Which joins the tiny segments' points into one, and it meshes.
+  hull.mergeTolerance = 1e-12;
+  const Result merged = mesh(p, hull);
+  EXPECT_TRUE(merged.ok) << merged.error;
+  EXPECT_EQ(merged.inputVertex[12], merged.inputVertex[13]);
+}
+
 TEST(Clean, CrossingsAreMergedOnlyWhereEverySegmentStaysStraight)
 {
   // Found by the fuzzer: four segments from (1.5e9, 15) towards the origin
