@@ -185,8 +185,9 @@ void warnAboutSeedsBesideBends(const Pslg& in, const Array<Point>& points,
   auto beside = [&](const Point& q) {
     for (const auto& [s, origin] : split)
     {
-      const AlongOff w = alongAndOff(points[s[0]], points[s[1]], q);
-      if (w.along >= -tol && w.along <= w.length + tol && std::fabs(w.off) <= tol)
+      const SegmentFrame frame(points[s[0]], points[s[1]]);
+      const double along = frame.along(q);
+      if (along >= -tol && along <= frame.length + tol && std::fabs(frame.off(q)) <= tol)
         return origin;
     }
     return -1;

@@ -314,8 +314,6 @@ int tailOf(const Rotation& r, int h)
   return r.to[r.twin[h]];
 }
 
-} // namespace
-
 /// A face no more than this many units in the last place of the largest
 /// coordinate across is below what the stitched points resolve: a crossing
 /// with a segment that spans the input is placed to within a few units of
@@ -349,6 +347,8 @@ Stop untriangulable(const Array<Point>& points, const Array<Point>& polygon)
   }
   return Stop{ "internal error: " + face + " could not be triangulated", true, polygon[0] };
 }
+
+} // namespace
 
 Completion complete(PlanarGraph& g, Statistics& stats, RunContext& run)
 {

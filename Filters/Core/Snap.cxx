@@ -145,14 +145,15 @@ Array<Snap> findSnaps(const Array<Point>& points, const Array<OriginSegment>& se
     const Segment& e = segments[s].first;
     const int lower = lowerEnd(points, e);
     const Point &a = points[lower], &b = points[lower == e[0] ? e[1] : e[0]];
-    if (!std::isfinite(std::hypot(b.x - a.x, b.y - a.y)))
+    const SegmentFrame frame(a, b);
+    if (!std::isfinite(frame.length))
       continue; // beyond the coordinates the mesher accepts
     tree.near(a, b, tol, [&](int i) {
       if (i == e[0] || i == e[1])
         return;
-      const AlongOff w = alongAndOff(a, b, points[i]);
-      if (w.along > 0 && w.along < w.length && std::fabs(w.off) <= tol)
-        snaps.push_back({ static_cast<int>(s), w.along / w.length, points[i], i });
+      const double along = frame.along(points[i]);
+      if (along > 0 && along < frame.length && std::fabs(frame.off(points[i])) <= tol)
+        snaps.push_back({ static_cast<int>(s), along / frame.length, points[i], i });
     });
   }
   std::sort(snaps.begin(), snaps.end());

@@ -23,20 +23,25 @@ struct SnapExample
   int segment = -1; ///< the input segment (origin) it split
 };
 
-/// Where p lies from segment ab: how far along it from a, and how far off
-/// it (left positive), in units of the coordinates; length is |ab|. Taken
-/// along the unit direction, with no square of a coordinate difference, which
-/// overflows near the coordinates' limit (an infinite length: beyond them).
-struct AlongOff
+/// Where points lie from segment ab: how far along it from a, and how far
+/// off it (left positive), in units of the coordinates. Taken along the unit
+/// direction, with no square of a coordinate difference, which overflows near
+/// the coordinates' limit (an infinite length: beyond them). Made once per
+/// segment, asked per point.
+struct SegmentFrame
 {
-  double length, along, off;
+  SegmentFrame(const Point& a, const Point& b)
+    : a(a)
+    , length(std::hypot(b.x - a.x, b.y - a.y))
+    , ux((b.x - a.x) / length)
+    , uy((b.y - a.y) / length)
+  {}
+  double along(const Point& p) const { return (p.x - a.x) * ux + (p.y - a.y) * uy; }
+  double off(const Point& p) const { return (p.y - a.y) * ux - (p.x - a.x) * uy; }
+
+  Point a;
+  double length, ux, uy;
 };
-inline AlongOff alongAndOff(const Point& a, const Point& b, const Point& p)
-{
-  const double length = std::hypot(b.x - a.x, b.y - a.y);
-  const double ux = (b.x - a.x) / length, uy = (b.y - a.y) / length;
-  return { length, (p.x - a.x) * ux + (p.y - a.y) * uy, (p.y - a.y) * ux - (p.x - a.x) * uy };
-}
 
 /// Split every segment at the points within tol of it that lie strictly
 /// between its ends, in order along it: the segment then bends by at most tol
