@@ -874,8 +874,9 @@ void checkInputVertices(const Pslg& input, const VertexMap& map, Errors& errors)
 /// segment runs within the tolerance of this one (two segments diverging by 1e-9 rad from a shared
 /// end), the step most directly towards b could take its chain and get stuck, though this
 /// segment's own chain was there. Each vertex is entered once, so the search is linear. Returns ""
-/// or why no chain was found (from the furthest vertex reached).
-std::string walkSegment(const Mesh& m, int A, int B)
+/// or why no chain was found (from the furthest vertex reached). Vertices up to offset off the
+/// line are also allowed (ValidationOptions::chainOffset).
+std::string walkSegment(const Mesh& m, int A, int B, double offset)
 {
   const Point &a = m.at(A), &b = m.at(B);
   const double dx = b.x - a.x, dy = b.y - a.y, len = std::hypot(dx, dy);
@@ -908,8 +909,8 @@ std::string walkSegment(const Mesh& m, int A, int B)
         if (!(step > 0 && rest > 0) || entered.count(w))
           continue;
         const double off = std::fabs(dx * (pw.y - a.y) - dy * (pw.x - a.x)) / len;
-        const double tol =
-          1e-9 * len + 16 * eps * std::max({ scale, std::fabs(pw.x), std::fabs(pw.y) });
+        const double tol = std::max(
+          offset, 1e-9 * len + 16 * eps * std::max({ scale, std::fabs(pw.x), std::fabs(pw.y) }));
         if (off > tol)
           nearestOff = std::min(nearestOff, off);
         else
@@ -948,7 +949,8 @@ std::string walkSegment(const Mesh& m, int A, int B)
 }
 
 /// Check 6: input segments whose endpoints are mesh vertices are chains of mesh edges.
-void checkConformity(const Pslg& input, const Mesh& m, const VertexMap& map, Errors& errors)
+void checkConformity(
+  const Pslg& input, const Mesh& m, const VertexMap& map, double offset, Errors& errors)
 {
   const auto np = input.points.size();
   for (std::size_t s = 0; s < input.segments.size(); ++s)
@@ -965,7 +967,7 @@ void checkConformity(const Pslg& input, const Mesh& m, const VertexMap& map, Err
     const int A = meshVertex(map, input.points[seg[0]]), B = meshVertex(map, input.points[seg[1]]);
     if (A < 0 || B < 0 || A == B)
       continue; // not both in the mesh (or degenerate): nothing to conform to
-    const std::string why = walkSegment(m, A, B);
+    const std::string why = walkSegment(m, A, B, offset);
     if (!why.empty())
       errors.add([&] { return name + " is not a chain of mesh edges: " + why; });
   }
@@ -1058,6 +1060,7 @@ ValidationReport validate(const Pslg& input, const Array<Point>& vertices,
     ValidationOptions o = options;
     o.maxEdgeLength = std::ldexp(options.maxEdgeLength, -e);
     o.snapTolerance = std::ldexp(options.snapTolerance, -e);
+    o.chainOffset = std::ldexp(options.chainOffset, -e);
     ValidationReport r = validate(in, scaled(vertices, e), triangles, o);
     if (!r.ok)
       r.errors.push_back("(coordinates in these messages are scaled by 2^" + std::to_string(-e) +
@@ -1081,7 +1084,7 @@ ValidationReport validate(const Pslg& input, const Array<Point>& vertices,
     checkInputVertices(input, map, errors); // 5
   if (options.checkConformity)
     checkConformity(options.snapTolerance > 0 ? snapped(input, options.snapTolerance) : input, m,
-      map, errors); // 6
+      map, options.chainOffset, errors); // 6
   return report;
 }
 

@@ -27,6 +27,11 @@ struct ValidationOptions
   /// distance of it (strictly between its ends, by brute force over every
   /// point and segment: O(points x segments)), and each piece must be a chain.
   double snapTolerance = 0.0;
+  /// If > 0, how far off its input segment's line a vertex of the segment's
+  /// chain may lie (after the split above): where a merge tolerance joined
+  /// the crossings of segments, the chains bend through the joined points.
+  /// 0: only the rounding allowance (1e-9 of the segment's length).
+  double chainOffset = 0.0;
   /// Also check that every input point is a mesh vertex. Off when holes may remove some.
   bool requireAllInputVertices = true;
   /// Keep at most this many messages in ValidationReport::errors (all are still counted).

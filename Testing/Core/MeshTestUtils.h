@@ -27,6 +27,10 @@ inline Result meshAndValidate(
   EXPECT_TRUE(r.ok) << name << ": " << r.error;
   if (!r.ok)
     return r;
+  // Crossings within the merge tolerance of a point or of each other join
+  // it: a segment's chain then passes that close to its line (Options).
+  if (vo.chainOffset == 0 && r.stats.crossingsSplit > 0)
+    vo.chainOffset = options.mergeTolerance;
   // Points the domain leaves out (outside every region, in holes) must be
   // reported by a warning; the rest of the input must be in the mesh.
   Pslg present;

@@ -309,6 +309,27 @@ TEST(Validate, SegmentChainThroughRoundedOrInputPointPasses)
   EXPECT_TRUE(r.ok) << dump(r);
 }
 
+TEST(Validate, SegmentChainWithinTheChainOffsetPasses)
+{
+  // Where a merge tolerance joined crossings, a chain may bend through a
+  // vertex as far off its segment's line as the offset allowed, and no more.
+  ValidationOptions joined;
+  joined.chainOffset = 0.1;
+  EXPECT_TRUE(check(chainThrough(0.1), kChainTriangles, { { 0, 1 } }, joined).ok);
+  EXPECT_TRUE(check(chainThrough(-0.05), kChainTriangles, { { 0, 1 } }, joined).ok);
+  const auto r = check(chainThrough(0.11), kChainTriangles, { { 0, 1 } }, joined);
+  EXPECT_FALSE(r.ok);
+  EXPECT_TRUE(mentions(r, "nearest forward neighbour is 0.11 off the line")) << dump(r);
+  // Scaled for exact arithmetic with the coordinates.
+  Array<Point> tiny = chainThrough(0.1);
+  for (Point& p : tiny)
+    p = { p.x * 0x1p-200, p.y * 0x1p-200 };
+  joined.chainOffset = 0.1 * 0x1p-200;
+  EXPECT_TRUE(check(tiny, kChainTriangles, { { 0, 1 } }, joined).ok);
+  joined.chainOffset = 0.09 * 0x1p-200;
+  EXPECT_FALSE(check(tiny, kChainTriangles, { { 0, 1 } }, joined).ok);
+}
+
 TEST(Validate, LargeAngleFails)
 {
   const Array<Point> points = { { 0, 0 }, { 2, 0 }, { 1, std::tan(2.5 * M_PI / 180) } };

@@ -143,14 +143,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // Holes and the enclosed-regions domain remove whole regions, and with them
   // the parts of segments inside (a hole seed on a vertex picks one of its
   // regions): conformity is then checked only where every segment is meshed.
-  // With a merge tolerance, crossings within it of each other or of a point
-  // join it, bending the segments by up to the tolerance at points that are
-  // not input points, which the validator's split (snapTolerance) does not
-  // know: conformity is then left to the unit tests, at tolerances within
-  // the validator's rounding allowance (Properties.FreelyCrossingSegments).
-  vo.checkConformity = p.holes.empty() &&
-    (o.domain == osm::Domain::Box || o.domain == osm::Domain::Hull) &&
-    !(o.mergeTolerance > 0 && r.stats.crossingsSplit > 0);
+  vo.checkConformity =
+    p.holes.empty() && (o.domain == osm::Domain::Box || o.domain == osm::Domain::Hull);
+  // Crossings within the merge tolerance of a point or of each other join it,
+  // so the segments' chains pass through points up to that far off their lines.
+  if (r.stats.crossingsSplit > 0)
+    vo.chainOffset = o.mergeTolerance;
   const osm::ValidationReport rep = osm::validate(present, r.mesh.vertices, r.mesh.triangles, vo);
   if (!rep.ok)
     fail("invalid mesh", rep.errors.empty() ? "" : rep.errors.front());
