@@ -475,6 +475,9 @@ private:
   std::size_t crossingsJoined = 0; ///< crossing points joined within the merge tolerance
   /// The auto domain found cycles of segments that enclose no area: hull.
   bool enclosesNothing = false;
+  /// The auto domain's enclosed regions hold no input point, only crossings
+  /// (segments meant to meet at one point crossing apart): hull.
+  bool enclosesOnlyCrossings = false;
   /// The enclosed regions reached beyond the segments on cycles (closed by a
   /// segment ending on another, which only the walk splits): the size bound
   /// then applies within all the segments.
@@ -732,6 +735,26 @@ Array<SizeBox> regionSizeBoxes(const Array<Point>& points, const Array<Triangle>
   return boxes;
 }
 
+/// Whether a kept triangle has a vertex that is an input point (not a
+/// crossing): vertexOf maps w's points to the triangles' vertices.
+bool keepsAnInputPoint(const Work& w, const Array<int>& vertexOf, const Array<Triangle>& triangles,
+  const Array<int>& regionId)
+{
+  int vertices = 0;
+  for (int v : vertexOf)
+    vertices = std::max(vertices, v + 1);
+  Array<char> isInput(static_cast<std::size_t>(vertices), 0);
+  for (std::size_t i = 0; i < w.points.size(); ++i)
+    if (!w.isCrossingPoint[i] && vertexOf[i] >= 0)
+      isInput[vertexOf[i]] = 1;
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+    if (regionId[t] >= 0)
+      for (int v : triangles[t])
+        if (v < vertices && isInput[v])
+          return true;
+  return false;
+}
+
 /// Auto means the enclosed regions if the segments enclose any (decided on the
 /// segments as split at their crossings), else the hull; a hull without area
 /// falls back to the box. For the hull domain, hull receives its boundary.
@@ -740,7 +763,8 @@ Domain Mesher::chooseDomain(const Work& w, Array<int>& hull)
   hull.clear();
   Domain domain = options.domain;
   if (domain == Domain::Auto)
-    domain = !enclosesNothing && segmentsEncloseRegion(w.points.size(), w.segments)
+    domain = !enclosesNothing && !enclosesOnlyCrossings &&
+        segmentsEncloseRegion(w.points.size(), w.segments)
       ? Domain::Enclosed
       : Domain::Hull;
   if (domain == Domain::Hull)
@@ -849,6 +873,12 @@ void Mesher::meshRounds(Work& w)
     if (enclosesNothing)
       res.warnings.push_back("the segments form cycles, but they enclose no area (collinear "
                              "segments over each other): the auto domain meshes the convex hull");
+    if (enclosesOnlyCrossings)
+      res.warnings.push_back(
+        "the segments enclose regions only between their crossings, with no input point on or "
+        "in them (segments meant to meet at one point may cross apart: a merge tolerance joins "
+        "their crossings): the auto domain meshes the convex hull; the enclosed domain meshes "
+        "those regions alone");
     if (st.crossingsSplit > 0)
       res.warnings.push_back("split " + std::to_string(st.crossingsSplit) +
         " crossing(s) of input segments at their intersection points, e.g. " + firstCrossing +
@@ -897,6 +927,15 @@ void Mesher::meshRounds(Work& w)
     {
       res.warnings.resize(warningsBefore);
       enclosesNothing = true;
+      continue;
+    }
+    // Nor need regions that keep no input point be what was meant: the
+    // crossings of segments meant to meet at one point close a tiny one.
+    if (options.domain == Domain::Auto && domain == Domain::Enclosed &&
+      !keepsAnInputPoint(w, overlay.inputVertex, c.triangles, carve.regionId))
+    {
+      res.warnings.resize(warningsBefore);
+      enclosesOnlyCrossings = true;
       continue;
     }
     // The size bound must cover every kept triangle: where a region closed

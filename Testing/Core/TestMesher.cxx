@@ -507,12 +507,10 @@ TEST(Clean, NearlyParallelSegmentsCrossingWithAThirdMeetAtOneVertex)
   EXPECT_EQ(other, 1u);
 }
 
-TEST(Clean, AMergeToleranceJoinsCrossings)
+/// Three roads meant to meet at a junction c, digitised 1e-11 off it: their
+/// three crossings close a triangle about 1e-11 across.
+Pslg roadsNearAJunction(const Point& c)
 {
-  // Roads meant to meet at a junction, digitised 1e-11 off it: their three
-  // crossings are meshed apart, graded down to them; with a merge tolerance
-  // above the scatter they join into one vertex, and the mesh is coarse.
-  const Point c{ 0.3, 0.4 };
   const double offsets[] = { 0, 1e-11, -0.7e-11 };
   Pslg p;
   for (int k = 0; k < 3; ++k)
@@ -523,6 +521,16 @@ TEST(Clean, AMergeToleranceJoinsCrossings)
     p.points.push_back({ o.x - std::cos(t), o.y - std::sin(t) });
     p.segments.push_back({ 2 * k, 2 * k + 1 });
   }
+  return p;
+}
+
+TEST(Clean, AMergeToleranceJoinsCrossings)
+{
+  // The crossings of roads digitised apart are meshed apart, graded down to
+  // them; with a merge tolerance above the scatter they join into one
+  // vertex, and the mesh is coarse.
+  const Point c{ 0.3, 0.4 };
+  const Pslg p = roadsNearAJunction(c);
   Options hull;
   hull.domain = Domain::Hull;
   auto crossingVertices = [](const Result& r) {
@@ -1687,6 +1695,41 @@ TEST(Domain, AutoSeesRegionsClosedByCrossings)
   EXPECT_EQ(r.stats.regions, 1u);
   // Only the little triangle (0,0), c1, c2 remains.
   EXPECT_LT(area(r.mesh), 1.0);
+}
+
+TEST(Domain, AutoMeshesTheHullWhenOnlyCrossingsAreEnclosed)
+{
+  // Roads digitised apart cross at three points that close a triangle 1e-11
+  // across: the auto domain meshed it alone and left out every input point
+  // (with a warning). Regions with no input point on or in them are rarely
+  // what was meant: the hull now, with why; the enclosed domain still
+  // meshes the triangle alone if asked.
+  const Pslg roads = roadsNearAJunction({ 0.3, 0.4 });
+  const Result r = meshAndValidate(roads, "roads near a junction");
+  EXPECT_TRUE(mentions(r.warnings, "enclose regions only between their crossings"));
+  EXPECT_FALSE(mentions(r.warnings, "outside the meshed domain"));
+  EXPECT_EQ(std::count(r.inputVertex.begin(), r.inputVertex.end(), -1), 0);
+  EXPECT_GT(area(r.mesh), 1.0);
+  Options enclosed;
+  enclosed.domain = Domain::Enclosed;
+  ValidationOptions regionOnly;
+  regionOnly.checkConformity = false;
+  const Result e = meshAndValidate(roads, "roads near a junction, enclosed", enclosed, regionOnly);
+  EXPECT_LT(area(e.mesh), 1e-20);
+  EXPECT_TRUE(mentions(e.warnings, "6 input point(s) lie outside the meshed domain"));
+  EXPECT_FALSE(mentions(e.warnings, "between their crossings"));
+  // So does a hash sign, whose square has crossings for corners.
+  Pslg hash;
+  hash.points = { { 1, 0 }, { 1, 3 }, { 2, 0 }, { 2, 3 }, { 0, 1 }, { 3, 1 }, { 0, 2 }, { 3, 2 } };
+  hash.segments = { { 0, 1 }, { 2, 3 }, { 4, 5 }, { 6, 7 } };
+  const Result h = meshAndValidate(hash, "hash sign");
+  EXPECT_NEAR(area(h.mesh), 7.0, 1e-12); // the octagon of its 8 ends
+  EXPECT_TRUE(mentions(h.warnings, "enclose regions only between their crossings"));
+  // A region with one input point on its boundary is meshed alone, as before.
+  hash.segments.push_back({ 0, 5 });
+  const Result one = meshAndValidate(hash, "hash sign closed by a corner", {}, regionOnly);
+  EXPECT_LT(area(one.mesh), 7.0);
+  EXPECT_FALSE(mentions(one.warnings, "between their crossings"));
 }
 
 TEST(Overlay, TinyTrianglesAreStillQualityChecked)
