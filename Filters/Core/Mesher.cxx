@@ -755,13 +755,43 @@ bool keepsAnInputPoint(const Work& w, const Array<int>& vertexOf, const Array<Tr
   return false;
 }
 
-/// Auto means the enclosed regions if the segments enclose any (decided on the
-/// segments as split at their crossings), else the hull; a hull without area
-/// falls back to the box. For the hull domain, hull receives its boundary.
+/// Whether an input point (not a crossing) may be on or in a region the
+/// segments enclose: it is on a cycle of them, or in the bounds of all their
+/// cycles. False tells, before meshing, that the regions hold only crossings.
+bool mayEncloseAnInputPoint(const Work& w)
+{
+  const CycleComponents cycles = cycleComponents(w.points.size(), w.segments);
+  Bounds all{ { HUGE_VAL, HUGE_VAL }, { -HUGE_VAL, -HUGE_VAL } };
+  for (std::size_t s = 0; s < w.segments.size(); ++s)
+    if (cycles.component[s] >= 0)
+      for (int v : w.segments[s])
+      {
+        if (!w.isCrossingPoint[v])
+          return true;
+        extend(all, w.points[v]);
+      }
+  for (std::size_t i = 0; i < w.points.size(); ++i)
+  {
+    const Point& p = w.points[i];
+    if (!w.isCrossingPoint[i] && p.x >= all.lo.x && p.x <= all.hi.x && p.y >= all.lo.y &&
+      p.y <= all.hi.y)
+      return true;
+  }
+  return false;
+}
+
+/// Auto means the enclosed regions if the segments enclose any with an input
+/// point on or in it (decided on the segments as split at their crossings:
+/// here if no input point can be, else once carved), else the hull; a hull
+/// without area falls back to the box. For the hull domain, hull receives
+/// its boundary.
 Domain Mesher::chooseDomain(const Work& w, Array<int>& hull)
 {
   hull.clear();
   Domain domain = options.domain;
+  if (domain == Domain::Auto && !enclosesNothing && !enclosesOnlyCrossings &&
+    segmentsEncloseRegion(w.points.size(), w.segments))
+    enclosesOnlyCrossings = !mayEncloseAnInputPoint(w);
   if (domain == Domain::Auto)
     domain = !enclosesNothing && !enclosesOnlyCrossings &&
         segmentsEncloseRegion(w.points.size(), w.segments)

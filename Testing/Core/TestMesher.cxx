@@ -1710,6 +1710,14 @@ TEST(Domain, AutoMeshesTheHullWhenOnlyCrossingsAreEnclosed)
   EXPECT_FALSE(mentions(r.warnings, "outside the meshed domain"));
   EXPECT_EQ(std::count(r.inputVertex.begin(), r.inputVertex.end(), -1), 0);
   EXPECT_GT(area(r.mesh), 1.0);
+  // No input point lies in the bounds of the segments' cycles: the hull is
+  // chosen before meshing, in as many rounds as the hull domain takes.
+  CountingProgress autoRounds, hullRounds;
+  Options hull;
+  hull.domain = Domain::Hull;
+  ASSERT_TRUE(mesh(roads, {}, &autoRounds).ok);
+  ASSERT_TRUE(mesh(roads, hull, &hullRounds).ok);
+  EXPECT_EQ(autoRounds.overlays, hullRounds.overlays);
   Options enclosed;
   enclosed.domain = Domain::Enclosed;
   ValidationOptions regionOnly;
@@ -1730,6 +1738,33 @@ TEST(Domain, AutoMeshesTheHullWhenOnlyCrossingsAreEnclosed)
   const Result one = meshAndValidate(hash, "hash sign closed by a corner", {}, regionOnly);
   EXPECT_LT(area(one.mesh), 7.0);
   EXPECT_FALSE(mentions(one.warnings, "between their crossings"));
+}
+
+TEST(Domain, AutoKeepsRegionsClosedByCrossingsAroundAnInputPoint)
+{
+  // Three lines crossing at (0, 0), (4, 0) and (0, 4), and a point in the
+  // bounds of their triangle: outside it, the auto domain meshes the hull
+  // (decided once the triangle is carved); inside it, the triangle alone.
+  Pslg p;
+  p.points = { { -1, 0 }, { 5, 0 }, { 0, -1 }, { 0, 5 }, { 5, -1 }, { -1, 5 }, { 3, 3 } };
+  p.segments = { { 0, 1 }, { 2, 3 }, { 4, 5 } };
+  ValidationOptions regionOnly;
+  regionOnly.checkConformity = false;
+  const Result outside = meshAndValidate(p, "point beside the triangle");
+  EXPECT_TRUE(mentions(outside.warnings, "enclose regions only between their crossings"));
+  EXPECT_EQ(std::count(outside.inputVertex.begin(), outside.inputVertex.end(), -1), 0);
+  // The triangle is meshed first, then the hull: one round more.
+  CountingProgress autoRounds, hullRounds;
+  Options hull;
+  hull.domain = Domain::Hull;
+  ASSERT_TRUE(mesh(p, {}, &autoRounds).ok);
+  ASSERT_TRUE(mesh(p, hull, &hullRounds).ok);
+  EXPECT_EQ(autoRounds.overlays, hullRounds.overlays + 1);
+  p.points.back() = { 1, 1 };
+  const Result inside = meshAndValidate(p, "point in the triangle", {}, regionOnly);
+  EXPECT_FALSE(mentions(inside.warnings, "between their crossings"));
+  EXPECT_NEAR(area(inside.mesh), 8.0, 1e-12);
+  EXPECT_GE(inside.inputVertex.back(), 0);
 }
 
 TEST(Overlay, TinyTrianglesAreStillQualityChecked)
