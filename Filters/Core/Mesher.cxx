@@ -961,7 +961,8 @@ void Mesher::meshRounds(Work& w)
     }
     // Nor need regions that keep no input point be what was meant: the
     // crossings of segments meant to meet at one point close a tiny one.
-    if (options.domain == Domain::Auto && domain == Domain::Enclosed &&
+    // Holes may have removed the regions that had one: then as asked.
+    if (options.domain == Domain::Auto && domain == Domain::Enclosed && w.holes.empty() &&
       !keepsAnInputPoint(w, overlay.inputVertex, c.triangles, carve.regionId))
     {
       res.warnings.resize(warningsBefore);

@@ -1765,6 +1765,13 @@ TEST(Domain, AutoKeepsRegionsClosedByCrossingsAroundAnInputPoint)
   EXPECT_FALSE(mentions(inside.warnings, "between their crossings"));
   EXPECT_NEAR(area(inside.mesh), 8.0, 1e-12);
   EXPECT_GE(inside.inputVertex.back(), 0);
+  // A hole that removes that triangle leaves nothing, as asked (found by
+  // the pvpython test: the hull, minus the hole, came instead).
+  p.holes = { { 1, 2 } };
+  const Result holed = mesh(p, {});
+  ASSERT_TRUE(holed.ok) << holed.error;
+  EXPECT_TRUE(holed.mesh.triangles.empty());
+  EXPECT_FALSE(mentions(holed.warnings, "between their crossings"));
 }
 
 TEST(Overlay, TinyTrianglesAreStillQualityChecked)
