@@ -86,7 +86,7 @@ public:
    */
   enum DomainTypes
   {
-    DOMAIN_AUTO = 0,     ///< DOMAIN_ENCLOSED if its regions hold input points, else DOMAIN_HULL
+    DOMAIN_AUTO = 0,     ///< DOMAIN_ENCLOSED if input points bound a region, else DOMAIN_HULL
     DOMAIN_ENCLOSED = 1, ///< regions enclosed by segments, minus holes
     DOMAIN_HULL = 2,     ///< the convex hull of the input points
     DOMAIN_BOX = 3       ///< the padded bounding box of the overlay mesh

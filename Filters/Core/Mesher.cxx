@@ -12,6 +12,7 @@
 #include "Predicates.h"
 #include "RunContext.h"
 #include "Series.h"
+#include "Snap.h"
 #include "Stitch.h"
 
 #include <algorithm>
@@ -394,14 +395,27 @@ void splitCrossings(Work& w, const Array<SegmentCrossing>& crossings, Statistics
 /// bend it into a sliver with theirs, thinner than the tolerance and than
 /// what the crossings left (a review: 52 of 12,600 generated inputs then
 /// refused, and aust.poly at 1e-4 of its extent crossed anew every round).
-/// Returns how many points joined another (at tol > 0; else coincided).
-std::size_t mergeEqualPoints(Work& w, double tol)
+/// Returns how many points joined another (at tol > 0; else coincided);
+/// seeds receives the hole and region seeds beside the segments that bent.
+std::size_t mergeEqualPoints(Work& w, double tol, SeedsBeside& seeds)
 {
   Pslg p{ w.points, w.segments, {} };
   CleanPslg c;
   Statistics ignored;
   std::vector<std::string> ignoredWarnings;
   cleanPslg(p, c, ignored, ignoredWarnings, tol, {}, false);
+  if (tol > 0 && c.points.size() < w.points.size())
+  {
+    Array<OriginSegment> bent;
+    for (std::size_t s = 0; s < w.segments.size(); ++s)
+    {
+      const Segment& e = w.segments[s];
+      if (!(c.points[c.pointOf[e[0]]] == w.points[e[0]]) ||
+        !(c.points[c.pointOf[e[1]]] == w.points[e[1]]))
+        bent.push_back({ e, w.segmentOrigin[s] });
+    }
+    seeds = seedsBesideBends(w.holes, w.regionSeeds, w.points, bent, tol);
+  }
   // A point is the split's own only if every point merged into it is.
   Array<char> crossing(c.points.size(), 1);
   for (std::size_t i = 0; i < w.points.size(); ++i)
@@ -473,10 +487,12 @@ private:
   int exponent = 0;
   std::string firstCrossing;       ///< the first crossing split, for the warning
   std::size_t crossingsJoined = 0; ///< crossing points joined within the merge tolerance
+  SeedsBeside seedsBesideJoins;    ///< seeds beside segments those joins bent (first round's)
   /// The auto domain found cycles of segments that enclose no area: hull.
   bool enclosesNothing = false;
-  /// The auto domain's enclosed regions hold no input point, only crossings
-  /// (segments meant to meet at one point crossing apart): hull.
+  /// No input point is on the boundary of the auto domain's enclosed
+  /// regions, only crossings (segments meant to meet at one point crossing
+  /// apart): hull.
   bool enclosesOnlyCrossings = false;
   /// The enclosed regions reached beyond the segments on cycles (closed by a
   /// segment ending on another, which only the walk splits): the size bound
@@ -735,63 +751,34 @@ Array<SizeBox> regionSizeBoxes(const Array<Point>& points, const Array<Triangle>
   return boxes;
 }
 
-/// Whether a kept triangle has a vertex that is an input point (not a
-/// crossing): vertexOf maps w's points to the triangles' vertices.
-bool keepsAnInputPoint(const Work& w, const Array<int>& vertexOf, const Array<Triangle>& triangles,
-  const Array<int>& regionId)
+/// Whether an input point (not a crossing) lies on a cycle of the input
+/// subsegments (the walk's pieces, split at crossings and at input points
+/// on segments): whether a region the segments enclose has one on its
+/// boundary. vertexOf maps w's points to the pieces' vertices.
+bool inputPointOnACycle(const Work& w, const Array<int>& vertexOf, const Array<Segment>& pieces)
 {
   int vertices = 0;
-  for (int v : vertexOf)
-    vertices = std::max(vertices, v + 1);
+  for (const Segment& e : pieces)
+    vertices = std::max({ vertices, e[0] + 1, e[1] + 1 });
   Array<char> isInput(static_cast<std::size_t>(vertices), 0);
   for (std::size_t i = 0; i < w.points.size(); ++i)
-    if (!w.isCrossingPoint[i] && vertexOf[i] >= 0)
+    if (!w.isCrossingPoint[i] && vertexOf[i] >= 0 && vertexOf[i] < vertices)
       isInput[vertexOf[i]] = 1;
-  for (std::size_t t = 0; t < triangles.size(); ++t)
-    if (regionId[t] >= 0)
-      for (int v : triangles[t])
-        if (v < vertices && isInput[v])
-          return true;
-  return false;
-}
-
-/// Whether an input point (not a crossing) may be on or in a region the
-/// segments enclose: it is on a cycle of them, or in the bounds of all their
-/// cycles. False tells, before meshing, that the regions hold only crossings.
-bool mayEncloseAnInputPoint(const Work& w)
-{
-  const CycleComponents cycles = cycleComponents(w.points.size(), w.segments);
-  Bounds all{ { HUGE_VAL, HUGE_VAL }, { -HUGE_VAL, -HUGE_VAL } };
-  for (std::size_t s = 0; s < w.segments.size(); ++s)
-    if (cycles.component[s] >= 0)
-      for (int v : w.segments[s])
-      {
-        if (!w.isCrossingPoint[v])
-          return true;
-        extend(all, w.points[v]);
-      }
-  for (std::size_t i = 0; i < w.points.size(); ++i)
-  {
-    const Point& p = w.points[i];
-    if (!w.isCrossingPoint[i] && p.x >= all.lo.x && p.x <= all.hi.x && p.y >= all.lo.y &&
-      p.y <= all.hi.y)
+  const CycleComponents cycles = cycleComponents(static_cast<std::size_t>(vertices), pieces);
+  for (std::size_t e = 0; e < pieces.size(); ++e)
+    if (cycles.component[e] >= 0 && (isInput[pieces[e][0]] || isInput[pieces[e][1]]))
       return true;
-  }
   return false;
 }
 
-/// Auto means the enclosed regions if the segments enclose any with an input
-/// point on or in it (decided on the segments as split at their crossings:
-/// here if no input point can be, else once carved), else the hull; a hull
-/// without area falls back to the box. For the hull domain, hull receives
-/// its boundary.
+/// Auto means the enclosed regions if the segments enclose any (decided on
+/// the segments as split at their crossings; once meshed, one with an input
+/// point on its boundary), else the hull; a hull without area falls back to
+/// the box. For the hull domain, hull receives its boundary.
 Domain Mesher::chooseDomain(const Work& w, Array<int>& hull)
 {
   hull.clear();
   Domain domain = options.domain;
-  if (domain == Domain::Auto && !enclosesNothing && !enclosesOnlyCrossings &&
-    segmentsEncloseRegion(w.points.size(), w.segments))
-    enclosesOnlyCrossings = !mayEncloseAnInputPoint(w);
   if (domain == Domain::Auto)
     domain = !enclosesNothing && !enclosesOnlyCrossings &&
         segmentsEncloseRegion(w.points.size(), w.segments)
@@ -890,9 +877,13 @@ void Mesher::meshRounds(Work& w)
         firstCrossing =
           describeCrossing(w, walk.segmentCrossings.front(), exponent, options.pointFormat);
       splitCrossings(w, walk.segmentCrossings, st);
-      const std::size_t joined = mergeEqualPoints(w, std::ldexp(options.mergeTolerance, -exponent));
+      SeedsBeside seeds;
+      const std::size_t joined =
+        mergeEqualPoints(w, std::ldexp(options.mergeTolerance, -exponent), seeds);
       if (options.mergeTolerance > 0)
         crossingsJoined += joined;
+      if (seeds.count > 0 && seedsBesideJoins.count == 0)
+        seedsBesideJoins = seeds;
       continue;
     }
     // Say why the domain changed, once.
@@ -905,16 +896,21 @@ void Mesher::meshRounds(Work& w)
                              "segments over each other): the auto domain meshes the convex hull");
     if (enclosesOnlyCrossings)
       res.warnings.push_back(
-        "the segments enclose regions only between their crossings, with no input point on or "
-        "in them (segments meant to meet at one point may cross apart: a merge tolerance joins "
-        "their crossings): the auto domain meshes the convex hull; the enclosed domain meshes "
-        "those regions alone");
+        "the segments enclose regions only between their crossings, with no input point on "
+        "their boundaries (segments meant to meet at one point may cross apart: a merge "
+        "tolerance joins their crossings): the auto domain meshes the convex hull; the enclosed "
+        "domain meshes those regions alone");
     if (st.crossingsSplit > 0)
       res.warnings.push_back("split " + std::to_string(st.crossingsSplit) +
         " crossing(s) of input segments at their intersection points, e.g. " + firstCrossing +
         (crossingsJoined > 0 ? "; " + std::to_string(crossingsJoined) +
               " of those points joined another within the merge tolerance"
                              : ""));
+    if (seedsBesideJoins.count > 0)
+      res.warnings.push_back(std::to_string(seedsBesideJoins.count) +
+        " hole or region seed(s) lie within the merge tolerance of a segment bent where its "
+        "crossing joined another point, and may now lie on its other side: e.g. " +
+        seedsBesideJoins.example);
     st.segmentsSplitAtVertices = walk.splitsAtInputVertices + walk.duplicatePieces;
     st.overlayVertices = overlay.mesh.points.size();
     st.overlaySteinerPoints = overlay.steinerPoints + 4;
@@ -959,11 +955,11 @@ void Mesher::meshRounds(Work& w)
       enclosesNothing = true;
       continue;
     }
-    // Nor need regions that keep no input point be what was meant: the
-    // crossings of segments meant to meet at one point close a tiny one.
-    // Holes may have removed the regions that had one: then as asked.
-    if (options.domain == Domain::Auto && domain == Domain::Enclosed && w.holes.empty() &&
-      !keepsAnInputPoint(w, overlay.inputVertex, c.triangles, carve.regionId))
+    // Nor need regions whose boundaries pass through no input point be what
+    // was meant: the crossings of segments meant to meet at one point close
+    // a tiny one. Without crossings, every boundary has input points.
+    if (options.domain == Domain::Auto && domain == Domain::Enclosed && st.crossingsSplit > 0 &&
+      !inputPointOnACycle(w, overlay.inputVertex, c.constrainedEdges))
     {
       res.warnings.resize(warningsBefore);
       enclosesOnlyCrossings = true;
@@ -1305,7 +1301,11 @@ void Mesher::buildOutput(const Work& w, const PlanarGraph& g, Completion& c, Car
       "hole) and are not in the mesh, e.g. point " +
       std::to_string(example) + " at " + formatPoint(input.points[example], options.pointFormat) +
       (domain == Domain::Enclosed ? "; the hull or box domain keeps those outside every region"
-                                  : ""));
+                                  : "") +
+      (domain == Domain::Enclosed && st.crossingsSplit > 0
+          ? "; if segments meant to meet at one point cross apart and enclose a tiny region "
+            "there, a merge tolerance joins their crossings"
+          : ""));
   st.regions = carve.regions;
   st.outputVertices = res.mesh.vertices.size();
   st.outputTriangles = res.mesh.triangles.size();
