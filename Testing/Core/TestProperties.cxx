@@ -253,6 +253,34 @@ Pslg nearTJunctions(std::mt19937_64& rng, double gap)
   return p;
 }
 
+/// Road networks digitised with misses: 1 to 6 junctions, each of 3 or 4
+/// roads through it, each road 1e-11 to 1e-9 off it (random side), long
+/// enough to cross other junctions' roads. Every input point is a road's
+/// dangling end: no cycle of segments passes through one.
+Pslg roadJunctions(std::mt19937_64& rng, Array<Point>& junctions)
+{
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  Pslg p;
+  junctions.clear();
+  for (int j = 1 + static_cast<int>(rng() % 6); j > 0; --j)
+  {
+    const Point c{ U(rng), U(rng) };
+    junctions.push_back(c);
+    const int roads = 3 + static_cast<int>(rng() % 2);
+    for (int k = 0; k < roads; ++k)
+    {
+      const double t = kPi * (k + 0.8 * U(rng)) / roads, miss = std::pow(10.0, -11 + 2 * U(rng));
+      const double off = rng() % 2 ? miss : -miss, r1 = 0.2 + 0.6 * U(rng), r2 = 0.2 + 0.6 * U(rng);
+      const Point o{ c.x - off * std::sin(t), c.y + off * std::cos(t) };
+      const int i = static_cast<int>(p.points.size());
+      p.points.push_back({ o.x + r1 * std::cos(t), o.y + r1 * std::sin(t) });
+      p.points.push_back({ o.x - r2 * std::cos(t), o.y - r2 * std::sin(t) });
+      p.segments.push_back({ i, i + 1 });
+    }
+  }
+  return p;
+}
+
 /// Seeds per family; OSM_PROPERTY_SEEDS raises it for a long stress run.
 const int kSeeds =
   std::getenv("OSM_PROPERTY_SEEDS") ? std::atoi(std::getenv("OSM_PROPERTY_SEEDS")) : 25;
@@ -343,6 +371,42 @@ TEST(Properties, FreelyCrossingSegments)
     meshAndValidate(p, name + " (hull, merge tolerance 1e-3)", hull);
   }
   EXPECT_GE(meshed, cases * 99 / 100);
+}
+
+TEST(Properties, RoadJunctionsDigitisedApart)
+{
+  // The auto domain meshes the hull, every input point in it, whatever the
+  // crossings close (before: the tiny triangles at junctions alone, or the
+  // regions between roads, every input point left out). With a merge
+  // tolerance of 1e-8, above the misses, each junction is one vertex, and
+  // each road's chain passes within the tolerance of its line.
+  int joinedJunctions = 0, junctionCount = 0;
+  for (int seed = 0; seed < 2 * kSeeds; ++seed)
+  {
+    std::mt19937_64 rng(seed);
+    Array<Point> junctions;
+    const Pslg p = roadJunctions(rng, junctions);
+    const std::string name = "road junctions, seed " + std::to_string(seed);
+    const Result r = meshAndValidate(p, name);
+    if (!r.ok)
+      continue;
+    EXPECT_EQ(std::count(r.inputVertex.begin(), r.inputVertex.end(), -1), 0) << name;
+    Options joined;
+    joined.mergeTolerance = 1e-8;
+    const Result j = meshAndValidate(p, name + ", merge tolerance 1e-8", joined);
+    EXPECT_EQ(std::count(j.inputVertex.begin(), j.inputVertex.end(), -1), 0) << name;
+    for (const Point& c : junctions)
+    {
+      long near = 0;
+      for (const Point& v : j.mesh.vertices)
+        near += std::hypot(v.x - c.x, v.y - c.y) <= 1e-8;
+      joinedJunctions += near == 1;
+      ++junctionCount;
+    }
+  }
+  // Another junction's road may pass within the tolerance of one: rare.
+  EXPECT_GE(joinedJunctions, junctionCount * 99 / 100)
+    << joinedJunctions << " of " << junctionCount;
 }
 
 TEST(Properties, SegmentsEndingNearAnother)
