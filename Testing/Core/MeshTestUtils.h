@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
 namespace osm
@@ -33,16 +34,22 @@ inline Result meshAndValidate(
     vo.chainOffset = options.mergeTolerance;
   // Points the domain leaves out (outside every region, in holes) must be
   // reported by a warning; the rest of the input must be in the mesh.
+  // Each where it was merged to: within the merge tolerance.
   Pslg present;
   std::vector<int> index(input.points.size(), -1);
   for (std::size_t i = 0; i < input.points.size(); ++i)
     if (r.inputVertex.at(i) >= 0)
     {
+      const Point& at = r.mesh.vertices.at(r.inputVertex[i]);
+      const Point& p = input.points[i];
+      EXPECT_TRUE(at == p || std::hypot(at.x - p.x, at.y - p.y) <= options.mergeTolerance)
+        << name << ": input point " << i << " moved further than the merge tolerance";
       index[i] = static_cast<int>(present.points.size());
-      present.points.push_back(input.points[i]);
+      present.points.push_back(at);
     }
   for (const Segment& s : input.segments)
-    if (index[s[0]] >= 0 && index[s[1]] >= 0)
+    if (index[s[0]] >= 0 && index[s[1]] >= 0 &&
+      !(present.points[index[s[0]]] == present.points[index[s[1]]]))
       present.segments.push_back({ index[s[0]], index[s[1]] });
   if (present.points.size() < input.points.size())
   {
