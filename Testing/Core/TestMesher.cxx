@@ -1646,6 +1646,44 @@ TEST(Mesher, RefusesCoordinatesNearTheDoubleLimit)
   EXPECT_NE(r.error.find("too large"), std::string::npos) << r.error;
 }
 
+TEST(Stitch, CrossingsThatCrossAgainForFiveRoundsAreRefusedWithTheRemedy)
+{
+  // Found by a search over pencils of nearly parallel lines missing their
+  // common point by 1e-17 to 1e-13 (3 of 3,000): each round's rounded
+  // crossing points made new crossings, five rounds running. The error says
+  // so, and that a merge tolerance joins them; at 1e-10 the input meshes.
+  const Array<Point> ends = { { 2.69018634544316, 0.48575305784562151 },
+    { 4.0569760346051398, -0.066421505511186169 }, { 2.673608732213955, 0.489726949339714 },
+    { 4.2726540081586286, -0.15120266597095833 }, { 2.6077138761977494, 0.5175621538096622 },
+    { 4.3006179447804218, -0.1635954484248861 }, { 3.1147079524104408, 0.31437395921768851 },
+    { 4.6220711533172558, -0.29504325041095286 }, { 2.678731934103999, 0.4898985588350363 },
+    { 4.0219771491039564, -0.052005147404296487 }, { 2.8105022303858447, 0.4353758794720437 },
+    { 4.3737471420877583, -0.19232829142599492 }, { 2.9674988400520705, 0.37131798454794684 },
+    { 4.1267749571006025, -0.092086109822883344 }, { 3.3056192923008272, 0.23693263555702215 },
+    { 3.9129520597486245, -0.0079175152460027043 }, { 2.7559895141681938, 0.4566806435645277 },
+    { 4.4664654021230685, -0.22885434183758102 } };
+  Pslg p;
+  p.points = ends;
+  for (int i = 0; i + 1 < static_cast<int>(ends.size()); i += 2)
+    p.segments.push_back({ i, i + 1 });
+  Options hull;
+  hull.domain = Domain::Hull;
+  const Result r = mesh(p, hull);
+  ASSERT_FALSE(r.ok);
+  EXPECT_NE(r.error.find("could not resolve all crossings after 5 rounds"), std::string::npos)
+    << r.error;
+  EXPECT_NE(r.error.find("if segments there are meant to meet at one point, a merge tolerance"),
+    std::string::npos)
+    << r.error;
+  hull.mergeTolerance = 1e-14; // too small to join them: "a larger" one
+  const Result small = mesh(p, hull);
+  ASSERT_FALSE(small.ok);
+  EXPECT_NE(small.error.find("after 5 rounds"), std::string::npos) << small.error;
+  EXPECT_NE(small.error.find("a larger merge tolerance"), std::string::npos) << small.error;
+  hull.mergeTolerance = 1e-10;
+  meshAndValidate(p, "pencil, merge tolerance 1e-10", hull);
+}
+
 TEST(Stitch, SegmentsTooCloseToSeparateAreNamed)
 {
   // Found by an adversarial run: two segments from one point at an angle of
