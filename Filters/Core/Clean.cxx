@@ -176,19 +176,40 @@ std::pair<std::size_t, int> dropDuplicates(Array<OriginSegment>& segs)
   return { dropped, example };
 }
 
-/// Hole and region seeds within tol of a segment that snapping bent: say so.
+/// Hole and region seeds within tol of a segment that snapping bent may now
+/// lie on its other side (its region and theirs swapped): say so, as the
+/// mesh shows no trace of it. Seeds by the split segments: both are few.
 void warnAboutSeedsBesideBends(const Pslg& in, const Array<Point>& points,
   const Array<OriginSegment>& split, double tol, std::vector<std::string>& warnings)
 {
-  Array<Point> regionSeeds;
-  for (const RegionAttribute& r : in.regions)
-    regionSeeds.push_back(r.seed);
-  const SeedsBeside seeds = seedsBesideBends(in.holes, regionSeeds, points, split, tol);
-  if (seeds.count > 0)
-    warnings.push_back(std::to_string(seeds.count) +
+  auto beside = [&](const Point& q) {
+    for (const auto& [s, origin] : split)
+    {
+      const SegmentFrame frame(points[s[0]], points[s[1]]);
+      const double along = frame.along(q);
+      if (along >= -tol && along <= frame.length + tol && std::fabs(frame.off(q)) <= tol)
+        return origin;
+    }
+    return -1;
+  };
+  std::size_t count = 0;
+  std::string example;
+  auto check = [&](const Point& q, const char* kind, std::size_t k) {
+    if (const int s = beside(q); s >= 0 && count++ == 0)
+      example = std::string(kind) + " " + std::to_string(k) +
+        " lies within the merge tolerance of segment " + std::to_string(s);
+  };
+  if (split.empty())
+    return;
+  for (std::size_t h = 0; h < in.holes.size(); ++h)
+    check(in.holes[h], "hole", h);
+  for (std::size_t r = 0; r < in.regions.size(); ++r)
+    check(in.regions[r].seed, "region", r);
+  if (count > 0)
+    warnings.push_back(std::to_string(count) +
       " hole or region seed(s) lie within the merge tolerance of a segment that was split at "
       "points near it, and may now lie on its other side: e.g. " +
-      seeds.example);
+      example);
 }
 
 /// The segments on the merged points; with a tolerance, split at the points

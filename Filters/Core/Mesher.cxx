@@ -12,7 +12,6 @@
 #include "Predicates.h"
 #include "RunContext.h"
 #include "Series.h"
-#include "Snap.h"
 #include "Stitch.h"
 
 #include <algorithm>
@@ -385,6 +384,50 @@ void splitCrossings(Work& w, const Array<SegmentCrossing>& crossings, Statistics
   }
 }
 
+/// Hole and region seeds that a join moved to the other side of a segment:
+/// count of them, and one named ("hole 2 and segment 5", the user's numbers).
+struct SeedsAcross
+{
+  std::size_t count = 0;
+  std::string example;
+};
+
+/// Whether q lies in triangle abc (closed), which must not be degenerate.
+bool inTriangle(const Point& a, const Point& b, const Point& c, const Point& q)
+{
+  const double o = orient2d(a, b, c), o1 = orient2d(a, b, q), o2 = orient2d(b, c, q),
+               o3 = orient2d(c, a, q);
+  return o != 0 && (o > 0 ? o1 >= 0 && o2 >= 0 && o3 >= 0 : o1 <= 0 && o2 <= 0 && o3 <= 0);
+}
+
+/// The seeds of w in the area that its segments swept as their ends moved
+/// to where c put them (at a, b before; a2, b2 after): the triangles
+/// (a, b, b2) and (a, b2, a2), as a join moves one end, rarely both.
+SeedsAcross seedsAcrossJoins(const Work& w, const CleanPslg& c)
+{
+  SeedsAcross found;
+  auto check = [&](const Point& q, const char* kind, std::size_t k) {
+    for (std::size_t s = 0; s < w.segments.size(); ++s)
+    {
+      const Segment& e = w.segments[s];
+      const Point &a = w.points[e[0]], &b = w.points[e[1]];
+      const Point &a2 = c.points[c.pointOf[e[0]]], &b2 = c.points[c.pointOf[e[1]]];
+      if ((!(b == b2) && inTriangle(a, b, b2, q)) || (!(a == a2) && inTriangle(a, b2, a2, q)))
+      {
+        if (found.count++ == 0)
+          found.example = std::string(kind) + " " + std::to_string(k) + " and segment " +
+            std::to_string(w.segmentOrigin[s]);
+        return;
+      }
+    }
+  };
+  for (std::size_t h = 0; h < w.holes.size(); ++h)
+    check(w.holes[h], "hole", h);
+  for (std::size_t r = 0; r < w.regionSeeds.size(); ++r)
+    check(w.regionSeeds[r], "region", r);
+  return found;
+}
+
 /// Crossing points can coincide after rounding: merge them, drop what
 /// degenerates. With a merge tolerance (tol, scaled), the crossings within it
 /// of a point join it (the crossings of segments meant to meet at one point,
@@ -396,8 +439,8 @@ void splitCrossings(Work& w, const Array<SegmentCrossing>& crossings, Statistics
 /// what the crossings left (a review: 52 of 12,600 generated inputs then
 /// refused, and aust.poly at 1e-4 of its extent crossed anew every round).
 /// Returns how many points joined another (at tol > 0; else coincided);
-/// seeds receives the hole and region seeds beside the segments that bent.
-std::size_t mergeEqualPoints(Work& w, double tol, SeedsBeside& seeds)
+/// seeds receives the hole and region seeds that segments bent across.
+std::size_t mergeEqualPoints(Work& w, double tol, SeedsAcross& seeds)
 {
   Pslg p{ w.points, w.segments, {} };
   CleanPslg c;
@@ -405,17 +448,7 @@ std::size_t mergeEqualPoints(Work& w, double tol, SeedsBeside& seeds)
   std::vector<std::string> ignoredWarnings;
   cleanPslg(p, c, ignored, ignoredWarnings, tol, {}, false);
   if (tol > 0 && c.points.size() < w.points.size())
-  {
-    Array<OriginSegment> bent;
-    for (std::size_t s = 0; s < w.segments.size(); ++s)
-    {
-      const Segment& e = w.segments[s];
-      if (!(c.points[c.pointOf[e[0]]] == w.points[e[0]]) ||
-        !(c.points[c.pointOf[e[1]]] == w.points[e[1]]))
-        bent.push_back({ e, w.segmentOrigin[s] });
-    }
-    seeds = seedsBesideBends(w.holes, w.regionSeeds, w.points, bent, tol);
-  }
+    seeds = seedsAcrossJoins(w, c);
   // A point is the split's own only if every point merged into it is.
   Array<char> crossing(c.points.size(), 1);
   for (std::size_t i = 0; i < w.points.size(); ++i)
@@ -487,13 +520,17 @@ private:
   int exponent = 0;
   std::string firstCrossing;       ///< the first crossing split, for the warning
   std::size_t crossingsJoined = 0; ///< crossing points joined within the merge tolerance
-  SeedsBeside seedsBesideJoins;    ///< seeds beside segments those joins bent (first round's)
+  SeedsAcross seedsAcrossJoins;    ///< seeds that segments those joins bent crossed
   /// The auto domain found cycles of segments that enclose no area: hull.
   bool enclosesNothing = false;
   /// No input point is on the boundary of the auto domain's enclosed
   /// regions, only crossings (segments meant to meet at one point crossing
   /// apart): hull.
   bool enclosesOnlyCrossings = false;
+  int crossingRounds = 0;            ///< rounds that split crossings so far
+  bool inputPointsOnSegments = true; ///< the last such round's walk met some
+  /// The merge tolerance in the scaled coordinates of the rounds.
+  double scaledTolerance() const { return std::ldexp(options.mergeTolerance, -exponent); }
   /// The enclosed regions reached beyond the segments on cycles (closed by a
   /// segment ending on another, which only the walk splits): the size bound
   /// then applies within all the segments.
@@ -751,24 +788,50 @@ Array<SizeBox> regionSizeBoxes(const Array<Point>& points, const Array<Triangle>
   return boxes;
 }
 
-/// Whether an input point (not a crossing) lies on a cycle of the input
-/// subsegments (the walk's pieces, split at crossings and at input points
-/// on segments): whether a region the segments enclose has one on its
-/// boundary. vertexOf maps w's points to the pieces' vertices.
-bool inputPointOnACycle(const Work& w, const Array<int>& vertexOf, const Array<Segment>& pieces)
+/// Whether a cycle of segments (a group of them joined by cycles) passes
+/// through a point marked in isInput and is more than minSize across: a
+/// region the segments enclose has an input point on its boundary and is
+/// not a speck (the crossings of segments meant to meet at one point close
+/// one, possibly through a road's own vertex there).
+bool inputPointOnACycle(const Array<Point>& points, const Array<char>& isInput,
+  const Array<Segment>& segments, double minSize)
 {
-  int vertices = 0;
-  for (const Segment& e : pieces)
-    vertices = std::max({ vertices, e[0] + 1, e[1] + 1 });
-  Array<char> isInput(static_cast<std::size_t>(vertices), 0);
-  for (std::size_t i = 0; i < w.points.size(); ++i)
-    if (!w.isCrossingPoint[i] && vertexOf[i] >= 0 && vertexOf[i] < vertices)
-      isInput[vertexOf[i]] = 1;
-  const CycleComponents cycles = cycleComponents(static_cast<std::size_t>(vertices), pieces);
-  for (std::size_t e = 0; e < pieces.size(); ++e)
-    if (cycles.component[e] >= 0 && (isInput[pieces[e][0]] || isInput[pieces[e][1]]))
+  const CycleComponents cycles = cycleComponents(points.size(), segments);
+  const Array<Bounds> boxes = cycleBounds(points, segments, cycles);
+  for (std::size_t e = 0; e < segments.size(); ++e)
+    if (const int c = cycles.component[e]; c >= 0 &&
+        (isInput[segments[e][0]] || isInput[segments[e][1]]) &&
+        std::max(boxes[c].width(), boxes[c].height()) > minSize)
       return true;
   return false;
+}
+
+/// Per vertex of a round's mesh (n of them): whether it is an input point,
+/// not a crossing; vertexOf maps w's points to them.
+Array<char> inputVertices(const Work& w, const Array<int>& vertexOf, std::size_t n)
+{
+  Array<char> isInput(n, 0);
+  for (std::size_t i = 0; i < w.points.size(); ++i)
+    if (!w.isCrossingPoint[i] && vertexOf[i] >= 0)
+      isInput[vertexOf[i]] = 1;
+  return isInput;
+}
+
+/// x to two digits, for sizes that are only a rule of thumb.
+std::string roughNumber(double x)
+{
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2g", x);
+  return text;
+}
+
+/// Below this size across, a group of cycles is taken for a speck of
+/// crossings (inputPointOnACycle): a few merge tolerances, or 2^-26 (about
+/// 1.5e-8) of the input's extent, half of double precision's digits.
+double speckSize(const Work& w, double scaledTolerance)
+{
+  const Bounds b = boundsOf(w.points);
+  return std::max(4 * scaledTolerance, std::ldexp(std::max(b.width(), b.height()), -26));
 }
 
 /// Auto means the enclosed regions if the segments enclose any (decided on
@@ -779,6 +842,18 @@ Domain Mesher::chooseDomain(const Work& w, Array<int>& hull)
 {
   hull.clear();
   Domain domain = options.domain;
+  // After a crossing round whose walk found no input point on a segment
+  // (which only the walk splits at), the segments here have the cycles of
+  // the pieces: judge them now rather than mesh the regions first.
+  if (domain == Domain::Auto && crossingRounds > 0 && !inputPointsOnSegments && !enclosesNothing &&
+    !enclosesOnlyCrossings)
+  {
+    Array<char> isInput(w.points.size());
+    for (std::size_t i = 0; i < w.points.size(); ++i)
+      isInput[i] = !w.isCrossingPoint[i];
+    enclosesOnlyCrossings = segmentsEncloseRegion(w.points.size(), w.segments) &&
+      !inputPointOnACycle(w.points, isInput, w.segments, speckSize(w, scaledTolerance()));
+  }
   if (domain == Domain::Auto)
     domain = !enclosesNothing && !enclosesOnlyCrossings &&
         segmentsEncloseRegion(w.points.size(), w.segments)
@@ -803,7 +878,6 @@ void Mesher::meshRounds(Work& w)
   // Crossing points are rounded, so splitting may expose new tiny crossings:
   // repeat a few times, then give up with a clear error. Other rounds (the
   // hull instead, the size bound elsewhere) do not count towards that.
-  int crossingRounds = 0;
   for (int round = 0;; ++round)
   {
     const std::size_t warningsBefore = res.warnings.size();
@@ -877,13 +951,13 @@ void Mesher::meshRounds(Work& w)
         firstCrossing =
           describeCrossing(w, walk.segmentCrossings.front(), exponent, options.pointFormat);
       splitCrossings(w, walk.segmentCrossings, st);
-      SeedsBeside seeds;
-      const std::size_t joined =
-        mergeEqualPoints(w, std::ldexp(options.mergeTolerance, -exponent), seeds);
+      inputPointsOnSegments = walk.splitsAtInputVertices > 0;
+      SeedsAcross seeds;
+      const std::size_t joined = mergeEqualPoints(w, scaledTolerance(), seeds);
       if (options.mergeTolerance > 0)
         crossingsJoined += joined;
-      if (seeds.count > 0 && seedsBesideJoins.count == 0)
-        seedsBesideJoins = seeds;
+      if (seeds.count > 0 && seedsAcrossJoins.count == 0)
+        seedsAcrossJoins = seeds;
       continue;
     }
     // Say why the domain changed, once.
@@ -895,22 +969,23 @@ void Mesher::meshRounds(Work& w)
       res.warnings.push_back("the segments form cycles, but they enclose no area (collinear "
                              "segments over each other): the auto domain meshes the convex hull");
     if (enclosesOnlyCrossings)
-      res.warnings.push_back(
-        "the segments enclose regions only between their crossings, with no input point on "
-        "their boundaries (segments meant to meet at one point may cross apart: a merge "
-        "tolerance joins their crossings): the auto domain meshes the convex hull; the enclosed "
-        "domain meshes those regions alone");
+      res.warnings.push_back("the regions the segments enclose have no input point on their "
+                             "boundaries, or are specks under " +
+        roughNumber(std::ldexp(speckSize(w, scaledTolerance()), exponent)) +
+        " across (as where segments meant to meet at one point cross apart, which a merge "
+        "tolerance joins): the auto domain meshes the convex hull; the enclosed domain meshes "
+        "those regions alone");
     if (st.crossingsSplit > 0)
       res.warnings.push_back("split " + std::to_string(st.crossingsSplit) +
         " crossing(s) of input segments at their intersection points, e.g. " + firstCrossing +
         (crossingsJoined > 0 ? "; " + std::to_string(crossingsJoined) +
               " of those points joined another within the merge tolerance"
                              : ""));
-    if (seedsBesideJoins.count > 0)
-      res.warnings.push_back(std::to_string(seedsBesideJoins.count) +
-        " hole or region seed(s) lie within the merge tolerance of a segment bent where its "
-        "crossing joined another point, and may now lie on its other side: e.g. " +
-        seedsBesideJoins.example);
+    if (seedsAcrossJoins.count > 0)
+      res.warnings.push_back(std::to_string(seedsAcrossJoins.count) +
+        " hole or region seed(s) now lie on the other side of a segment that bent where its "
+        "crossing joined another point within the merge tolerance, e.g. " +
+        seedsAcrossJoins.example);
     st.segmentsSplitAtVertices = walk.splitsAtInputVertices + walk.duplicatePieces;
     st.overlayVertices = overlay.mesh.points.size();
     st.overlaySteinerPoints = overlay.steinerPoints + 4;
@@ -959,7 +1034,8 @@ void Mesher::meshRounds(Work& w)
     // was meant: the crossings of segments meant to meet at one point close
     // a tiny one. Without crossings, every boundary has input points.
     if (options.domain == Domain::Auto && domain == Domain::Enclosed && st.crossingsSplit > 0 &&
-      !inputPointOnACycle(w, overlay.inputVertex, c.constrainedEdges))
+      !inputPointOnACycle(g.points, inputVertices(w, overlay.inputVertex, g.points.size()),
+        c.constrainedEdges, speckSize(w, scaledTolerance())))
     {
       res.warnings.resize(warningsBefore);
       enclosesOnlyCrossings = true;

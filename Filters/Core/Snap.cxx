@@ -198,32 +198,4 @@ std::size_t snapPointsOntoSegments(const Array<Point>& points, Array<OriginSegme
   return snaps.size();
 }
 
-SeedsBeside seedsBesideBends(const Array<Point>& holes, const Array<Point>& regionSeeds,
-  const Array<Point>& points, const Array<OriginSegment>& bent, double tol)
-{
-  SeedsBeside found;
-  auto beside = [&](const Point& q) {
-    for (const auto& [s, origin] : bent)
-    {
-      const SegmentFrame frame(points[s[0]], points[s[1]]);
-      const double along = frame.along(q);
-      if (along >= -tol && along <= frame.length + tol && std::fabs(frame.off(q)) <= tol)
-        return origin;
-    }
-    return -1;
-  };
-  auto check = [&](const Point& q, const char* kind, std::size_t k) {
-    if (const int s = beside(q); s >= 0 && found.count++ == 0)
-      found.example = std::string(kind) + " " + std::to_string(k) +
-        " lies within the merge tolerance of segment " + std::to_string(s);
-  };
-  if (bent.empty())
-    return found;
-  for (std::size_t h = 0; h < holes.size(); ++h)
-    check(holes[h], "hole", h);
-  for (std::size_t r = 0; r < regionSeeds.size(); ++r)
-    check(regionSeeds[r], "region", r);
-  return found;
-}
-
 } // namespace osm

@@ -9,7 +9,6 @@
 
 #include <cmath>
 #include <cstddef>
-#include <string>
 #include <utility>
 
 namespace osm
@@ -55,22 +54,6 @@ struct SegmentFrame
 /// they were.
 std::size_t snapPointsOntoSegments(const Array<Point>& points, Array<OriginSegment>& segments,
   double tol, SnapExample& example, Array<OriginSegment>* split = nullptr);
-
-/// Hole and region seeds within tol of a segment that bent by up to tol may
-/// now lie on its other side, their region and its neighbour's swapped: the
-/// mesh shows no trace of it, so a warning must. count of them; example
-/// names one ("hole 2 lies within the merge tolerance of segment 5", with
-/// the segment's origin), if there is one.
-struct SeedsBeside
-{
-  std::size_t count = 0;
-  std::string example;
-};
-
-/// The seeds within tol of bent (as they were, on points): by brute force
-/// over seeds and segments, which are both few.
-SeedsBeside seedsBesideBends(const Array<Point>& holes, const Array<Point>& regionSeeds,
-  const Array<Point>& points, const Array<OriginSegment>& bent, double tol);
 
 } // namespace osm
 

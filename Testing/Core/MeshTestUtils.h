@@ -14,6 +14,18 @@
 namespace osm
 {
 
+/// The area a mesh covers (its triangles' signed areas summed).
+inline double area(const TriMesh& m)
+{
+  double a = 0;
+  for (const Triangle& t : m.triangles)
+  {
+    const Point &p = m.vertices[t[0]], &q = m.vertices[t[1]], &r = m.vertices[t[2]];
+    a += 0.5 * ((q.x - p.x) * (r.y - p.y) - (q.y - p.y) * (r.x - p.x));
+  }
+  return a;
+}
+
 /// Mesh and validate; every failure names the case. Returns the result.
 inline Result meshAndValidate(
   const Pslg& input, const std::string& name, Options options = {}, ValidationOptions vo = {})
