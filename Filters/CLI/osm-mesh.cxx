@@ -75,8 +75,9 @@ INPUT                  Triangle .poly (holes honoured) or .node file, or
                        or .node (Triangle: FILE.node, .ele and .edge side by
                        side, 1-based)
   --domain MODE        auto (default: enclosed if segments enclose a region
-                       with an input point on its boundary, more than a
-                       speck across, else hull), enclosed, hull or box
+                       with an input point on its boundary, else hull;
+                       where they cross, specks do not count), enclosed,
+                       hull or box
   --min-angle DEG      theta1, the overlay's smallest angle: 1 to 35 (default 30;
                        above 30 no guarantee: the mesh grows fast, and from
                        about 32.5 the refinement may not end)

@@ -523,9 +523,9 @@ private:
   SeedsAcross seedsAcrossJoins;    ///< seeds that segments those joins bent crossed
   /// The auto domain found cycles of segments that enclose no area: hull.
   bool enclosesNothing = false;
-  /// No input point is on the boundary of the auto domain's enclosed
-  /// regions, only crossings (segments meant to meet at one point crossing
-  /// apart): hull.
+  /// No region the auto domain would enclose has an input point on its
+  /// boundary and is more than a speck across (inputPointOnACycle), as where
+  /// segments meant to meet at one point cross apart: hull.
   bool enclosesOnlyCrossings = false;
   int crossingRounds = 0;            ///< rounds that split crossings so far
   bool inputPointsOnSegments = true; ///< the last such round's walk met some
@@ -1030,9 +1030,10 @@ void Mesher::meshRounds(Work& w)
       enclosesNothing = true;
       continue;
     }
-    // Nor need regions whose boundaries pass through no input point be what
-    // was meant: the crossings of segments meant to meet at one point close
-    // a tiny one. Without crossings, every boundary has input points.
+    // Nor need regions whose boundaries pass through no input point, or
+    // specks, be what was meant: the crossings of segments meant to meet at
+    // one point close one. Without crossings, as before: every boundary has
+    // input points, and specks are the input's own.
     if (options.domain == Domain::Auto && domain == Domain::Enclosed && st.crossingsSplit > 0 &&
       !inputPointOnACycle(g.points, inputVertices(w, overlay.inputVertex, g.points.size()),
         c.constrainedEdges, speckSize(w, scaledTolerance())))

@@ -16,7 +16,7 @@ namespace osm
 /// What part of the plane the returned triangles cover.
 enum class Domain
 {
-  Auto,     ///< Enclosed if a region's boundary has input points (and is no speck), else Hull.
+  Auto,     ///< Enclosed if a region's boundary has input points, else Hull (Mesher.cxx).
   Enclosed, ///< Regions enclosed by segments (the exterior removed, like Triangle's -p).
   Hull,     ///< The convex hull of the input points.
   Box       ///< The whole padded bounding box of the overlay.
