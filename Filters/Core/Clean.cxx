@@ -34,6 +34,13 @@ std::string formatNumber(double x)
   return buf;
 }
 
+std::string roughNumber(double x)
+{
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2g", x);
+  return buf;
+}
+
 namespace
 {
 

@@ -39,6 +39,9 @@ std::string formatPoint(const Point& p);
 /// exactly ("30", "12.5", "1e-10", "0.33333333333333331").
 std::string formatNumber(double x);
 
+/// x to two significant digits, for sizes that are only a rule of thumb.
+std::string roughNumber(double x);
+
 /// The point written by format, or by formatPoint when format is empty.
 inline std::string formatPoint(const Point& p, const PointFormat& format)
 {

@@ -1,12 +1,12 @@
 #include "Complete.h"
 
+#include "Clean.h"
 #include "HugePages.h"
 #include "Predicates.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <string>
 #include <utility>
@@ -337,14 +337,11 @@ Stop untriangulable(const Array<Point>& points, const Array<Point>& polygon)
   const std::string face =
     "a face of the stitched mesh with " + std::to_string(polygon.size()) + " sides";
   if (across <= kResolvedUlps * std::numeric_limits<double>::epsilon() * scale)
-  {
-    char size[32];
-    std::snprintf(size, sizeof size, "%.2g", across / scale);
     return Stop{ "input points are closer together than double precision resolves at the "
                  "input's scale (" +
-        face + ", " + size + " of the mesh's extent across, could not be triangulated)",
+        face + ", " + roughNumber(across / scale) +
+        " of the mesh's extent across, could not be triangulated)",
       true, polygon[0], { -1, -1 }, true };
-  }
   return Stop{ "internal error: " + face + " could not be triangulated", true, polygon[0] };
 }
 

@@ -406,8 +406,15 @@ bool inTriangle(const Point& a, const Point& b, const Point& c, const Point& q)
 SeedsAcross seedsAcrossJoins(const Work& w, const CleanPslg& c)
 {
   SeedsAcross found;
+  if (w.holes.empty() && w.regionSeeds.empty())
+    return found;
+  const auto moved = [&](int v) { return !(c.points[c.pointOf[v]] == w.points[v]); };
+  Array<int> bent; // the segments with an end that moved: few
+  for (std::size_t s = 0; s < w.segments.size(); ++s)
+    if (moved(w.segments[s][0]) || moved(w.segments[s][1]))
+      bent.push_back(static_cast<int>(s));
   auto check = [&](const Point& q, const char* kind, std::size_t k) {
-    for (std::size_t s = 0; s < w.segments.size(); ++s)
+    for (int s : bent)
     {
       const Segment& e = w.segments[s];
       const Point &a = w.points[e[0]], &b = w.points[e[1]];
@@ -817,14 +824,6 @@ Array<char> inputVertices(const Work& w, const Array<int>& vertexOf, std::size_t
   return isInput;
 }
 
-/// x to two digits, for sizes that are only a rule of thumb.
-std::string roughNumber(double x)
-{
-  char text[32];
-  std::snprintf(text, sizeof text, "%.2g", x);
-  return text;
-}
-
 /// Below this size across, a group of cycles is taken for a speck of
 /// crossings (inputPointOnACycle): a few merge tolerances, or 2^-26 (about
 /// 1.5e-8) of the input's extent, half of double precision's digits.
@@ -842,23 +841,23 @@ Domain Mesher::chooseDomain(const Work& w, Array<int>& hull)
 {
   hull.clear();
   Domain domain = options.domain;
-  // After a crossing round whose walk found no input point on a segment
-  // (which only the walk splits at), the segments here have the cycles of
-  // the pieces: judge them now rather than mesh the regions first.
-  if (domain == Domain::Auto && crossingRounds > 0 && !inputPointsOnSegments && !enclosesNothing &&
-    !enclosesOnlyCrossings)
-  {
-    Array<char> isInput(w.points.size());
-    for (std::size_t i = 0; i < w.points.size(); ++i)
-      isInput[i] = !w.isCrossingPoint[i];
-    enclosesOnlyCrossings = segmentsEncloseRegion(w.points.size(), w.segments) &&
-      !inputPointOnACycle(w.points, isInput, w.segments, speckSize(w, scaledTolerance()));
-  }
   if (domain == Domain::Auto)
-    domain = !enclosesNothing && !enclosesOnlyCrossings &&
-        segmentsEncloseRegion(w.points.size(), w.segments)
-      ? Domain::Enclosed
-      : Domain::Hull;
+  {
+    const bool encloses = !enclosesNothing && !enclosesOnlyCrossings &&
+      segmentsEncloseRegion(w.points.size(), w.segments);
+    // After a crossing round whose walk found no input point on a segment
+    // (which only the walk splits at), the segments here have the cycles of
+    // the pieces: judge them now rather than mesh the regions first.
+    if (encloses && crossingRounds > 0 && !inputPointsOnSegments)
+    {
+      Array<char> isInput(w.points.size());
+      for (std::size_t i = 0; i < w.points.size(); ++i)
+        isInput[i] = !w.isCrossingPoint[i];
+      enclosesOnlyCrossings =
+        !inputPointOnACycle(w.points, isInput, w.segments, speckSize(w, scaledTolerance()));
+    }
+    domain = encloses && !enclosesOnlyCrossings ? Domain::Enclosed : Domain::Hull;
+  }
   if (domain == Domain::Hull)
   {
     hull = hullBoundary(w.points);
