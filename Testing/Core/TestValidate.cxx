@@ -312,12 +312,14 @@ TEST(Validate, SegmentChainThroughRoundedOrInputPointPasses)
 TEST(Validate, SegmentChainWithinTheChainOffsetPasses)
 {
   // Where a merge tolerance joined crossings, a chain may bend through a
-  // vertex as far off its segment's line as the offset allowed, and no more.
+  // vertex as far off its segment's line as the offset allowed, and no more,
+  // where another segment passes (here segment 1, x = 1, through vertex 2).
   ValidationOptions joined;
   joined.chainOffset = 0.1;
-  EXPECT_TRUE(check(chainThrough(0.1), kChainTriangles, { { 0, 1 } }, joined).ok);
-  EXPECT_TRUE(check(chainThrough(-0.05), kChainTriangles, { { 0, 1 } }, joined).ok);
-  const auto r = check(chainThrough(0.11), kChainTriangles, { { 0, 1 } }, joined);
+  const Array<Segment> crossed = { { 0, 1 }, { 3, 4 } };
+  EXPECT_TRUE(check(chainThrough(0.1), kChainTriangles, crossed, joined).ok);
+  EXPECT_TRUE(check(chainThrough(-0.05), kChainTriangles, crossed, joined).ok);
+  auto r = check(chainThrough(0.11), kChainTriangles, crossed, joined);
   EXPECT_FALSE(r.ok);
   EXPECT_TRUE(mentions(r, "nearest forward neighbour is 0.11 off the line")) << dump(r);
   // Scaled for exact arithmetic with the coordinates.
@@ -325,9 +327,49 @@ TEST(Validate, SegmentChainWithinTheChainOffsetPasses)
   for (Point& p : tiny)
     p = { p.x * 0x1p-200, p.y * 0x1p-200 };
   joined.chainOffset = 0.1 * 0x1p-200;
-  EXPECT_TRUE(check(tiny, kChainTriangles, { { 0, 1 } }, joined).ok);
+  EXPECT_TRUE(check(tiny, kChainTriangles, crossed, joined).ok);
   joined.chainOffset = 0.09 * 0x1p-200;
-  EXPECT_FALSE(check(tiny, kChainTriangles, { { 0, 1 } }, joined).ok);
+  EXPECT_FALSE(check(tiny, kChainTriangles, crossed, joined).ok);
+}
+
+TEST(Validate, SegmentChainBendingWhereNoOtherSegmentPassesFails)
+{
+  // A bend needs a crossing that was joined there: without segment 1 through
+  // vertex 2, or with it too far away, the chain through vertex 2 is not one
+  // (as after an edge on a segment is flipped).
+  ValidationOptions joined;
+  joined.chainOffset = 0.1;
+  const std::string message =
+    "segment 0 (input points 0, 1) is not a chain of mesh edges: its only chains within 0.1 of "
+    "the line bend where no other input segment passes within 0.2";
+  auto r = check(chainThrough(0.1), kChainTriangles, { { 0, 1 } }, joined);
+  EXPECT_FALSE(r.ok);
+  EXPECT_TRUE(mentions(r, message)) << dump(r);
+  // Segment 1 from (1.21, -1) to (1.21, 1) passes 0.21 from vertex 2; at
+  // (1.19, ...) it passes within 0.2.
+  Array<Point> points = chainThrough(0.1);
+  points.push_back({ 1.21, -1 });
+  points.push_back({ 1.21, 1 });
+  ValidationOptions noPoints = joined;
+  noPoints.requireAllInputVertices = false;
+  r = check(points, kChainTriangles, { { 0, 1 }, { 5, 6 } }, noPoints);
+  EXPECT_TRUE(mentions(r, message)) << dump(r);
+  points[5].x = points[6].x = 1.19;
+  r = check(points, kChainTriangles, { { 0, 1 }, { 5, 6 } }, noPoints);
+  EXPECT_TRUE(r.ok) << dump(r);
+}
+
+TEST(Validate, SegmentWithAPointIndexOutOfRangeIsNamed)
+{
+  for (double offset : { 0.0, 0.1 })
+  {
+    ValidationOptions options;
+    options.chainOffset = offset;
+    const auto r = check(chainThrough(0.1), kChainTriangles, { { 3, 4 }, { 3, 99 } }, options);
+    EXPECT_EQ(r.errorCount, 1u) << dump(r);
+    EXPECT_TRUE(mentions(r, "segment 1 (input points 3, 99) has a point index out of range"))
+      << dump(r);
+  }
 }
 
 TEST(Validate, LargeAngleFails)
