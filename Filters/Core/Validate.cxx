@@ -1012,60 +1012,55 @@ private:
   BoxTree tree_;
 };
 
-/// The mesh vertices within offset of segment AB that mesh edges through such
-/// vertices connect to A: every vertex its chain may pass through.
-std::vector<int> band(const Mesh& m, int A, int B, double offset)
-{
-  const Point &a = m.at(A), &b = m.at(B);
-  std::vector<int> out{ A };
-  std::unordered_set<int> seen{ A };
-  for (std::size_t k = 0; k < out.size(); ++k)
-  {
-    const int u = out[k];
-    for (int i = m.firstCorner[u]; i < m.firstCorner[u + 1]; ++i)
-      for (int w : { m.nextVertex(m.cornersAt[i]), m.prevVertex(m.cornersAt[i]) })
-        if (!seen.count(w) &&
-          distanceToSegment(m.at(w), a, b) <= offset + roundingSlack(a, b, m.at(w)))
-        {
-          seen.insert(w);
-          out.push_back(w);
-        }
-  }
-  return out;
-}
-
-/// Whether segment s (mesh vertices A and B) is a chain that a merge tolerance bent: straight
-/// runs (within the rounding tolerance) between bends, each bend a vertex within offset of s and
-/// within twice that of another input segment, where the crossing of the two was joined to a
-/// point near both (a round of crossings later may add a bend at a crossing of two bent
-/// pieces: twice). Without the second condition any vertex near the line could complete a
-/// chain: a mesh whose edge on a segment was flipped would pass.
+/// Whether segment s (mesh vertices A and B) is a chain that a merge tolerance bent: every
+/// vertex within offset of s and further along it than the one before, and the chain straight
+/// (within the rounding allowance) except at bends, each bend a vertex within twice offset of
+/// another input segment, where the crossing of the two was joined to a point near both (a
+/// later round's crossing of two bent pieces may lie twice as far). Without that condition any
+/// vertex near the line could complete a chain: a mesh whose edge on a segment was flipped
+/// would pass. Depth first over (vertex, next vertex) steps, each taken once: linear in the
+/// mesh edges near the segment, however many of their vertices may be bends.
 bool bentChainExists(
   const Mesh& m, int A, int B, double offset, const SegmentIndex& others, std::size_t s)
 {
   const Point &a = m.at(A), &b = m.at(B);
-  const auto along = [&](int v) {
-    return (m.at(v).x - a.x) * (b.x - a.x) + (m.at(v).y - a.y) * (b.y - a.y);
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  std::unordered_map<int, bool> bends;
+  const auto bendsAt = [&](int v) {
+    const auto [it, fresh] = bends.try_emplace(v, false);
+    if (fresh)
+      it->second = others.nearOther(m.at(v), s);
+    return it->second;
   };
-  std::vector<std::pair<double, int>> bends;
-  for (int v : band(m, A, B, offset))
-    if (v == B || (v != A && others.nearOther(m.at(v), s)))
-      bends.push_back({ along(v), v });
-  std::sort(bends.begin(), bends.end());
-  std::vector<int> todo{ A };
-  std::unordered_set<int> reached{ A };
+  // Whether the chain p, u, w goes straight on at u.
+  const auto straight = [&](int p, int u, int w) {
+    const Point &pp = m.at(p), &pu = m.at(u), &pw = m.at(w);
+    const double ex = pw.x - pp.x, ey = pw.y - pp.y;
+    const double off = std::fabs(ex * (pu.y - pp.y) - ey * (pu.x - pp.x)) / std::hypot(ex, ey);
+    return off <= 2 * roundingSlack(a, b, pu);
+  };
+  std::vector<std::pair<int, int>> todo{ { -1, A } }; // (previous vertex, vertex)
+  std::unordered_set<std::uint64_t> taken;
   while (!todo.empty())
   {
-    const int p = todo.back();
+    const auto [p, u] = todo.back();
     todo.pop_back();
-    const double from = along(p);
-    for (const auto& [at, q] : bends)
-      if (at > from && !reached.count(q) && walkSegment(m, p, q, 0).empty())
+    const bool turns = p < 0 || bendsAt(u);
+    const Point& pu = m.at(u);
+    for (int i = m.firstCorner[u]; i < m.firstCorner[u + 1]; ++i)
+      for (int w : { m.nextVertex(m.cornersAt[i]), m.prevVertex(m.cornersAt[i]) })
       {
-        if (q == B)
+        const Point& pw = m.at(w);
+        const bool forward = (pw.x - pu.x) * dx + (pw.y - pu.y) * dy > 0 &&
+          (w == B || (b.x - pw.x) * dx + (b.y - pw.y) * dy > 0);
+        if (!forward || distanceToSegment(pw, a, b) > offset + roundingSlack(a, b, pw) ||
+          !(turns || straight(p, u, w)))
+          continue;
+        if (w == B)
           return true;
-        reached.insert(q);
-        todo.push_back(q);
+        if (taken.insert(static_cast<std::uint64_t>(u) << 32 | static_cast<std::uint32_t>(w))
+              .second)
+          todo.push_back({ u, w });
       }
   }
   return false;

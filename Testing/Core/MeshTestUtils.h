@@ -45,26 +45,35 @@ inline Result meshAndValidate(
   if (vo.chainOffset == 0 && r.stats.crossingsSplit > 0)
     vo.chainOffset = options.mergeTolerance;
   // Points the domain leaves out (outside every region, in holes) must be
-  // reported by a warning; the rest of the input must be in the mesh.
-  // Each where it was merged to: within the merge tolerance.
-  Pslg present;
-  std::vector<int> index(input.points.size(), -1);
+  // reported by a warning; the rest of the input must be in the mesh, each
+  // where it was merged to: within the merge tolerance. Their segments stay
+  // in the validator's input, which skips them, so that it sees where they
+  // crossed the segments it checks (a chain bends there).
+  Pslg present = input;
+  present.segments.clear();
+  std::size_t leftOut = 0;
+  std::vector<char> used(r.mesh.vertices.size(), 0);
+  for (const Triangle& t : r.mesh.triangles)
+    for (int v : t)
+      used.at(v) = 1;
   for (std::size_t i = 0; i < input.points.size(); ++i)
-    if (r.inputVertex.at(i) >= 0)
+    if (r.inputVertex.at(i) < 0)
+      ++leftOut;
+    else
     {
       const Point& at = r.mesh.vertices.at(r.inputVertex[i]);
       const Point& p = input.points[i];
       EXPECT_TRUE(at == p || std::hypot(at.x - p.x, at.y - p.y) <= options.mergeTolerance)
         << name << ": input point " << i << " moved further than the merge tolerance";
-      index[i] = static_cast<int>(present.points.size());
-      present.points.push_back(at);
+      EXPECT_TRUE(used.at(r.inputVertex[i])) << name << ": input point " << i << " in no triangle";
+      present.points[i] = at;
     }
   for (const Segment& s : input.segments)
-    if (index[s[0]] >= 0 && index[s[1]] >= 0 &&
-      !(present.points[index[s[0]]] == present.points[index[s[1]]]))
-      present.segments.push_back({ index[s[0]], index[s[1]] });
-  if (present.points.size() < input.points.size())
+    if (!(present.points[s[0]] == present.points[s[1]]))
+      present.segments.push_back(s);
+  if (leftOut > 0)
   {
+    vo.requireAllInputVertices = false; // checked above for the points in the mesh
     bool warned = false;
     for (const std::string& w : r.warnings)
       warned = warned || w.find("outside the meshed domain") != std::string::npos;

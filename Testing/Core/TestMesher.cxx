@@ -1877,6 +1877,30 @@ TEST(Domain, AutoWithoutCrossingsIsAsBefore)
   EXPECT_FALSE(mentions(r.warnings, "no input point on their boundaries"));
 }
 
+TEST(Domain, ChainsBendWhereSegmentsTheDomainCutsJoinedTheirCrossing)
+{
+  // Found by a review: segments 2-3 and 6-7 cross 3.5e-9 from edge 4-5 of
+  // the quadrilateral, and their crossing joins it within the tolerance, so
+  // the edge bends there; points 2, 3 and 7 lie outside the enclosed domain.
+  // The test helper dropped their segments from what it validated, and the
+  // validator, seeing no segment near the bend, refused a conforming mesh.
+  Pslg p;
+  p.points = { { -0.14930690596274124, 0.029450075153068855 },
+    { 0.3291637224827515, -0.28365636390264093 }, { 0.60997882045024643, 0.29661438122482608 },
+    { -0.058830275170160817, 0.46057437376400506 }, { 0.64227016153846128, 0.19481426454285175 },
+    { 0.16379953309296855, 0.50792070359856156 }, { 0.14915910738949234, 0.25005002700569923 },
+    { 0.79019432776505649, 0.48071783260447343 } };
+  p.segments = { { 0, 1 }, { 2, 3 }, { 1, 4 }, { 4, 5 }, { 5, 0 }, { 6, 7 } };
+  for (Domain d : { Domain::Enclosed, Domain::Auto, Domain::Hull })
+  {
+    Options o;
+    o.domain = d;
+    o.mergeTolerance = 1e-8;
+    const Result r = meshAndValidate(p, "segments crossing by an edge", o);
+    EXPECT_EQ(r.inputVertex[2] < 0, d != Domain::Hull);
+  }
+}
+
 TEST(Overlay, TinyTrianglesAreStillQualityChecked)
 {
   // Found by fuzzing: a 2e-56 feature; the quality test underflowed, so 179.6°
