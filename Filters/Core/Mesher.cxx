@@ -1289,6 +1289,61 @@ void angleExtremes(const TriMesh& mesh, double& minDeg, double& maxDeg, RunConte
   }
 }
 
+/// Says where the output exceeds the largest-angle bound, which holds for
+/// points placed exactly: at coordinates far larger than a feature (1e-10
+/// apart at 1e3, about a thousand units in the last place), rounding the
+/// stitched points moves a sliver's angles by tenths of a degree (a review
+/// found 170.12 degrees against 169.95 on a pencil of lines shifted there;
+/// 159.19 unshifted). A triangle too large for that is a defect of ours.
+std::string angleBoundWarning(const TriMesh& mesh, double boundDeg, const PointFormat& format)
+{
+  const double deg = 180.0 / series::kPi;
+  std::size_t count = 0;
+  double worst = 0, shortest = 0, magnitude = 0;
+  Point at{};
+  for (const Triangle& t : mesh.triangles)
+  {
+    const Point p[3] = { mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]] };
+    double largest = 0;
+    int corner = 0;
+    for (int i = 0; i < 3; ++i)
+      if (const double a = deg * angleAt(p[(i + 1) % 3], p[i], p[(i + 2) % 3]); a > largest)
+      {
+        largest = a;
+        corner = i;
+      }
+    if (!(largest > boundDeg))
+      continue;
+    ++count;
+    if (largest <= worst)
+      continue;
+    worst = largest;
+    at = p[corner];
+    shortest = std::numeric_limits<double>::infinity();
+    magnitude = 0;
+    for (int i = 0; i < 3; ++i)
+    {
+      const Point &a = p[i], &b = p[(i + 1) % 3];
+      shortest = std::min(shortest, std::hypot(b.x - a.x, b.y - a.y));
+      magnitude = std::max({ magnitude, std::fabs(a.x), std::fabs(a.y) });
+    }
+  }
+  const double ulps = shortest / (std::numeric_limits<double>::epsilon() * magnitude);
+  // Rounding by a few units moves an angle by about units / ulps radians.
+  const bool rounding = (worst - boundDeg) / deg * ulps <= 64;
+  char degrees[64];
+  std::snprintf(degrees, sizeof degrees, "%.2f degrees, up to %.2f", boundDeg, worst);
+  return std::to_string(count) + " triangle(s) exceed the largest-angle bound of " + degrees +
+    " at " + formatPoint(at, format) + ", in a triangle whose shortest side, " +
+    roughNumber(shortest) + ", spans " + roughNumber(ulps) +
+    " units in the last place of its coordinates" +
+    (rounding ? ": there rounding the points placed on segments moves the angles by that much; "
+                "translating the input nearer the origin (subtracting an offset from its "
+                "coordinates) leaves more of double precision to features this small"
+              : ": this is not rounding but a defect of the mesher; please report it with the "
+                "input");
+}
+
 void Mesher::buildOutput(const Work& w, const PlanarGraph& g, Completion& c, Carving& carve,
   const Overlay& overlay, Array<Edge>& edges, Domain domain)
 {
@@ -1387,6 +1442,9 @@ void Mesher::buildOutput(const Work& w, const PlanarGraph& g, Completion& c, Car
   st.outputTriangles = res.mesh.triangles.size();
   run.report(0.6);
   angleExtremes(res.mesh, st.minAngleDeg, st.maxAngleDeg, run);
+  if (st.maxAngleDeg > st.predictedMaxAngleDeg)
+    res.warnings.push_back(
+      angleBoundWarning(res.mesh, st.predictedMaxAngleDeg, options.pointFormat));
   run.report(0.85);
   if (options.keepEdges)
   {

@@ -1901,6 +1901,47 @@ TEST(Domain, ChainsBendWhereSegmentsTheDomainCutsJoinedTheirCrossing)
   }
 }
 
+TEST(Mesher, AnglesThatRoundingPutsAboveTheBoundAreWarnedAbout)
+{
+  // Found by a review: eight lines nearly through one point, missing it by
+  // less than the merge tolerance, at coordinates about 1000. Their stitched
+  // points 1e-9 apart are rounded to a few thousand units in the last place,
+  // which moves a sliver's angle to 170.12 degrees (bound 169.95); nearer
+  // the origin the same lines mesh within 159.2. Whenever the bound is
+  // exceeded a warning must say where, and why.
+  Pslg p;
+  p.points = { { 1000.8920673172124, 370.23808506302493 },
+    { 1000.3961851591109, 370.42137338536173 }, { 1000.7859468975888, 369.97460330985467 },
+    { 1000.5129228254914, 370.76809260506633 }, { 1001.0933817586553, 370.15767271306282 },
+    { 1000.4206257023532, 370.41579943072361 }, { 1000.2335848602115, 370.31554326171596 },
+    { 1001.1166164355593, 370.32752062316672 }, { 1000.934387209449, 370.22421318723747 },
+    { 1000.3516595024748, 370.43574859112715 }, { 1000.4340861210036, 370.31804971300386 },
+    { 1001.0931761800163, 370.32759365604187 }, { 1000.386957117287, 370.18493819543329 },
+    { 1000.9747678182943, 370.47180142246134 }, { 1000.4544378204091, 370.0495565579543 },
+    { 1000.8952115902225, 370.61431467750094 }, { 999.9, 369.9 }, { 1001.1, 369.9 },
+    { 1001.1, 371.1 }, { 999.9, 371.1 } };
+  for (int i = 0; i < 16; i += 2)
+    p.segments.push_back({ i, i + 1 });
+  for (const Point shift : { Point{ 0, 0 }, Point{ -1000, -370 } })
+  {
+    Pslg moved = p;
+    for (Point& q : moved.points)
+      q = { q.x + shift.x, q.y + shift.y };
+    Options o;
+    o.domain = Domain::Hull;
+    o.mergeTolerance = 1e-8;
+    const Result r = mesh(moved, o);
+    ASSERT_TRUE(r.ok) << r.error;
+    const bool above = r.stats.maxAngleDeg > r.stats.predictedMaxAngleDeg;
+    EXPECT_EQ(above, shift.x == 0) << r.stats.maxAngleDeg; // a fact today, not a promise
+    EXPECT_EQ(above, mentions(r.warnings, "exceed the largest-angle bound of 169.95 degrees"));
+    if (above)
+      EXPECT_TRUE(mentions(r.warnings,
+        "units in the last place of its coordinates: there rounding the points placed on "
+        "segments moves the angles by that much; translating the input nearer the origin"));
+  }
+}
+
 TEST(Overlay, TinyTrianglesAreStillQualityChecked)
 {
   // Found by fuzzing: a 2e-56 feature; the quality test underflowed, so 179.6°
