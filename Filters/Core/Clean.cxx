@@ -83,7 +83,7 @@ Array<int> exactRepresentatives(const Array<Point>& pts)
 /// around it. Cells are also at least 2^-60 of the extent wide, counted from
 /// its corner: a cell index of x / tol overflowed 64 bits (1e6 at 1e-13),
 /// and the wrapped keys made the search quadratic.
-Array<int> nearRepresentatives(const Array<Point>& pts, double tol)
+Array<int> nearRepresentatives(const Array<Point>& pts, double tol, const JoinFilter& mayJoin)
 {
   using Cell = std::pair<std::int64_t, std::int64_t>;
   struct CellHash
@@ -115,7 +115,7 @@ Array<int> nearRepresentatives(const Array<Point>& pts, double tol)
         if (it == grid.end())
           continue;
         for (int j : it->second)
-          if (dist2(pts[i], pts[j]) <= tol * tol)
+          if (dist2(pts[i], pts[j]) <= tol * tol && (!mayJoin || mayJoin(static_cast<int>(i), j)))
           {
             found = j;
             break;
@@ -130,11 +130,12 @@ Array<int> nearRepresentatives(const Array<Point>& pts, double tol)
 
 /// Merge equal (or, with a tolerance, close) points into their representative.
 void mergeDuplicates(const Pslg& in, CleanPslg& out, Statistics& stats,
-  std::vector<std::string>& warnings, double tol, const PointFormat& format)
+  std::vector<std::string>& warnings, double tol, const PointFormat& format,
+  const JoinFilter& mayJoin)
 {
   const std::size_t n = in.points.size();
   const Array<int> representative =
-    tol > 0 ? nearRepresentatives(in.points, tol) : exactRepresentatives(in.points);
+    tol > 0 ? nearRepresentatives(in.points, tol, mayJoin) : exactRepresentatives(in.points);
   int example = -1;
   for (std::size_t i = 0; i < n; ++i)
     if (representative[i] != static_cast<int>(i))
@@ -284,7 +285,8 @@ std::string mapSegments(const Pslg& in, CleanPslg& out, Statistics& stats,
 } // namespace
 
 std::string cleanPslg(const Pslg& in, CleanPslg& out, Statistics& stats,
-  std::vector<std::string>& warnings, double mergeTolerance, const PointFormat& format, bool snap)
+  std::vector<std::string>& warnings, double mergeTolerance, const PointFormat& format, bool snap,
+  const JoinFilter& mayJoin)
 {
   out = CleanPslg{};
   if (std::string e = checkFinite(in.points, "point"); !e.empty())
@@ -300,7 +302,7 @@ std::string cleanPslg(const Pslg& in, CleanPslg& out, Statistics& stats,
     if (!std::isfinite(region.attribute))
       return "region " + std::to_string(r) + " has a non-finite attribute";
   }
-  mergeDuplicates(in, out, stats, warnings, mergeTolerance, format);
+  mergeDuplicates(in, out, stats, warnings, mergeTolerance, format, mayJoin);
   return mapSegments(in, out, stats, warnings, mergeTolerance, format, snap);
 }
 

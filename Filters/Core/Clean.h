@@ -9,6 +9,7 @@
 #include "Pslg.h"
 #include "Statistics.h"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -23,14 +24,19 @@ struct CleanPslg
   Array<int> pointOf;       ///< per input point: its index in points
 };
 
+/// Whether point i may join point j within the merge tolerance (all may
+/// when empty).
+using JoinFilter = std::function<bool(int i, int j)>;
+
 /// Check and clean the input. Returns an empty string, or an error naming the
 /// offending item (a non-finite coordinate, an index out of range).
 /// Points within mergeTolerance of an earlier point are merged into it, and
 /// (with snap) segments split at the points within mergeTolerance of them
-/// (Snap.h).
+/// (Snap.h). A point joins the first earlier one within mergeTolerance that
+/// mayJoin allows.
 std::string cleanPslg(const Pslg& in, CleanPslg& out, Statistics& stats,
   std::vector<std::string>& warnings, double mergeTolerance = 0.0, const PointFormat& format = {},
-  bool snap = true);
+  bool snap = true, const JoinFilter& mayJoin = {});
 
 /// "(x, y)" with enough digits to tell nearby points apart.
 std::string formatPoint(const Point& p);

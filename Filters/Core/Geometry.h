@@ -35,6 +35,14 @@ inline double dist2(const Point& a, const Point& b)
   return dx * dx + dy * dy;
 }
 
+/// Distance from p to the closed segment ab.
+inline double distanceToSegment(const Point& p, const Point& a, const Point& b)
+{
+  const double dx = b.x - a.x, dy = b.y - a.y, l2 = dx * dx + dy * dy;
+  const double t = l2 > 0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / l2, 0.0, 1.0) : 0.0;
+  return std::hypot(p.x - (a.x + t * dx), p.y - (a.y + t * dy));
+}
+
 /// Angle at b in triangle (a, b, c), in radians, robust for tiny and near-flat
 /// angles; the edge vectors are rescaled first so that products cannot overflow
 /// (coordinates up to the double range) or underflow.

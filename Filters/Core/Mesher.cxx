@@ -15,11 +15,13 @@
 #include "Stitch.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
+#include <memory>
 #include <new>
 #include <string>
 
@@ -77,6 +79,9 @@ struct Work
   Array<char> isCrossingPoint;
   Array<Segment> segments;
   Array<int> segmentOrigin; ///< the user's segment index, -1 for hull edges
+  /// Per segment: the ends of the piece of the input (after snapping) it is
+  /// part of, which a join may move it off by at most the merge tolerance.
+  Array<std::array<Point, 2>> piece;
   Array<Point> holes;
   Array<Point> regionSeeds;
 };
@@ -376,11 +381,13 @@ void splitCrossings(Work& w, const Array<SegmentCrossing>& crossings, Statistics
       {
         w.segments.push_back({ prev, v });
         w.segmentOrigin.push_back(w.segmentOrigin[s]);
+        w.piece.push_back(w.piece[s]);
       }
       prev = v;
     }
     w.segments.push_back({ prev, last });
     w.segmentOrigin.push_back(w.segmentOrigin[s]);
+    w.piece.push_back(w.piece[s]);
   }
 }
 
@@ -435,6 +442,33 @@ SeedsAcross seedsAcrossJoins(const Work& w, const CleanPslg& c)
   return found;
 }
 
+/// Which joins keep every segment within tol of its piece of the input: a
+/// point may join another only if that lies within tol (and rounding) of the
+/// pieces of all the segments through it. Without this a crossing of two
+/// segments that an earlier round bent, itself up to tol off their pieces,
+/// joined a point up to tol further (a review: pencils of lines at 1e-4,
+/// chains up to 1.5 times the tolerance off their segments).
+JoinFilter withinTheirPieces(const Work& w, double tol)
+{
+  if (!(tol > 0))
+    return {};
+  auto through = std::make_shared<Array<Array<int>>>(w.points.size());
+  for (std::size_t s = 0; s < w.segments.size(); ++s)
+    for (int v : w.segments[s])
+      (*through)[v].push_back(static_cast<int>(s));
+  // Coordinates are scaled into [-1, 1): rounding is below 64 units there.
+  const double reach = tol + 64 * std::numeric_limits<double>::epsilon();
+  return [&w, through, reach](int i, int j) {
+    for (int s : (*through)[i])
+    {
+      const auto& [a, b] = w.piece[s];
+      if (!(distanceToSegment(w.points[j], a, b) <= reach))
+        return false;
+    }
+    return true;
+  };
+}
+
 /// Crossing points can coincide after rounding: merge them, drop what
 /// degenerates. With a merge tolerance (tol, scaled), the crossings within it
 /// of a point join it (the crossings of segments meant to meet at one point,
@@ -453,7 +487,7 @@ std::size_t mergeEqualPoints(Work& w, double tol, SeedsAcross& seeds)
   CleanPslg c;
   Statistics ignored;
   std::vector<std::string> ignoredWarnings;
-  cleanPslg(p, c, ignored, ignoredWarnings, tol, {}, false);
+  cleanPslg(p, c, ignored, ignoredWarnings, tol, {}, false, withinTheirPieces(w, tol));
   if (tol > 0 && c.points.size() < w.points.size())
     seeds = seedsAcrossJoins(w, c);
   // A point is the split's own only if every point merged into it is.
@@ -461,13 +495,18 @@ std::size_t mergeEqualPoints(Work& w, double tol, SeedsAcross& seeds)
   for (std::size_t i = 0; i < w.points.size(); ++i)
     crossing[c.pointOf[i]] &= w.isCrossingPoint[i];
   Array<int> origin;
+  Array<std::array<Point, 2>> piece;
   for (int o : c.segmentOrigin)
+  {
     origin.push_back(w.segmentOrigin[o]);
+    piece.push_back(w.piece[o]);
+  }
   const std::size_t joined = w.points.size() - c.points.size();
   w.points = std::move(c.points);
   w.isCrossingPoint = std::move(crossing);
   w.segments = std::move(c.segments);
   w.segmentOrigin = std::move(origin);
+  w.piece = std::move(piece);
   return joined;
 }
 
@@ -587,6 +626,8 @@ Result Mesher::execute()
     w.regionSeeds.push_back(region.seed);
   if (std::string e = normalise(w, input, clean.pointOf, options.pointFormat, exponent); !e.empty())
     throw Stop{ e };
+  for (const Segment& s : w.segments)
+    w.piece.push_back({ w.points[s[0]], w.points[s[1]] });
   st.secondsClean = since(t0);
   if (w.points.empty())
   {

@@ -37,8 +37,10 @@ struct Options
   /// Points closer than this (absolute distance) are merged into the first of
   /// them, and segments split at the points closer than this to them (they
   /// bend by at most this much; Snap.h). Crossings split in the rounds join
-  /// a point or crossing closer than this, so a segment bends through it by
-  /// less than this too. 0 merges only exact duplicates.
+  /// a point or crossing closer than this, if it lies within this of the
+  /// pieces of the input through the crossing: a segment bends through it by
+  /// at most this much too, however many rounds its pieces cross again in.
+  /// 0 merges only exact duplicates.
   double mergeTolerance = 0.0;
   /// Stop with an error when more Steiner points than this would be needed (0: no cap).
   std::size_t maxSteinerPoints = 0;

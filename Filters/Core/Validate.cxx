@@ -955,8 +955,8 @@ std::string walkSegment(const Mesh& m, int A, int B, double offset)
         : "");
 }
 
-/// Distance from p to the closed segment ab.
-double distanceToSegment(const Point& p, const Point& a, const Point& b)
+/// Distance from p to the closed segment ab (the validator's own, as all but the predicates).
+double segmentDistance(const Point& p, const Point& a, const Point& b)
 {
   const double dx = b.x - a.x, dy = b.y - a.y, l2 = dx * dx + dy * dy;
   const double t = l2 > 0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / l2, 0.0, 1.0) : 0.0;
@@ -981,7 +981,7 @@ public:
     tree_.query({ p.x, p.y, p.x, p.y }, [&](int t) {
       const Point &c = end(t, 0), &d = end(t, 1);
       const bool same = (a == c && b == d) || (a == d && b == c);
-      near = near || (!same && distanceToSegment(p, c, d) <= reach_ + roundingSlack(c, d, p));
+      near = near || (!same && segmentDistance(p, c, d) <= reach_ + roundingSlack(c, d, p));
     });
     return near;
   }
@@ -1053,7 +1053,7 @@ bool bentChainExists(
         const Point& pw = m.at(w);
         const bool forward = (pw.x - pu.x) * dx + (pw.y - pu.y) * dy > 0 &&
           (w == B || (b.x - pw.x) * dx + (b.y - pw.y) * dy > 0);
-        if (!forward || distanceToSegment(pw, a, b) > offset + roundingSlack(a, b, pw) ||
+        if (!forward || segmentDistance(pw, a, b) > offset + roundingSlack(a, b, pw) ||
           !(turns || straight(p, u, w)))
           continue;
         if (w == B)

@@ -1641,6 +1641,33 @@ TEST(Mesher, RefusesCoordinatesNearTheDoubleLimit)
   EXPECT_NE(r.error.find("too large"), std::string::npos) << r.error;
 }
 
+TEST(Stitch, SegmentsThatCrossAgainAfterAJoinStayWithinTheTolerance)
+{
+  // Found by a review: eight lines nearly through one point, a merge
+  // tolerance of 1e-4. Joins bent two of them, which then crossed again,
+  // and that crossing joined a point up to 1e-4 further: segment 7's chain
+  // passed 1.5e-4 off its line. A point may now join another only within the
+  // tolerance of the input pieces of the segments through it.
+  Pslg p;
+  p.points = { { 0.83096443391044539, 0.4203017165178291 },
+    { 0.017291865947365259, 0.51862391161047972 }, { 0.22992157573224029, 0.14665669310122037 },
+    { 0.53648417044209806, 0.6544412227607681 }, { 0.66654749276242442, 0.09219901729744151 },
+    { 0.16295300972454652, 0.87758677160415433 }, { 0.10952644366222269, 0.32716777124146401 },
+    { 0.63677432043851079, 0.56527711458474328 }, { 0.15662836634794775, 0.36891324249735313 },
+    { 0.89231904229052228, 0.64468703058046339 }, { 0.90188340063228378, 0.44046471367700868 },
+    { 0.17308490371620994, 0.48463012056834059 }, { 0.71212782391516516, 0.11922197284043806 },
+    { 0.24996066094759098, 0.68225550718099326 }, { 0.23805964618426176, 0.23559117887983527 },
+    { 0.57702484206002458, 0.6602409059138955 }, { -0.1, -0.1 }, { 1.1, -0.1 }, { 1.1, 1.1 },
+    { -0.1, 1.1 } };
+  for (int i = 0; i < 16; i += 2)
+    p.segments.push_back({ i, i + 1 });
+  Options o;
+  o.domain = Domain::Hull;
+  o.mergeTolerance = 1e-4;
+  const Result r = meshAndValidate(p, "eight lines nearly through a point", o);
+  EXPECT_GT(r.stats.crossingsSplit, 8u);
+}
+
 TEST(Stitch, CrossingsThatCrossAgainForFiveRoundsAreRefusedWithTheRemedy)
 {
   // Found by a search over pencils of nearly parallel lines missing their
