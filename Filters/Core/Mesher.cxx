@@ -447,7 +447,11 @@ SeedsAcross seedsAcrossJoins(const Work& w, const CleanPslg& c)
 /// pieces of all the segments through it. Without this a crossing of two
 /// segments that an earlier round bent, itself up to tol off their pieces,
 /// joined a point up to tol further (a review: pencils of lines at 1e-4,
-/// chains up to 1.5 times the tolerance off their segments).
+/// chains up to 1.5 times the tolerance off their segments). Weak spots: of
+/// segments that joins made the same, only the first one's piece counts
+/// later; and a refused join can leave crossings that cross again until the
+/// rounds give up (a review: 2 refusals more, 1 less, of 23,400 dense
+/// pencils and junctions; 16 chains beyond the tolerance fewer).
 JoinFilter withinTheirPieces(const Work& w, double tol)
 {
   if (!(tol > 0))
