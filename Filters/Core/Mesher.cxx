@@ -21,7 +21,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
-#include <memory>
 #include <new>
 #include <string>
 
@@ -456,14 +455,14 @@ JoinFilter withinTheirPieces(const Work& w, double tol)
 {
   if (!(tol > 0))
     return {};
-  auto through = std::make_shared<Array<Array<int>>>(w.points.size());
+  Array<Array<int>> through(w.points.size()); // the segments through each point
   for (std::size_t s = 0; s < w.segments.size(); ++s)
     for (int v : w.segments[s])
-      (*through)[v].push_back(static_cast<int>(s));
+      through[v].push_back(static_cast<int>(s));
   // Coordinates are scaled into [-1, 1): rounding is below 64 units there.
   const double reach = tol + 64 * std::numeric_limits<double>::epsilon();
-  return [&w, through, reach](int i, int j) {
-    for (int s : (*through)[i])
+  return [&w, through = std::move(through), reach](int i, int j) {
+    for (int s : through[i])
     {
       const auto& [a, b] = w.piece[s];
       if (!(distanceToSegment(w.points[j], a, b) <= reach))

@@ -48,7 +48,9 @@ inline Result meshAndValidate(
   // reported by a warning; the rest of the input must be in the mesh, each
   // where it was merged to: within the merge tolerance. Their segments stay
   // in the validator's input, which skips them, so that it sees where they
-  // crossed the segments it checks (a chain bends there).
+  // crossed the segments it checks (a chain bends there). A left-out point
+  // within the merge tolerance of a segment still splits it for the
+  // validator, which then skips the pieces it ends: weaker there.
   Pslg present = input;
   present.segments.clear();
   std::size_t leftOut = 0;
