@@ -8,12 +8,13 @@
 namespace osm
 {
 
-Triangulation delaunayTriangulation(const Array<Point>& points, Array<int>& vertexOf)
+Triangulation delaunayTriangulation(
+  const Array<Point>& points, Array<int>& vertexOf, double padding)
 {
   Triangulation T;
   vertexOf.assign(points.size(), -1);
   const Bounds b = boundsOf(points);
-  const double h = 2.0 * std::max({ b.width(), b.height(), 1e-300 });
+  const double h = padding * std::max({ b.width(), b.height(), 1e-300 });
   const double cx = 0.5 * (b.lo.x + b.hi.x), cy = 0.5 * (b.lo.y + b.hi.y);
   const int c0 = T.addPoint({ cx - h, cy - h }), c1 = T.addPoint({ cx + h, cy - h });
   const int c2 = T.addPoint({ cx + h, cy + h }), c3 = T.addPoint({ cx - h, cy + h });

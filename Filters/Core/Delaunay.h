@@ -13,8 +13,12 @@ namespace osm
 {
 
 /// Delaunay triangulation of distinct finite points inside a padded box whose
-/// corners are vertices 0..3; point i becomes vertex vertexOf[i].
-Triangulation delaunayTriangulation(const Array<Point>& points, Array<int>& vertexOf);
+/// corners are vertices 0..3, `padding` times the points' extent from their
+/// centre; point i becomes vertex vertexOf[i]. The farther the corners, the
+/// nearer the triangles without a corner come to the points' own Delaunay
+/// triangulation, hull edges included.
+Triangulation delaunayTriangulation(
+  const Array<Point>& points, Array<int>& vertexOf, double padding = 2.0);
 
 } // namespace osm
 

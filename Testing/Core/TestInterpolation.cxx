@@ -1,0 +1,217 @@
+// Values at the mesh's vertices from the input points' (Interpolation.h):
+// weights that are convex combinations, input vertices that keep their own
+// value, points on segments that take the value along their segment, and
+// linear fields reproduced everywhere within the known points' hull.
+#include "Clean.h"
+#include "Interpolation.h"
+#include "MeshTestUtils.h"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+using namespace osm;
+
+namespace
+{
+
+double linear(const Point& p)
+{
+  return 2.0 * p.x - 3.0 * p.y + 1.0;
+}
+
+/// Every vertex's terms, by vertex; each vertex must be visited once.
+std::vector<VertexTerms> termsOf(const Pslg& in, const Result& r, const std::string& name)
+{
+  std::vector<VertexTerms> all(r.mesh.vertices.size());
+  std::vector<char> seen(all.size(), 0);
+  EXPECT_TRUE(visitInputWeights(in, r, 0.0, [&](const VertexTerms& t) {
+    EXPECT_LT(t.vertex, all.size()) << name;
+    if (t.vertex < all.size())
+    {
+      EXPECT_FALSE(seen[t.vertex]) << name << ": vertex " << t.vertex << " visited twice";
+      seen[t.vertex] = 1;
+      all[t.vertex] = t;
+    }
+    return true;
+  }));
+  EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), static_cast<long>(all.size())) << name;
+  // Each has terms: distinct input points, weights in (0, 1] summing to 1.
+  for (const VertexTerms& t : all)
+  {
+    EXPECT_GE(t.count, 1) << name << ": vertex " << t.vertex << " has no terms";
+    double sum = 0;
+    for (int k = 0; k < t.count; ++k)
+    {
+      EXPECT_GE(t.point[k], 0) << name;
+      EXPECT_LT(t.point[k], static_cast<int>(in.points.size())) << name;
+      EXPECT_GT(t.weight[k], 0.0) << name;
+      sum += t.weight[k];
+      for (int j = 0; j < k; ++j)
+        EXPECT_NE(t.point[j], t.point[k]) << name << ": vertex " << t.vertex;
+    }
+    EXPECT_NEAR(sum, 1.0, 1e-12) << name << ": vertex " << t.vertex;
+  }
+  return all;
+}
+
+/// Σ w f(input point) over the terms of a vertex.
+template <typename F>
+double valueAt(const VertexTerms& t, const Pslg& in, F f)
+{
+  double sum = 0;
+  for (int k = 0; k < t.count; ++k)
+    sum += t.weight[k] * f(in.points[t.point[k]]);
+  return sum;
+}
+
+/// Random points and random segments in the unit square, free to cross.
+Pslg randomInput(std::mt19937_64& rng, int points, int segments)
+{
+  std::uniform_real_distribution<double> U(0, 1);
+  Pslg p;
+  for (int i = 0; i < points + 2 * segments; ++i)
+    p.points.push_back({ U(rng), U(rng) });
+  for (int s = 0; s < segments; ++s)
+    p.segments.push_back({ points + 2 * s, points + 2 * s + 1 });
+  return p;
+}
+
+} // namespace
+
+TEST(Interpolation, LinearFieldsAreReproducedAtEveryVertex)
+{
+  for (int seed = 0; seed < 30; ++seed)
+    for (Domain domain : { Domain::Hull, Domain::Auto })
+    {
+      std::mt19937_64 rng(seed);
+      const Pslg in = randomInput(rng, 20, 12);
+      const std::string name = "seed " + std::to_string(seed);
+      Options o;
+      o.domain = domain;
+      const Result r = mesh(in, o);
+      ASSERT_TRUE(r.ok) << name << ": " << r.error;
+      const std::vector<VertexTerms> w = termsOf(in, r, name);
+      for (std::size_t v = 0; v < r.mesh.vertices.size(); ++v)
+        ASSERT_NEAR(valueAt(w[v], in, linear), linear(r.mesh.vertices[v]), 1e-12)
+          << name << ": vertex " << v << " at " << formatPoint(r.mesh.vertices[v]);
+    }
+}
+
+TEST(Interpolation, InputVerticesKeepTheirOwnValueAndOthersLieOnTheirSegment)
+{
+  std::mt19937_64 rng(7);
+  Pslg in = randomInput(rng, 10, 15);
+  in.points.push_back(in.points[3]); // a duplicate: merged into point 3
+  Options o;
+  o.domain = Domain::Box; // no hull edges, which are stitched too but no input segment
+  const Result r = mesh(in, o);
+  ASSERT_TRUE(r.ok) << r.error;
+  ASSERT_GT(r.stats.crossingsSplit, 0u);
+  const std::vector<VertexTerms> w = termsOf(in, r, "crossing segments");
+  std::size_t onSegments = 0;
+  for (std::size_t v = 0; v < r.mesh.vertices.size(); ++v)
+  {
+    const VertexOrigin origin = r.vertexOrigin[v];
+    if (origin == VertexOrigin::Input)
+    {
+      ASSERT_GE(w[v].inputPoint, 0);
+      EXPECT_EQ(r.inputVertex[w[v].inputPoint], static_cast<int>(v));
+      ASSERT_EQ(w[v].count, 1);
+      EXPECT_EQ(w[v].point[0], w[v].inputPoint);
+      continue;
+    }
+    EXPECT_EQ(w[v].inputPoint, -1);
+    // Stitch vertices and crossings lie on a segment; their terms are its ends.
+    if (origin == VertexOrigin::Stitch || origin == VertexOrigin::Other)
+    {
+      ++onSegments;
+      ASSERT_GE(w[v].segment, 0) << "vertex " << v;
+      const Segment& s = in.segments[w[v].segment];
+      EXPECT_LT(distanceToSegment(r.mesh.vertices[v], in.points[s[0]], in.points[s[1]]), 1e-12);
+      for (int k = 0; k < w[v].count; ++k)
+        EXPECT_TRUE(w[v].point[k] == s[0] || w[v].point[k] == s[1]) << "vertex " << v;
+    }
+  }
+  EXPECT_GT(onSegments, 0u);
+  EXPECT_EQ(w[r.inputVertex.back()].inputPoint, 3); // the first of the merged pair
+}
+
+TEST(Interpolation, BeyondTheInputTheBoxTakesValuesWithinTheInputs)
+{
+  std::mt19937_64 rng(3);
+  const Pslg in = randomInput(rng, 15, 5);
+  Options o;
+  o.domain = Domain::Box;
+  const Result r = mesh(in, o);
+  ASSERT_TRUE(r.ok) << r.error;
+  const std::vector<VertexTerms> w = termsOf(in, r, "box");
+  const Bounds b = boundsOf(in.points);
+  std::size_t beyond = 0;
+  for (std::size_t v = 0; v < r.mesh.vertices.size(); ++v)
+  {
+    const Point& p = r.mesh.vertices[v];
+    beyond += p.x < b.lo.x || p.x > b.hi.x || p.y < b.lo.y || p.y > b.hi.y;
+    // Within the inputs' bounds, linear fields are reproduced.
+    if (p.x > b.lo.x && p.x < b.hi.x && p.y > b.lo.y && p.y < b.hi.y)
+      continue;
+    const double x = valueAt(w[v], in, [](const Point& q) { return q.x; });
+    EXPECT_GE(x, b.lo.x);
+    EXPECT_LE(x, b.hi.x);
+  }
+  EXPECT_GT(beyond, 0u);
+}
+
+// A field with a kink along a segment, |x - 1/2| in the unit square split by
+// the segment x = 1/2: given at the input points only, it is reproduced
+// where the values on each side come from that side.
+TEST(Interpolation, ValuesAreNotAveragedAcrossASegment)
+{
+  Pslg in;
+  in.points = { { 0, 0 }, { 0.5, 0 }, { 1, 0 }, { 1, 1 }, { 0.5, 1 }, { 0, 1 } };
+  in.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 4 }, { 4, 5 }, { 5, 0 }, { 1, 4 } };
+  auto kink = [](const Point& p) { return std::abs(p.x - 0.5); };
+  double worst = 0;
+  for (double angle : { 30.0, 20.0, 10.0 })
+  {
+    Options o;
+    o.minAngleDeg = angle;
+    const Result r = mesh(in, o);
+    ASSERT_TRUE(r.ok) << r.error;
+    const std::vector<VertexTerms> w = termsOf(in, r, "kink");
+    for (std::size_t v = 0; v < r.mesh.vertices.size(); ++v)
+      worst = std::max(worst, std::abs(valueAt(w[v], in, kink) - kink(r.mesh.vertices[v])));
+  }
+  EXPECT_LT(worst, 1e-12);
+}
+
+// The same kink with random points on both sides: the triangles of the
+// points on segments seldom reach across it.
+TEST(Interpolation, KinksAlongSegmentsAmongRandomPoints)
+{
+  auto kink = [](const Point& p) { return std::abs(p.x - 0.5); };
+  std::size_t vertices = 0, off = 0;
+  double worst = 0;
+  for (int seed = 0; seed < 40; ++seed)
+  {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> U(0, 1);
+    Pslg in;
+    in.points = { { 0, 0 }, { 0.5, 0 }, { 1, 0 }, { 1, 1 }, { 0.5, 1 }, { 0, 1 } };
+    in.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 4 }, { 4, 5 }, { 5, 0 }, { 1, 4 } };
+    for (int i = 0; i < 30; ++i)
+      in.points.push_back({ U(rng), U(rng) });
+    const Result r = mesh(in);
+    ASSERT_TRUE(r.ok) << r.error;
+    const std::vector<VertexTerms> w = termsOf(in, r, "kink " + std::to_string(seed));
+    for (std::size_t v = 0; v < r.mesh.vertices.size(); ++v)
+    {
+      const double e = std::abs(valueAt(w[v], in, kink) - kink(r.mesh.vertices[v]));
+      worst = std::max(worst, e);
+      off += e > 1e-12;
+    }
+    vertices += r.mesh.vertices.size();
+  }
+  std::printf("kink: %zu of %zu vertices off, worst %g\n", off, vertices, worst);
+  EXPECT_LT(worst, 1e-12);
+}
