@@ -12,6 +12,7 @@ Triangulation delaunayTriangulation(
   const Array<Point>& points, Array<int>& vertexOf, double padding)
 {
   Triangulation T;
+  T.reserve(points.size() + 4, 2 * points.size() + 2); // a triangulation's size: no copies
   vertexOf.assign(points.size(), -1);
   const Bounds b = boundsOf(points);
   const double h = padding * std::max({ b.width(), b.height(), 1e-300 });

@@ -240,6 +240,7 @@ void VertexTerms::add(int p, double w)
 bool visitInputWeights(
   const Pslg& input, const Result& result, double tolerance, const TermsVisitor& visit)
 {
+  const pages::Reuse reuse; // the scratch arrays in huge pages, freed ones used again
   const Array<Point>& vertices = result.mesh.vertices;
   const std::size_t n = vertices.size();
   Array<int> inputPoint(n, -1);
