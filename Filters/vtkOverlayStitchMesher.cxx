@@ -33,6 +33,7 @@
 #include "HugePages.h"
 #include "Mesher.h"
 #include "OverlayStitchGather.h"
+#include "OverlayStitchPointData.h"
 #include "Plane.h"
 #include "Pslg.h"
 #include "Statistics.h"
@@ -701,6 +702,7 @@ vtkOverlayStitchMesher::vtkOverlayStitchMesher()
   , UseInputHolePoints(1)
   , ApplyRegionAreas(0)
   , MaximumSteinerPoints(0)
+  , InterpolatePointData(1)
   , GenerateEdges(1)
   , GenerateOverlay(1)
 {
@@ -1023,9 +1025,35 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
     return 1;
   }
   FillMesh(result, map, mesh, [this](double fraction) {
-    this->UpdateProgress(0.9 + 0.05 * fraction);
+    this->UpdateProgress(0.9 + 0.03 * fraction);
     return AbortRequested(this);
   });
+  if (aborted())
+  {
+    return 1;
+  }
+  if (this->InterpolatePointData && input->GetPointData()->GetNumberOfArrays() > 0)
+  {
+    std::vector<vtkIdType> segmentCells;
+    segmentCells.reserve(segmentSources.size());
+    for (const SegmentSource& source : segmentSources)
+    {
+      segmentCells.push_back(source.Cell);
+    }
+    std::vector<std::string> warnings;
+    OverlayStitchInterpolatePointData(
+      input->GetPointData(), input->GetCellData(), pslg, result, segmentCells, this->MergeTolerance,
+      mesh->GetPointData(),
+      [this](double fraction) {
+        this->UpdateProgress(0.93 + 0.02 * fraction);
+        return AbortRequested(this);
+      },
+      warnings);
+    for (const std::string& warning : warnings)
+    {
+      vtkWarningMacro(<< warning);
+    }
+  }
   if (aborted())
   {
     return 1;
@@ -1085,6 +1113,7 @@ void vtkOverlayStitchMesher::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ApplyRegionAreas: " << (this->ApplyRegionAreas ? "On" : "Off") << "\n";
   os << indent << "MaximumSteinerPoints: " << this->MaximumSteinerPoints << "\n";
   os << indent << "GenerateEdges: " << (this->GenerateEdges ? "On" : "Off") << "\n";
+  os << indent << "InterpolatePointData: " << (this->InterpolatePointData ? "On" : "Off") << "\n";
   os << indent << "GenerateOverlay: " << (this->GenerateOverlay ? "On" : "Off") << "\n";
   os << indent << "HolePoints: " << this->GetNumberOfHolePoints() << "\n";
   for (int i = 0; i < this->GetNumberOfHolePoints(); ++i)

@@ -201,6 +201,25 @@ public:
 
   ///@{
   /**
+   * Whether to carry the input's point data to the Mesh's vertices. Default
+   * on. An input vertex keeps its values; a point the mesher puts on a
+   * segment takes the values linear along that segment; any other point
+   * (Steiner points) the values linear in the triangle of those points that
+   * holds it, so that a field linear over the input is reproduced.
+   * Floating-point arrays are interpolated so; other arrays (labels, ids,
+   * strings) take the value of the input point with the largest weight,
+   * except Triangle's vertex markers (a "PointMarker" array with the cells'
+   * "SegmentMarker", as vtkTrianglePolyReader writes them): a new point on a
+   * segment takes the segment's marker, any other new point 0. Costs about a
+   * fifth of the meshing time on large inputs with point data.
+   */
+  vtkSetMacro(InterpolatePointData, vtkTypeBool);
+  vtkGetMacro(InterpolatePointData, vtkTypeBool);
+  vtkBooleanMacro(InterpolatePointData, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
    * Whether to fill output port 1 (Edges). Default on.
    */
   vtkSetMacro(GenerateEdges, vtkTypeBool);
@@ -257,6 +276,7 @@ protected:
   vtkTypeBool UseInputHolePoints;
   vtkTypeBool ApplyRegionAreas;
   vtkIdType MaximumSteinerPoints;
+  vtkTypeBool InterpolatePointData;
   vtkTypeBool GenerateEdges;
   vtkTypeBool GenerateOverlay;
   std::vector<double> HolePoints; // x0, y0, x1, y1, ...

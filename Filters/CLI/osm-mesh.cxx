@@ -61,7 +61,8 @@ const char* const Usage =
   R"(Usage: osm-mesh INPUT [-o OUTPUT] [--domain auto|enclosed|hull|box]
                 [--min-angle DEG | --gamma G] [--max-edge H] [--no-resolve]
                 [--merge-tolerance D] [--max-steiner N] [--project-xy]
-                [--region-areas] [--stats] [--svg FILE] [--help] [--version]
+                [--region-areas] [--no-point-data] [--stats] [--svg FILE]
+                [--help] [--version]
 
 Mesh a Planar Straight Line Graph with Overlay Stitch Meshing: a conforming
 triangulation in which no angle exceeds 180 - theta2 degrees (about 170 at
@@ -97,6 +98,11 @@ INPUT                  Triangle .poly (holes honoured) or .node file, or
   --region-areas       apply the maximum areas of a .poly's region lines to
                        their regions, as Triangle's -a (default: ignored,
                        with a warning)
+  --no-point-data      do not carry the input's point data (a .poly's vertex
+                       attributes and markers) to the mesh (default: input
+                       vertices keep theirs, new points take them linear
+                       along their segment or in the triangle of those around
+                       them; markers as Triangle's: a segment's on it, else 0)
   --stats              print the run statistics as JSON on stdout
   --svg FILE           draw the mesh: input segments bold, discarded overlay
                        edges dashed
@@ -260,6 +266,7 @@ struct Arguments
   bool resolve = true;
   bool projectXY = false;
   bool regionAreas = false;
+  bool pointData = true;
   double mergeTolerance = 0.0;
   long long maxSteiner = 0;
   bool stats = false;
@@ -448,6 +455,11 @@ bool ParseArguments(int argc, char* argv[], Arguments& args)
     {
       noValue();
       args.regionAreas = true;
+    }
+    else if (arg == "--no-point-data")
+    {
+      noValue();
+      args.pointData = false;
     }
     else if (arg == "--merge-tolerance")
     {
@@ -713,6 +725,40 @@ vtkSmartPointer<vtkUnstructuredGrid> ToUnstructuredGrid(vtkPolyData* mesh)
   return grid;
 }
 
+/// The .node file's vertex attributes and markers, as Triangle writes them:
+/// the mesh's point arrays Attribute0, Attribute1, ... (the .poly reader's,
+/// carried to the mesh by the filter) and PointMarker, when it has them.
+osm::NodeData NodeDataOf(vtkPolyData* mesh)
+{
+  osm::NodeData data;
+  vtkPointData* pd = mesh->GetPointData();
+  std::vector<vtkDataArray*> attributes;
+  for (vtkDataArray* a = pd->GetArray("Attribute0"); a && a->GetNumberOfComponents() == 1;
+       a = pd->GetArray(("Attribute" + std::to_string(attributes.size())).c_str()))
+  {
+    attributes.push_back(a);
+  }
+  const vtkIdType n = mesh->GetNumberOfPoints();
+  data.attributeCount = attributes.size();
+  data.attributes.reserve(static_cast<std::size_t>(n) * attributes.size());
+  for (vtkIdType v = 0; v < n; ++v)
+  {
+    for (vtkDataArray* a : attributes)
+    {
+      data.attributes.push_back(a->GetComponent(v, 0));
+    }
+  }
+  vtkDataArray* markers = pd->GetArray("PointMarker");
+  if (markers && markers->GetNumberOfComponents() == 1)
+  {
+    for (vtkIdType v = 0; v < n; ++v)
+    {
+      data.markers.push_back(static_cast<int>(markers->GetComponent(v, 0)));
+    }
+  }
+  return data;
+}
+
 void WriteMesh(
   const std::string& path, vtkPolyData* mesh, vtkPolyData* edges, OsmOutputWindow* window)
 {
@@ -721,7 +767,8 @@ void WriteMesh(
   if (ext == ".node")
   {
     const std::string base = path.substr(0, path.size() - 5);
-    const std::string error = osm::writeTriangleFiles(base, ToResult(mesh, edges));
+    const std::string error =
+      osm::writeTriangleFiles(base, ToResult(mesh, edges), NodeDataOf(mesh));
     if (!error.empty())
     {
       Fail(error);
@@ -840,6 +887,7 @@ int Run(int argc, char* argv[], OsmOutputWindow* window)
   mesher->SetMergeTolerance(args.mergeTolerance);
   mesher->SetProjectToXYPlane(args.projectXY);
   mesher->SetApplyRegionAreas(args.regionAreas);
+  mesher->SetInterpolatePointData(args.pointData);
   mesher->SetMaximumSteinerPoints(static_cast<vtkIdType>(args.maxSteiner));
   mesher->SetGenerateEdges(true);
   mesher->SetGenerateOverlay(false);

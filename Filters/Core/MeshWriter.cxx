@@ -53,19 +53,33 @@ std::vector<std::array<int, 3>> meshEdges(const Result& r)
 
 } // namespace
 
-std::string writeTriangleFiles(const std::string& base, const Result& r)
+std::string writeTriangleFiles(const std::string& base, const Result& r, const NodeData& data)
 {
+  const std::size_t n = r.mesh.vertices.size();
+  if (data.attributes.size() != n * data.attributeCount ||
+    (!data.markers.empty() && data.markers.size() != n))
+    return "internal error: vertex attributes or markers for " + base +
+      ".node do not match its vertices";
   std::ofstream node(base + ".node"), ele(base + ".ele"), edge(base + ".edge");
   if (!node || !ele || !edge)
     return "cannot write " + base + ".node/.ele/.edge";
   char buf[128];
-  node << r.mesh.vertices.size() << " 2 0 1\n";
-  for (std::size_t v = 0; v < r.mesh.vertices.size(); ++v)
+  node << n << " 2 " << data.attributeCount << " 1\n";
+  for (std::size_t v = 0; v < n; ++v)
   {
     // %.17g round-trips every double exactly.
-    std::snprintf(buf, sizeof buf, "%zu %.17g %.17g %d\n", v + 1, r.mesh.vertices[v].x,
-      r.mesh.vertices[v].y, r.vertexOrigin[v] == VertexOrigin::Input ? 1 : 0);
+    std::snprintf(
+      buf, sizeof buf, "%zu %.17g %.17g", v + 1, r.mesh.vertices[v].x, r.mesh.vertices[v].y);
     node << buf;
+    for (std::size_t k = 0; k < data.attributeCount; ++k)
+    {
+      std::snprintf(buf, sizeof buf, " %.17g", data.attributes[v * data.attributeCount + k]);
+      node << buf;
+    }
+    node << ' '
+         << (data.markers.empty() ? (r.vertexOrigin[v] == VertexOrigin::Input ? 1 : 0)
+                                  : data.markers[v])
+         << '\n';
   }
   // Attributes: the regional attribute first when there is one (as Triangle's
   // -A writes it), then the region id.

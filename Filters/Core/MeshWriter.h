@@ -7,14 +7,27 @@
 
 #include <ostream>
 #include <string>
+#include <vector>
 
 namespace osm
 {
 
+/// What the .node file gives each vertex besides its coordinates, as
+/// Triangle writes its vertex attributes and boundary markers.
+struct NodeData
+{
+  std::size_t attributeCount = 0; ///< per vertex
+  std::vector<double> attributes; ///< vertex-major: attributeCount per vertex
+  /// Per vertex; empty: 1 for the input vertices, 0 for the others.
+  std::vector<int> markers;
+};
+
 /// Write base.node, base.ele and base.edge (1-based, as Triangle writes them).
 /// The .edge file lists the input subsegments with boundary marker 1 and the
-/// other mesh edges with 0. Returns an empty string or the reason it failed.
-std::string writeTriangleFiles(const std::string& base, const Result& result);
+/// other mesh edges with 0. Returns an empty string or the reason it failed
+/// (node data of the wrong size among them).
+std::string writeTriangleFiles(
+  const std::string& base, const Result& result, const NodeData& data = {});
 
 /// Draw the mesh: triangles thin, input segments bold, discarded overlay edges dashed.
 void writeSvg(std::ostream& out, const Result& result);

@@ -4,18 +4,32 @@
 // Edges and Overlay outputs are off, so that it produces what bench_osm does;
 // `--all-outputs` keeps the filter's defaults (both on). The core's own time in
 // the same run (field data SecondsTotal) is reported as core_seconds, so the
-// filter's overhead is measured within one process.
+// filter's overhead is measured within one process. `--point-data` gives the
+// input points a scalar (their x), which the filter then interpolates onto the
+// mesh (InterpolatePointData): what that costs.
 #include "VtkCommon.h"
 
 #include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
 #include <vtkOverlayStitchMesher.h>
+#include <vtkPointData.h>
 
 int main(int argc, char** argv)
 {
   return osmbench::driverMain(
     argc, argv, "vtk-osm", [](const osm::Pslg& input, osmbench::RunOutput& out, bool wantMesh) {
       auto lines = osmbench::toPolyData(input, true);
+      const bool pointData = out.has("--point-data");
+      if (pointData)
+      {
+        vtkNew<vtkDoubleArray> x;
+        x->SetName("X");
+        x->SetNumberOfTuples(lines->GetNumberOfPoints());
+        for (vtkIdType i = 0; i < lines->GetNumberOfPoints(); ++i)
+          x->SetValue(i, lines->GetPoint(i)[0]);
+        lines->GetPointData()->SetScalars(x);
+      }
       vtkNew<vtkOverlayStitchMesher> mesher;
       mesher->SetInputData(lines);
       for (const osm::Point& h : input.holes)
@@ -40,7 +54,9 @@ int main(int argc, char** argv)
         out.error = "the filter produced no mesh";
         return;
       }
-      out.extra.add("core_seconds", total->GetTuple1(0)).add("all_outputs", all);
+      out.extra.add("core_seconds", total->GetTuple1(0))
+        .add("all_outputs", all)
+        .add("point_data", pointData);
       if (wantMesh)
       {
         out.mesh = osmbench::fromPolyData(result);

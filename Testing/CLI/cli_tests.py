@@ -99,8 +99,9 @@ def read_triangle_files(base):
 
     node = rows(base + ".node")
     n, dim, nattr, nmark = (int(x) for x in node[0])
-    check(dim == 2 and nattr == 0 and nmark == 1 and len(node) == n + 1,
-          "%s.node: header '%d 2 0 1' and %d vertex lines" % (os.path.basename(base), n, n))
+    check(dim == 2 and nmark == 1 and len(node) == n + 1 and
+          all(len(r) == 4 + nattr for r in node[1:]),
+          "%s.node: header '%d 2 %d 1' and %d vertex lines" % (os.path.basename(base), n, nattr, n))
     check([int(r[0]) for r in node[1:]] == list(range(1, n + 1)),
           "%s.node: vertices numbered 1..%d" % (os.path.basename(base), n))
     vertices = [(float(r[1]), float(r[2])) for r in node[1:]]
@@ -157,7 +158,7 @@ def group_help():
               flag + " prints the usage on stdout, exit 0", p.stdout[:100] + p.stderr)
         for option in ("-o", "--domain", "--min-angle", "--gamma", "--max-edge", "--no-resolve",
                        "--merge-tolerance", "--max-steiner", "--project-xy", "--region-areas",
-                       "--stats", "--svg", "--version"):
+                       "--no-point-data", "--stats", "--svg", "--version"):
             check(option in p.stdout, flag + " documents " + option)
     p = run("--version")
     check(p.returncode == 0 and p.stdout.startswith("osm-mesh ") and
@@ -326,6 +327,29 @@ def group_options():
     check(abs(a.get("Theta1Deg", 0) - 25) < 1e-9, "--min-angle=25 spelling accepted")
 
 
+def node_data_ok(path, vertices):
+    """square_hole.poly's vertex attribute and markers in the .node written:
+    its own at input vertices, linear along the bottom edge (0.5 to 1.5), and
+    Triangle's markers: the segment's on a segment, 0 elsewhere."""
+    with open(path) as f:
+        rows = [l.split() for l in f if l.strip() and not l.lstrip().startswith("#")]
+    given = {(0, 0): (0.5, 1), (10, 0): (1.5, 1), (10, 10): (2.5, 1), (0, 10): (3.5, 1),
+             (4, 4): (4.5, 2), (6, 4): (5.5, 2), (6, 6): (6.5, 2), (4, 6): (7.5, 2),
+             (2, 8): (8.5, 0)}
+    wrong = []
+    for (x, y), r in zip(vertices, rows[1:]):
+        a, m = float(r[3]), int(r[4])
+        outer = x in (0.0, 10.0) or y in (0.0, 10.0)
+        hole = (x in (4.0, 6.0) and 4 <= y <= 6) or (y in (4.0, 6.0) and 4 <= x <= 6)
+        expected = given.get((x, y), (0.5 + x / 10 if y == 0.0 else a,
+                                      1 if outer else 2 if hole else 0))
+        if abs(a - expected[0]) > 1e-12 or m != expected[1]:
+            wrong.append((x, y, a, m, expected))
+    check(rows[0][2] == "1" and not wrong,
+          ".node: the file's vertex attribute and markers carried to %d vertices" % len(vertices),
+          wrong[:3])
+
+
 def group_formats():
     square = data("square_hole.poly")
     for ext in ("vtp", "vtu", "vtk", "node"):
@@ -337,6 +361,13 @@ def group_formats():
               ".%s: all 9 input points are mesh vertices (the isolated one too)" % ext, report)
     # Triangle's files: the three side by side, parsed back.
     v, t, e = read_triangle_files(out("square"))
+    node_data_ok(out("square.node"), v)
+    # --no-point-data: no attribute, and markers 1 on the input vertices only.
+    mesh_ok(square, "-o", out("bare.node"), "--no-point-data")
+    with open(out("bare.node")) as f:
+        rows = [l.split() for l in f if l.strip() and not l.lstrip().startswith("#")]
+    check(rows[0][2] == "0" and sum(int(r[3]) for r in rows[1:]) == 9,
+          "--no-point-data: no vertex attribute, marker 1 on the 9 input vertices", rows[0])
     check(abs(total_area(v, t) - 96.0) < 1e-9, ".node/.ele: area 96 (the hole is left out)")
     check(all(area(v, tri) > 0 for tri in t), ".ele: every triangle counter-clockwise")
     inside_hole = [tri for tri in t if

@@ -68,6 +68,31 @@ for c in range(mesh.GetNumberOfCells()):
 check(mesh.GetNumberOfCells() > 0 and abs(area - 96.0) < 1e-9,
       "the file's hole reaches the mesher: area 100 - 4", area)
 
+# The file's vertex attribute and markers reach the mesh (InterpolatePointData),
+# gathered from every rank: input vertices keep theirs, a point on the bottom
+# edge takes the attribute linear along it (0.5 to 1.5), and the markers are
+# Triangle's: the segment's on a segment (1 outside, 2 on the hole), else 0.
+attribute = mesh.GetPointData().GetArray("Attribute0")
+marker = mesh.GetPointData().GetArray("PointMarker")
+inputs = {tuple(local.GetPoint(i)[:2]): (local.GetPointData().GetArray("Attribute0").GetValue(i),
+                                          local.GetPointData().GetArray("PointMarker").GetValue(i))
+          for i in range(local.GetNumberOfPoints())}
+wrong = []
+for v in range(mesh.GetNumberOfPoints() if attribute and marker else 0):
+    x, y, _ = mesh.GetPoint(v)
+    a, m = attribute.GetValue(v), marker.GetValue(v)
+    if (x, y) in inputs:
+        expected = inputs[(x, y)]
+    else:
+        outer = x in (0.0, 10.0) or y in (0.0, 10.0)
+        hole = (x in (4.0, 6.0) and 4 <= y <= 6) or (y in (4.0, 6.0) and 4 <= x <= 6)
+        expected = (0.5 + x / 10 if y == 0.0 else a, 1 if outer else 2 if hole else 0)
+    if abs(a - expected[0]) > 1e-12 or m != expected[1]:
+        wrong.append((x, y, a, m, expected))
+check(attribute is not None and marker is not None and mesh.GetNumberOfPoints() > 9 and not wrong,
+      "the file's Attribute0 and PointMarker carried to the mesh's %d points"
+      % mesh.GetNumberOfPoints(), wrong[:3])
+
 print("%d failure(s)" % len(failures))
 # Under pvbatch + MPI, sys.exit(0) would skip MPI_Finalize and mpiexec would
 # report an abnormal end: only exit early on failure.

@@ -61,6 +61,39 @@ TEST(MeshWriter, TriangleFilesReadBackExactly)
   fs::remove_all(dir);
 }
 
+TEST(MeshWriter, VertexAttributesAndMarkersReadBackExactly)
+{
+  const Result r = squareWithSlit();
+  ASSERT_TRUE(r.ok) << r.error;
+  NodeData data;
+  data.attributeCount = 2;
+  for (std::size_t v = 0; v < r.mesh.vertices.size(); ++v)
+  {
+    data.attributes.push_back(r.mesh.vertices[v].x / 3); // not short in decimal
+    data.attributes.push_back(-1e-300 * static_cast<double>(v));
+    data.markers.push_back(static_cast<int>(v % 5));
+  }
+  const fs::path dir = fs::temp_directory_path() / "osm-writer-data-test";
+  fs::create_directories(dir);
+  const std::string base = (dir / "out").string();
+  ASSERT_EQ(writeTriangleFiles(base, r, data), "");
+  const PolyFile node = readPolyFile(base + ".node");
+  ASSERT_TRUE(node.ok) << node.error;
+  ASSERT_EQ(node.pointAttributes.size(), r.mesh.vertices.size());
+  ASSERT_EQ(node.pointMarkers.size(), r.mesh.vertices.size());
+  for (std::size_t v = 0; v < r.mesh.vertices.size(); ++v)
+  {
+    ASSERT_EQ(node.pointAttributes[v].size(), 2u);
+    EXPECT_EQ(node.pointAttributes[v][0], data.attributes[2 * v]);
+    EXPECT_EQ(node.pointAttributes[v][1], data.attributes[2 * v + 1]);
+    EXPECT_EQ(node.pointMarkers[v], data.markers[v]);
+  }
+  // Data of the wrong size is refused, naming the file.
+  data.markers.pop_back();
+  EXPECT_NE(writeTriangleFiles(base, r, data).find("out.node"), std::string::npos);
+  fs::remove_all(dir);
+}
+
 TEST(MeshWriter, UnwritablePathGivesAReason)
 {
   EXPECT_NE(writeTriangleFiles("/nonexistent-dir/x", squareWithSlit()), "");

@@ -17,6 +17,7 @@
 //   abort            an abort requested from a progress observer on a big input
 //   composite        multiblock and partitioned input: its polydata blocks are one graph
 //   matrix           the bad-input matrix of issue 6, through the filter
+//   point-data       the input's point data carried to the mesh (InterpolatePointData)
 // Every check prints "ok" or "FAILED"; the exit status is the number of failures (capped).
 #include "MesherTestUtils.h"
 
@@ -26,6 +27,7 @@
 #include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
+#include "vtkFloatArray.h"
 #include "vtkIdList.h"
 #include "vtkInformation.h"
 #include "vtkIntArray.h"
@@ -36,6 +38,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
+#include "vtkStringArray.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
@@ -1216,6 +1219,138 @@ int TestMatrix()
   return 0;
 }
 
+/// The square [0, 10]^2 (cell 0, a polyline) split by the segment x = 5
+/// (cell 1), with two lone points; every point carries data.
+vtkSmartPointer<vtkPolyData> SquareWithPointData()
+{
+  auto input = MakeLines({ { 0, 0, 0 }, { 10, 0, 0 }, { 10, 10, 0 }, { 0, 10, 0 }, { 5, 0, 0 },
+                           { 5, 10, 0 }, { 2, 7, 0 }, { 8, 3, 0 } },
+    { { 0, 4, 1, 2, 5, 3, 0 }, { 4, 5 } });
+  const vtkIdType n = input->GetNumberOfPoints();
+  vtkNew<vtkDoubleArray> elevation;
+  elevation->SetName("Elevation");
+  vtkNew<vtkFloatArray> velocity;
+  velocity->SetName("Velocity");
+  velocity->SetNumberOfComponents(3);
+  vtkNew<vtkIntArray> label;
+  label->SetName("Label");
+  vtkNew<vtkStringArray> name;
+  name->SetName("Name");
+  vtkNew<vtkIntArray> marker;
+  marker->SetName("PointMarker");
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double p[3];
+    input->GetPoint(i, p);
+    elevation->InsertNextValue(2 * p[0] - 3 * p[1] + 1);
+    velocity->InsertNextTuple3(p[0], p[1], p[0] + p[1]);
+    label->InsertNextValue(static_cast<int>(10 * i));
+    name->InsertNextValue("point " + std::to_string(i));
+    marker->InsertNextValue(i < 4 ? 1 : i < 6 ? 2 : 0);
+  }
+  input->GetPointData()->AddArray(elevation);
+  input->GetPointData()->AddArray(velocity);
+  input->GetPointData()->AddArray(label);
+  input->GetPointData()->AddArray(name);
+  input->GetPointData()->AddArray(marker);
+  input->GetPointData()->SetActiveScalars("Elevation");
+  vtkNew<vtkIntArray> segmentMarker;
+  segmentMarker->SetName("SegmentMarker");
+  segmentMarker->InsertNextValue(1);
+  segmentMarker->InsertNextValue(2);
+  input->GetCellData()->AddArray(segmentMarker);
+  return input;
+}
+
+int TestPointData()
+{
+  Harness h;
+  h.Mesher->SetMaximumEdgeLength(1.0); // Steiner points inside, stitch vertices on segments
+  auto input = SquareWithPointData();
+  vtkPolyData* mesh = h.Run(input, "point data");
+  Check(h.NoError() && h.Messages->Warnings.empty() && mesh->GetNumberOfCells() > 0,
+    "point data: meshed with no message");
+  vtkPointData* pd = mesh->GetPointData();
+  auto* elevation = vtkDoubleArray::SafeDownCast(pd->GetArray("Elevation"));
+  auto* velocity = vtkFloatArray::SafeDownCast(pd->GetArray("Velocity"));
+  auto* label = vtkIntArray::SafeDownCast(pd->GetArray("Label"));
+  auto* name = vtkStringArray::SafeDownCast(pd->GetAbstractArray("Name"));
+  auto* marker = vtkIntArray::SafeDownCast(pd->GetArray("PointMarker"));
+  auto* origin = vtkUnsignedCharArray::SafeDownCast(pd->GetArray("VertexOrigin"));
+  if (!Check(elevation && velocity && velocity->GetNumberOfComponents() == 3 && label && name &&
+          marker && origin,
+        "point data: every input array on the mesh, with its type and components"))
+  {
+    return 1;
+  }
+  Check(pd->GetScalars() == elevation, "point data: the input's active scalars stay active");
+  const vtkIdType n = mesh->GetNumberOfPoints();
+  double worstElevation = 0, worstVelocity = 0;
+  int wrongLabels = 0, wrongMarkers = 0, wrongInputs = 0;
+  vtkIdType onSegments = 0, steiner = 0;
+  for (vtkIdType v = 0; v < n; ++v)
+  {
+    double p[3];
+    mesh->GetPoint(v, p);
+    worstElevation =
+      std::max(worstElevation, std::fabs(elevation->GetValue(v) - (2 * p[0] - 3 * p[1] + 1)));
+    double w[3];
+    velocity->GetTuple(v, w);
+    worstVelocity = std::max({ worstVelocity, std::fabs(w[0] - p[0]), std::fabs(w[1] - p[1]),
+      std::fabs(w[2] - p[0] - p[1]) });
+    // Labels are input labels, never an average of two.
+    const int l = label->GetValue(v);
+    wrongLabels += l % 10 != 0 || l < 0 || l >= 10 * input->GetNumberOfPoints();
+    const int kind = origin->GetValue(v);
+    if (kind == 0)
+    {
+      const vtkIdType i = l / 10;
+      double q[3];
+      input->GetPoint(i, q);
+      wrongInputs +=
+        q[0] != p[0] || q[1] != p[1] || name->GetValue(v) != "point " + std::to_string(i);
+      continue;
+    }
+    // Triangle's markers: the segment's on a segment, else 0.
+    const bool inner = p[0] == 5.0;
+    const bool boundary = p[0] == 0 || p[0] == 10 || p[1] == 0 || p[1] == 10;
+    onSegments += inner || boundary;
+    steiner += !inner && !boundary;
+    wrongMarkers += marker->GetValue(v) != (inner ? 2 : boundary ? 1 : 0);
+  }
+  Check(worstElevation < 1e-12,
+    "point data: a linear double field is reproduced at every vertex (off by " +
+      Num(worstElevation) + ")");
+  Check(worstVelocity < 1e-5,
+    "point data: a linear float vector is reproduced (off by " + Num(worstVelocity) + ")");
+  Check(wrongLabels == 0,
+    "point data: integer labels are input labels (" + std::to_string(wrongLabels) + " are not)");
+  Check(wrongInputs == 0, "point data: input vertices keep their own tuples, strings included");
+  Check(onSegments > 0 && steiner > 0 && wrongMarkers == 0,
+    "point data: PointMarker is the segment's marker on segments, 0 elsewhere (" +
+      std::to_string(onSegments) + " on segments, " + std::to_string(steiner) + " others, " +
+      std::to_string(wrongMarkers) + " wrong)");
+
+  // An input array named like the mesh's own is left out, with a warning.
+  vtkNew<vtkDoubleArray> clash;
+  clash->SetName("VertexOrigin");
+  clash->SetNumberOfTuples(input->GetNumberOfPoints());
+  clash->Fill(7.0);
+  input->GetPointData()->AddArray(clash);
+  mesh = h.Run(input, "point data named VertexOrigin");
+  Check(h.Messages->HasWarning({ "VertexOrigin", "not carried" }) &&
+      vtkUnsignedCharArray::SafeDownCast(mesh->GetPointData()->GetArray("VertexOrigin")),
+    "point data: an input VertexOrigin is not carried, with a warning");
+
+  // Off: no input array on the mesh.
+  h.Mesher->InterpolatePointDataOff();
+  mesh = h.Run(SquareWithPointData(), "point data off");
+  Check(h.NoError() && !mesh->GetPointData()->GetArray("Elevation") &&
+      mesh->GetPointData()->GetArray("VertexOrigin"),
+    "point data: InterpolatePointData off carries nothing");
+  return 0;
+}
+
 } // namespace
 
 int main(int argc, char* argv[])
@@ -1237,6 +1372,7 @@ int main(int argc, char* argv[])
     { "measure-big", [points] { return MeasureBig(points); } },
     { "composite", TestComposite },
     { "matrix", TestMatrix },
+    { "point-data", TestPointData },
   };
   const auto it = tests.find(test);
   if (it == tests.end())

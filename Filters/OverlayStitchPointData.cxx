@@ -1,0 +1,157 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026, the Overlay Stitch Meshing authors
+#include "OverlayStitchPointData.h"
+
+#include "vtkAbstractArray.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkIdList.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkSmartPointer.h"
+
+#include "Interpolation.h"
+
+#include <algorithm>
+#include <cstring>
+
+namespace
+{
+
+/// How an input array reaches the mesh's vertices.
+struct Carried
+{
+  enum Kind
+  {
+    Linear,  ///< floating point: the weighted sum
+    Largest, ///< labels: the tuple of the largest weight
+    Marker   ///< Triangle's vertex markers: the segment's marker, else 0
+  };
+  vtkAbstractArray* Source;
+  vtkSmartPointer<vtkAbstractArray> Target;
+  Kind How;
+};
+
+bool IsFloating(vtkAbstractArray* array)
+{
+  const int type = array->GetDataType();
+  return vtkDataArray::SafeDownCast(array) && (type == VTK_FLOAT || type == VTK_DOUBLE);
+}
+
+/// The input's segment markers when they are Triangle's: one integer per cell.
+vtkDataArray* SegmentMarkers(vtkCellData* cells)
+{
+  vtkDataArray* markers = cells ? cells->GetArray("SegmentMarker") : nullptr;
+  return markers && markers->GetNumberOfComponents() == 1 && !IsFloating(markers) ? markers
+                                                                                  : nullptr;
+}
+
+} // namespace
+
+bool OverlayStitchInterpolatePointData(vtkPointData* in, vtkCellData* inCells,
+  const osm::Pslg& pslg, const osm::Result& result, const std::vector<vtkIdType>& segmentCells,
+  double tolerance, vtkPointData* out, const std::function<bool(double)>& poll,
+  std::vector<std::string>& warnings)
+{
+  const auto vertices = static_cast<vtkIdType>(result.mesh.vertices.size());
+  vtkDataArray* segmentMarkers = SegmentMarkers(inCells);
+  std::vector<Carried> carried;
+  for (int i = 0; i < in->GetNumberOfArrays(); ++i)
+  {
+    vtkAbstractArray* source = in->GetAbstractArray(i);
+    const char* name = source->GetName();
+    if (name && out->GetAbstractArray(name))
+    {
+      warnings.push_back(std::string("The input's point data array ") + name +
+        " is not carried to the mesh: the mesh has an array of that name of its own.");
+      continue;
+    }
+    auto target = vtkSmartPointer<vtkAbstractArray>::Take(source->NewInstance());
+    target->SetName(name);
+    target->SetNumberOfComponents(source->GetNumberOfComponents());
+    target->CopyComponentNames(source);
+    target->SetNumberOfTuples(vertices);
+    if (auto* data = vtkDataArray::SafeDownCast(target))
+    {
+      data->Fill(0.0); // a vertex with no terms (none on the input) reads 0
+    }
+    const bool marker = name && std::strcmp(name, "PointMarker") == 0 && segmentMarkers &&
+      source->GetNumberOfComponents() == 1 && !IsFloating(source);
+    carried.push_back({ source, target,
+      IsFloating(source) ? Carried::Linear
+        : marker         ? Carried::Marker
+                         : Carried::Largest });
+  }
+  if (carried.empty())
+  {
+    return true;
+  }
+
+  vtkNew<vtkIdList> ids;
+  double weights[6];
+  vtkIdType visited = 0;
+  const bool done = osm::visitInputWeights(pslg, result, tolerance, [&](const osm::VertexTerms& t) {
+    if ((++visited & 0xffff) == 0 && poll(static_cast<double>(visited) / vertices))
+    {
+      return false;
+    }
+    if (t.count == 0)
+    {
+      return true;
+    }
+    const auto v = static_cast<vtkIdType>(t.vertex);
+    ids->SetNumberOfIds(t.count);
+    int largest = 0;
+    for (int k = 0; k < t.count; ++k)
+    {
+      ids->SetId(k, t.point[k]);
+      weights[k] = t.weight[k];
+      largest = t.weight[k] > t.weight[largest] ? k : largest;
+    }
+    for (const Carried& c : carried)
+    {
+      if (t.inputPoint >= 0)
+      {
+        c.Target->SetTuple(v, t.inputPoint, c.Source);
+      }
+      else if (c.How == Carried::Linear)
+      {
+        c.Target->InterpolateTuple(v, ids, c.Source, weights);
+      }
+      else if (c.How == Carried::Largest)
+      {
+        c.Target->SetTuple(v, t.point[largest], c.Source);
+      }
+      else
+      {
+        const double marker = t.segment >= 0
+          ? segmentMarkers->GetComponent(segmentCells[static_cast<std::size_t>(t.segment)], 0)
+          : 0.0;
+        vtkDataArray::SafeDownCast(c.Target)->SetComponent(v, 0, marker);
+      }
+    }
+    return true;
+  });
+  if (!done)
+  {
+    return false;
+  }
+  for (const Carried& c : carried)
+  {
+    out->AddArray(c.Target);
+  }
+  // The input's active scalars, vectors, ... stay active; not its global or
+  // pedigree ids, which new points repeat, so that they are ids no more.
+  for (int a = 0; a < vtkDataSetAttributes::NUM_ATTRIBUTES; ++a)
+  {
+    vtkAbstractArray* active = in->GetAbstractAttribute(a);
+    const bool carriedActive = std::any_of(
+      carried.begin(), carried.end(), [active](const Carried& c) { return c.Source == active; });
+    if (active && active->GetName() && carriedActive && a != vtkDataSetAttributes::GLOBALIDS &&
+      a != vtkDataSetAttributes::PEDIGREEIDS)
+    {
+      out->SetActiveAttribute(active->GetName(), a);
+    }
+  }
+  return true;
+}
