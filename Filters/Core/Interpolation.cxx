@@ -139,6 +139,20 @@ private:
   }
 };
 
+/// A power of two that brings the largest coordinate of a and b near 1
+/// (within the normal range of powers of two).
+double unitScale(const Array<Point>& a, const Array<Point>& b)
+{
+  double largest = 0;
+  for (const Array<Point>* points : { &a, &b })
+    for (const Point& p : *points)
+      largest = std::max({ largest, std::abs(p.x), std::abs(p.y) });
+  // Within the normal range: subnormal coordinates come near 1e-12, enough.
+  return largest > 0 && std::isfinite(largest)
+    ? std::ldexp(1.0, std::clamp(-std::ilogb(largest), -1000, 1000))
+    : 1.0;
+}
+
 /// The distance within which a vertex lies on a segment: the tolerance, and
 /// at least what rounding a stitch vertex moves it by.
 double onSegmentReach(const Pslg& input, double tolerance)
@@ -183,6 +197,8 @@ void termsIn(const Triangulation& T, int t, const Point& p, const Array<int>& kn
   }
   else if (count == 1)
     lambda[real[0]] = 1;
+  if (count == 0)
+    return; // no known vertex (a triangulation with none in it): no terms
   double sum = lambda[0] + lambda[1] + lambda[2];
   if (sum <= 0) // p on a vertex within rounding: take the nearest
   {
@@ -251,9 +267,19 @@ bool visitInputWeights(
       inputPoint[v] = static_cast<int>(i);
   }
 
+  // Coordinates scaled by a power of two (exactly) to magnitudes about 1,
+  // so that no square or circumcircle test overflows, at 1e300 or 1e-300.
+  const double scale = unitScale(input.points, vertices);
+  Pslg scaled;
+  scaled.points.reserve(input.points.size());
+  for (const Point& q : input.points)
+    scaled.points.push_back({ q.x * scale, q.y * scale });
+  scaled.segments = input.segments;
+  auto at = [&](std::size_t v) { return Point{ vertices[v].x * scale, vertices[v].y * scale }; };
+
   // Input vertices and points on segments: their own terms, visited at once
   // and kept as (input point or segment, position along it) for the others.
-  const SegmentGrid grid(input, onSegmentReach(input, tolerance));
+  const SegmentGrid grid(scaled, onSegmentReach(scaled, tolerance * scale));
   Array<int> unknown;
   Array<Point> knownPoints;
   Array<int> knownSegment;  // per known point: its segment, or -1
@@ -274,13 +300,13 @@ bool visitInputWeights(
     // are looked up.
     double t = 0;
     const bool lookUp = inputPoint[v] < 0 && result.vertexOrigin[v] != VertexOrigin::Overlay;
-    const int segment = lookUp ? grid.nearest(vertices[v], t) : -1;
+    const int segment = lookUp ? grid.nearest(at(v), t) : -1;
     if (inputPoint[v] < 0 && segment < 0)
     {
       unknown.push_back(static_cast<int>(v));
       continue;
     }
-    knownPoints.push_back(vertices[v]);
+    knownPoints.push_back(at(v));
     knownSegment.push_back(segment);
     knownAlong.push_back(segment < 0 ? inputPoint[v] : t);
     VertexTerms terms;
@@ -312,7 +338,7 @@ bool visitInputWeights(
   Array<Point> unknownPoints;
   unknownPoints.reserve(unknown.size());
   for (int v : unknown)
-    unknownPoints.push_back(vertices[v]);
+    unknownPoints.push_back(at(v));
   int start = 0;
   while (start < T.slots() && !T.alive(start))
     ++start;
@@ -320,7 +346,9 @@ bool visitInputWeights(
   {
     VertexTerms terms;
     terms.vertex = static_cast<std::size_t>(unknown[k]);
-    if (start < T.slots())
+    if (knownPoints.size() == 1) // no extent to pad: that point's value everywhere
+      knownTerms(0, terms);
+    else if (start < T.slots())
     {
       start = triangleHolding(T, unknownPoints[k], start);
       termsIn(T, start, unknownPoints[k], knownOf, knownTerms, terms);

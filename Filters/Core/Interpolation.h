@@ -32,7 +32,7 @@ struct VertexTerms
   std::size_t vertex = 0;
   int inputPoint = -1; ///< the input point it is (the first merged into it), else -1
   int segment = -1;    ///< else the input segment it lies on (within the tolerance), else -1
-  int count = 0;       ///< 1 to 6 terms (0 only when no vertex is an input point or on a segment)
+  int count = 0;       ///< 1 to 6 terms (0 only where no vertex is an input point or on a segment)
   int point[6];        ///< input points (indices in the Pslg)
   double weight[6];
 

@@ -215,3 +215,55 @@ TEST(Interpolation, KinksAlongSegmentsAmongRandomPoints)
   std::printf("kink: %zu of %zu vertices off, worst %g\n", off, vertices, worst);
   EXPECT_LT(worst, 1e-12);
 }
+
+// One input point meshes as the box around it: its value everywhere (the
+// fuzzer's first find: no extent to pad the known points' triangulation by).
+TEST(Interpolation, OnePointGivesItsValueEverywhere)
+{
+  Pslg in;
+  in.points = { { 4, 0 } };
+  const Result r = mesh(in);
+  ASSERT_TRUE(r.ok) << r.error;
+  ASSERT_GT(r.mesh.vertices.size(), 1u);
+  for (const VertexTerms& t : termsOf(in, r, "one point"))
+  {
+    ASSERT_EQ(t.count, 1);
+    EXPECT_EQ(t.point[0], 0);
+  }
+}
+
+// The same input at 1e300 and at 1e-300 gives the same terms, and convex
+// ones among subnormal numbers (the fuzzer's second find): coordinates are
+// scaled by a power of two first, so that no square or circumcircle test
+// overflows.
+TEST(Interpolation, HugeAndTinyCoordinatesGiveTheSameTerms)
+{
+  std::mt19937_64 rng(11);
+  const Pslg unit = randomInput(rng, 10, 6);
+  Options o;
+  o.domain = Domain::Hull;
+  const Result r = mesh(unit, o);
+  ASSERT_TRUE(r.ok) << r.error;
+  const std::vector<VertexTerms> reference = termsOf(unit, r, "unit");
+  for (double factor : { 0x1p996, 0x1p-1000, 0x1p-1060 })
+  {
+    Pslg in = unit;
+    Result scaled = r;
+    for (Point& p : in.points)
+      p = { p.x * factor, p.y * factor };
+    for (Point& p : scaled.mesh.vertices)
+      p = { p.x * factor, p.y * factor };
+    const std::vector<VertexTerms> w = termsOf(in, scaled, "scaled");
+    if (factor < 0x1p-1040) // subnormal: the points lost bits, convex terms only
+      continue;
+    for (std::size_t v = 0; v < w.size(); ++v)
+    {
+      ASSERT_EQ(w[v].count, reference[v].count) << factor << ": vertex " << v;
+      for (int k = 0; k < w[v].count; ++k)
+      {
+        EXPECT_EQ(w[v].point[k], reference[v].point[k]);
+        EXPECT_NEAR(w[v].weight[k], reference[v].weight[k], 1e-9);
+      }
+    }
+  }
+}

@@ -2,14 +2,18 @@
 // independent validator as the oracle. Coordinates come mostly from a small
 // integer grid so duplicates, collinear points, T-junctions, overlaps and
 // crossings are frequent; some are raw doubles to reach extreme values.
+#include "Interpolation.h"
 #include "Mesher.h"
 #include "Validate.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <string>
+#include <vector>
 
 namespace
 {
@@ -51,6 +55,54 @@ void fail(const char* what, const std::string& detail)
 {
   std::fprintf(stderr, "fuzz_mesher: %s: %s\n", what, detail.c_str());
   std::abort();
+}
+
+/// The weights that carry input point data to the mesh (Interpolation.h):
+/// every vertex once, convex terms on input points; a linear field (x/extent
+/// + 2 y/extent, a function of the input's scale) reproduced within the
+/// merge tolerance and rounding where every vertex lies within the input's
+/// hull: not with the box domain, chosen or fallen back to (seen as vertices
+/// beyond the input's bounds).
+void checkInterpolation(
+  const osm::Pslg& p, const osm::Result& r, const osm::Options& o, double extent)
+{
+  std::vector<char> seen(r.mesh.vertices.size(), 0);
+  const double scale = extent > 0 ? 1.0 / extent : 1.0;
+  auto f = [scale](const osm::Point& q) { return scale * q.x + 2 * scale * q.y; };
+  double x0 = p.points[0].x, x1 = x0, y0 = p.points[0].y, y1 = y0;
+  for (const osm::Point& q : p.points)
+    x0 = std::fmin(x0, q.x), x1 = std::fmax(x1, q.x), y0 = std::fmin(y0, q.y),
+    y1 = std::fmax(y1, q.y);
+  bool linear = std::isfinite(scale) && extent < 1e300;
+  for (const osm::Point& v : r.mesh.vertices)
+    linear = linear && v.x >= x0 && v.x <= x1 && v.y >= y0 && v.y <= y1;
+  const double allowed = 3 * scale * o.mergeTolerance + 1e-6;
+  osm::visitInputWeights(p, r, o.mergeTolerance, [&](const osm::VertexTerms& t) {
+    if (t.vertex >= seen.size() || seen[t.vertex]++)
+      fail(
+        "interpolation", "vertex " + std::to_string(t.vertex) + " out of range or visited twice");
+    double sum = 0, value = 0;
+    for (int k = 0; k < t.count; ++k)
+    {
+      if (t.point[k] < 0 || t.point[k] >= static_cast<int>(p.points.size()) ||
+        !(t.weight[k] > 0 && t.weight[k] <= 1 + 1e-12))
+        fail("interpolation", "a bad term at vertex " + std::to_string(t.vertex));
+      sum += t.weight[k];
+      value += t.weight[k] * f(p.points[t.point[k]]);
+    }
+    if (t.count == 0 || std::abs(sum - 1) > 1e-9)
+      fail("interpolation",
+        "weights summing to " + std::to_string(sum) + " at vertex " + std::to_string(t.vertex));
+    const double error = std::abs(value - f(r.mesh.vertices[t.vertex]));
+    if (linear && error > allowed)
+      fail("interpolation",
+        "a linear field off by " + std::to_string(error) + " at vertex " +
+          std::to_string(t.vertex) + " (origin " +
+          std::to_string(static_cast<int>(r.vertexOrigin[t.vertex])) + ")");
+    return true;
+  });
+  if (std::count(seen.begin(), seen.end(), 1) != static_cast<long>(seen.size()))
+    fail("interpolation", "not every vertex visited");
 }
 
 } // namespace
@@ -164,5 +216,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const osm::ValidationReport rep = osm::validate(present, r.mesh.vertices, r.mesh.triangles, vo);
   if (!rep.ok)
     fail("invalid mesh", rep.errors.empty() ? "" : rep.errors.front());
+  checkInterpolation(p, r, o, extent);
   return 0;
 }
