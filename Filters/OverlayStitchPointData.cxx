@@ -6,8 +6,10 @@
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkIdList.h"
+#include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
+#include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 
 #include "Interpolation.h"
@@ -154,4 +156,43 @@ bool OverlayStitchInterpolatePointData(vtkPointData* in, vtkCellData* inCells,
     }
   }
   return true;
+}
+
+void OverlayStitchSegmentMarkers(vtkCellData* inCells, const osm::Pslg& pslg,
+  const osm::Result& result, const std::vector<vtkIdType>& segmentCells, double tolerance,
+  vtkPolyData* edges)
+{
+  vtkDataArray* segmentMarkers = SegmentMarkers(inCells);
+  if (!segmentMarkers || edges->GetNumberOfCells() != static_cast<vtkIdType>(result.edges.size()))
+  {
+    return;
+  }
+  // An input subsegment's midpoint lies on its segment.
+  osm::Array<osm::Point> midpoints;
+  for (const osm::Edge& e : result.edges)
+  {
+    if (e.flags & osm::EdgeInput)
+    {
+      const osm::Point &a = result.edgeVertices[e.a], &b = result.edgeVertices[e.b];
+      midpoints.push_back({ 0.5 * (a.x + b.x), 0.5 * (a.y + b.y) });
+    }
+  }
+  const osm::Array<int> under = osm::segmentsUnder(pslg, midpoints, tolerance);
+  vtkNew<vtkIntArray> markers;
+  markers->SetName("SegmentMarker");
+  markers->SetNumberOfTuples(static_cast<vtkIdType>(result.edges.size()));
+  std::size_t next = 0;
+  for (std::size_t e = 0; e < result.edges.size(); ++e)
+  {
+    int marker = 0;
+    if (result.edges[e].flags & osm::EdgeInput)
+    {
+      const int s = under[next++];
+      marker = s >= 0 ? static_cast<int>(segmentMarkers->GetComponent(
+                          segmentCells[static_cast<std::size_t>(s)], 0))
+                      : 1;
+    }
+    markers->SetValue(static_cast<vtkIdType>(e), marker);
+  }
+  edges->GetCellData()->AddArray(markers);
 }

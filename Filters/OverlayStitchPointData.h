@@ -13,7 +13,8 @@
 // except Triangle's vertex markers: a "PointMarker" array, when the input's
 // cells have a "SegmentMarker" array (as vtkTrianglePolyReader writes them),
 // gives a point on a segment that segment's marker and any other new point 0,
-// as Triangle does.
+// as Triangle does; the segment markers go to the input subsegments of the
+// Edges output as Triangle's .edge markers.
 #ifndef OverlayStitchPointData_h
 #define OverlayStitchPointData_h
 
@@ -25,6 +26,7 @@
 
 class vtkCellData;
 class vtkPointData;
+class vtkPolyData;
 
 namespace osm
 {
@@ -42,5 +44,15 @@ bool OverlayStitchInterpolatePointData(vtkPointData* in, vtkCellData* inCells,
   const osm::Pslg& pslg, const osm::Result& result, const std::vector<vtkIdType>& segmentCells,
   double tolerance, vtkPointData* out, const std::function<bool(double)>& poll,
   std::vector<std::string>& warnings);
+
+/// Triangle's segment markers on the Edges output (edges: result.edges as
+/// lines, in order): a cell array "SegmentMarker" giving each input
+/// subsegment the marker of the input segment it lies on, 1 where it lies on
+/// none (the hull's edges, as Triangle marks boundary edges), and 0 to the
+/// other edges. Nothing when the input's cells have no integer
+/// "SegmentMarker".
+void OverlayStitchSegmentMarkers(vtkCellData* inCells, const osm::Pslg& pslg,
+  const osm::Result& result, const std::vector<vtkIdType>& segmentCells, double tolerance,
+  vtkPolyData* edges);
 
 #endif

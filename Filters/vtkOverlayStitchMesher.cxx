@@ -1032,14 +1032,17 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   {
     return 1;
   }
-  if (this->InterpolatePointData && input->GetPointData()->GetNumberOfArrays() > 0)
+  std::vector<vtkIdType> segmentCells;
+  if (this->InterpolatePointData)
   {
-    std::vector<vtkIdType> segmentCells;
     segmentCells.reserve(segmentSources.size());
     for (const SegmentSource& source : segmentSources)
     {
       segmentCells.push_back(source.Cell);
     }
+  }
+  if (this->InterpolatePointData && input->GetPointData()->GetNumberOfArrays() > 0)
+  {
     std::vector<std::string> warnings;
     OverlayStitchInterpolatePointData(
       input->GetPointData(), input->GetCellData(), pslg, result, segmentCells, this->MergeTolerance,
@@ -1078,6 +1081,11 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
       this->UpdateProgress(0.95 + 0.03 * fraction);
       return AbortRequested(this);
     });
+    if (this->InterpolatePointData)
+    {
+      OverlayStitchSegmentMarkers(
+        input->GetCellData(), pslg, result, segmentCells, this->MergeTolerance, edges);
+    }
   }
   this->UpdateProgress(0.98);
   if (aborted())

@@ -727,8 +727,9 @@ vtkSmartPointer<vtkUnstructuredGrid> ToUnstructuredGrid(vtkPolyData* mesh)
 
 /// The .node file's vertex attributes and markers, as Triangle writes them:
 /// the mesh's point arrays Attribute0, Attribute1, ... (the .poly reader's,
-/// carried to the mesh by the filter) and PointMarker, when it has them.
-osm::NodeData NodeDataOf(vtkPolyData* mesh)
+/// carried to the mesh by the filter) and PointMarker, when it has them;
+/// and the .edge file's markers, the Edges output's SegmentMarker.
+osm::NodeData NodeDataOf(vtkPolyData* mesh, vtkPolyData* edges)
 {
   osm::NodeData data;
   vtkPointData* pd = mesh->GetPointData();
@@ -756,6 +757,20 @@ osm::NodeData NodeDataOf(vtkPolyData* mesh)
       data.markers.push_back(static_cast<int>(markers->GetComponent(v, 0)));
     }
   }
+  // The Edges output's segment markers, per line as ToResult lists them.
+  vtkDataArray* edgeMarkers = edges ? edges->GetCellData()->GetArray("SegmentMarker") : nullptr;
+  if (edgeMarkers)
+  {
+    auto lines = vtk::TakeSmartPointer(edges->GetLines()->NewIterator());
+    vtkIdType lineId = edges->GetNumberOfVerts();
+    for (lines->GoToFirstCell(); !lines->IsDoneWithTraversal(); lines->GoToNextCell(), ++lineId)
+    {
+      if (lines->GetCurrentCell()->GetNumberOfIds() == 2)
+      {
+        data.edgeMarkers.push_back(static_cast<int>(edgeMarkers->GetComponent(lineId, 0)));
+      }
+    }
+  }
   return data;
 }
 
@@ -768,7 +783,7 @@ void WriteMesh(
   {
     const std::string base = path.substr(0, path.size() - 5);
     const std::string error =
-      osm::writeTriangleFiles(base, ToResult(mesh, edges), NodeDataOf(mesh));
+      osm::writeTriangleFiles(base, ToResult(mesh, edges), NodeDataOf(mesh, edges));
     if (!error.empty())
     {
       Fail(error);

@@ -153,6 +153,17 @@ double unitScale(const Array<Point>& a, const Array<Point>& b)
     : 1.0;
 }
 
+/// The points of input times scale, and its segments.
+Pslg scaledBy(const Pslg& input, double scale)
+{
+  Pslg scaled;
+  scaled.points.reserve(input.points.size());
+  for (const Point& q : input.points)
+    scaled.points.push_back({ q.x * scale, q.y * scale });
+  scaled.segments = input.segments;
+  return scaled;
+}
+
 /// The distance within which a vertex lies on a segment: the tolerance, and
 /// at least what rounding a stitch vertex moves it by.
 double onSegmentReach(const Pslg& input, double tolerance)
@@ -270,11 +281,7 @@ bool visitInputWeights(
   // Coordinates scaled by a power of two (exactly) to magnitudes about 1,
   // so that no square or circumcircle test overflows, at 1e300 or 1e-300.
   const double scale = unitScale(input.points, vertices);
-  Pslg scaled;
-  scaled.points.reserve(input.points.size());
-  for (const Point& q : input.points)
-    scaled.points.push_back({ q.x * scale, q.y * scale });
-  scaled.segments = input.segments;
+  const Pslg scaled = scaledBy(input, scale);
   auto at = [&](std::size_t v) { return Point{ vertices[v].x * scale, vertices[v].y * scale }; };
 
   // Input vertices and points on segments: their own terms, visited at once
@@ -357,6 +364,21 @@ bool visitInputWeights(
       return false;
   }
   return true;
+}
+
+Array<int> segmentsUnder(const Pslg& input, const Array<Point>& points, double tolerance)
+{
+  const double scale = unitScale(input.points, points);
+  const Pslg scaled = scaledBy(input, scale);
+  const SegmentGrid grid(scaled, onSegmentReach(scaled, tolerance * scale));
+  Array<int> under;
+  under.reserve(points.size());
+  for (const Point& p : points)
+  {
+    double t = 0;
+    under.push_back(grid.nearest({ p.x * scale, p.y * scale }, t));
+  }
+  return under;
 }
 
 } // namespace osm

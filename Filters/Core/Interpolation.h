@@ -50,6 +50,11 @@ using TermsVisitor = std::function<bool(const VertexTerms&)>;
 bool visitInputWeights(
   const Pslg& input, const Result& result, double tolerance, const TermsVisitor& visit);
 
+/// For each point, the input segment it lies on (within tolerance, as
+/// visitInputWeights decides it), else -1: the segment under the midpoint
+/// of an input subsegment, say.
+Array<int> segmentsUnder(const Pslg& input, const Array<Point>& points, double tolerance = 0.0);
+
 } // namespace osm
 
 #endif

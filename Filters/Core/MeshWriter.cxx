@@ -13,8 +13,10 @@ namespace osm
 namespace
 {
 
-/// Mesh edges as sorted (lo, hi) pairs, each once, with an input flag.
-std::vector<std::array<int, 3>> meshEdges(const Result& r)
+/// Mesh edges as sorted (lo, hi) pairs, each once, with a marker: that of
+/// the input subsegment (per Result::edges entry; 1 when none are given), 0
+/// for the others.
+std::vector<std::array<int, 3>> meshEdges(const Result& r, const std::vector<int>& markers = {})
 {
   std::vector<std::array<int, 3>> edges;
   for (const Triangle& t : r.mesh.triangles)
@@ -36,8 +38,9 @@ std::vector<std::array<int, 3>> meshEdges(const Result& r)
       byPoint.begin(), byPoint.end(), p, [](const auto& a, const Point& q) { return a.first < q; });
     return it != byPoint.end() && it->first == p ? it->second : -1;
   };
-  for (const Edge& e : r.edges)
+  for (std::size_t i = 0; i < r.edges.size(); ++i)
   {
+    const Edge& e = r.edges[i];
     if (!(e.flags & EdgeInput))
       continue;
     const int a = find(r.edgeVertices[e.a]), b = find(r.edgeVertices[e.b]);
@@ -46,7 +49,7 @@ std::vector<std::array<int, 3>> meshEdges(const Result& r)
     const std::array<int, 3> key{ std::min(a, b), std::max(a, b), 0 };
     auto it = std::lower_bound(edges.begin(), edges.end(), key);
     if (it != edges.end() && (*it)[0] == key[0] && (*it)[1] == key[1])
-      (*it)[2] = 1;
+      (*it)[2] = markers.empty() ? 1 : markers[i];
   }
   return edges;
 }
@@ -57,7 +60,8 @@ std::string writeTriangleFiles(const std::string& base, const Result& r, const N
 {
   const std::size_t n = r.mesh.vertices.size();
   if (data.attributes.size() != n * data.attributeCount ||
-    (!data.markers.empty() && data.markers.size() != n))
+    (!data.markers.empty() && data.markers.size() != n) ||
+    (!data.edgeMarkers.empty() && data.edgeMarkers.size() != r.edges.size()))
     return "internal error: vertex attributes or markers for " + base +
       ".node do not match its vertices";
   std::ofstream node(base + ".node"), ele(base + ".ele"), edge(base + ".edge");
@@ -97,7 +101,7 @@ std::string writeTriangleFiles(const std::string& base, const Result& r, const N
     }
     ele << r.regionId[t] << '\n';
   }
-  const std::vector<std::array<int, 3>> edges = meshEdges(r);
+  const std::vector<std::array<int, 3>> edges = meshEdges(r, data.edgeMarkers);
   edge << edges.size() << " 1\n";
   for (std::size_t e = 0; e < edges.size(); ++e)
     edge << e + 1 << ' ' << edges[e][0] + 1 << ' ' << edges[e][1] + 1 << ' ' << edges[e][2] << '\n';

@@ -13,13 +13,17 @@ namespace osm
 {
 
 /// What the .node file gives each vertex besides its coordinates, as
-/// Triangle writes its vertex attributes and boundary markers.
+/// Triangle writes its vertex attributes and boundary markers, and the
+/// .edge file's markers of the input subsegments.
 struct NodeData
 {
   std::size_t attributeCount = 0; ///< per vertex
   std::vector<double> attributes; ///< vertex-major: attributeCount per vertex
   /// Per vertex; empty: 1 for the input vertices, 0 for the others.
   std::vector<int> markers;
+  /// Per entry of Result::edges: the .edge marker of the mesh edge it is
+  /// when an input subsegment; empty: 1.
+  std::vector<int> edgeMarkers;
 };
 
 /// Write base.node, base.ele and base.edge (1-based, as Triangle writes them).

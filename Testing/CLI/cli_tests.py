@@ -288,7 +288,8 @@ def group_options():
                   "--svg %s: %d dashed discarded edges" % (name, s.get("DiscardedEdges", -1)),
                   str(len(dashed)))
             bold = list(groups["input"].iter(ns + "line"))
-            input_edges = sum(1 for _, _, m in edges if m == 1)
+            # Input subsegments carry their segment's marker (1 or 2 here), others 0.
+            input_edges = sum(1 for _, _, m in edges if m != 0)
             check(len(bold) == input_edges and
                   all(float(l.get("stroke-width")) > 1 for l in bold),
                   "--svg %s: %d bold input subsegments" % (name, input_edges), str(len(bold)))
@@ -373,9 +374,17 @@ def group_formats():
     inside_hole = [tri for tri in t if
                    4 < sum(v[i - 1][0] for i in tri) / 3 < 6 and 4 < sum(v[i - 1][1] for i in tri) / 3 < 6]
     check(not inside_hole, "the file's hole is honoured: no triangle in (4,6)x(4,6)")
-    input_length = sum(math.dist(v[a - 1], v[b - 1]) for a, b, m in e if m == 1)
-    check(abs(input_length - 48.0) < 1e-9, ".edge: input subsegments (marker 1) add up to 40 + 8",
-          str(input_length))
+    # Triangle's .edge markers: each input subsegment its segment's (1 outside,
+    # 2 around the hole), the other edges 0.
+    outer = sum(math.dist(v[a - 1], v[b - 1]) for a, b, m in e if m == 1)
+    hole = sum(math.dist(v[a - 1], v[b - 1]) for a, b, m in e if m == 2)
+    check(abs(outer - 40.0) < 1e-9 and abs(hole - 8.0) < 1e-9 and
+          all(m in (0, 1, 2) for _, _, m in e),
+          ".edge: the segments' markers on their subsegments, 40 long with 1, 8 with 2",
+          (outer, hole))
+    _, _, bare_edges = read_triangle_files(out("bare"))
+    check(abs(sum(math.dist(v[a - 1], v[b - 1]) for a, b, m in bare_edges if m == 1) - 48.0) < 1e-9,
+          "--no-point-data: .edge marks every input subsegment 1 (40 + 8 long)")
     # .vtu and .vtp hold the same mesh: validated above; the .vtk too.
     # Sizes agree between formats (validator summaries).
     summaries = {}

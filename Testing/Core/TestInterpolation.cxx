@@ -267,3 +267,15 @@ TEST(Interpolation, HugeAndTinyCoordinatesGiveTheSameTerms)
     }
   }
 }
+
+// The segment under a point: the nearest within the tolerance, else none.
+TEST(Interpolation, SegmentsUnderPoints)
+{
+  Pslg in;
+  in.points = { { 0, 0 }, { 10, 0 }, { 10, 10 }, { 3, 1e-3 } };
+  in.segments = { { 0, 1 }, { 1, 2 }, { 0, 0 } }; // the last one has no length
+  const Array<Point> points = { { 5, 0 }, { 10, 5 }, { 10, 0 }, { 5, 5 }, { 4, 1e-12 },
+    { 4, 1e-6 } };
+  EXPECT_EQ(segmentsUnder(in, points), (Array<int>{ 0, 1, 1, -1, 0, -1 }));
+  EXPECT_EQ(segmentsUnder(in, points, 1e-5), (Array<int>{ 0, 1, 1, -1, 0, 0 }));
+}

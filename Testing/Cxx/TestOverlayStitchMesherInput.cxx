@@ -1331,6 +1331,29 @@ int TestPointData()
       std::to_string(onSegments) + " on segments, " + std::to_string(steiner) + " others, " +
       std::to_string(wrongMarkers) + " wrong)");
 
+  // Triangle's .edge markers on the Edges output: an input subsegment takes
+  // its segment's marker, any other edge 0.
+  vtkPolyData* edges = h.Mesher->GetEdgesOutput();
+  auto* edgeMarker = vtkIntArray::SafeDownCast(edges->GetCellData()->GetArray("SegmentMarker"));
+  auto* isInput = edges->GetCellData()->GetArray("Input");
+  int wrongEdges = 0;
+  vtkIdType inputEdges = 0;
+  for (vtkIdType e = 0; edgeMarker && isInput && e < edges->GetNumberOfCells(); ++e)
+  {
+    double a[3], b[3];
+    vtkIdList* ids = edges->GetCell(e)->GetPointIds();
+    edges->GetPoint(ids->GetId(0), a);
+    edges->GetPoint(ids->GetId(1), b);
+    const bool inner = a[0] == 5 && b[0] == 5;
+    const int expected = isInput->GetComponent(e, 0) == 0 ? 0 : inner ? 2 : 1;
+    inputEdges += expected != 0;
+    wrongEdges += edgeMarker->GetValue(e) != expected;
+  }
+  Check(edgeMarker && inputEdges > 0 && wrongEdges == 0,
+    "point data: the Edges output's SegmentMarker is the segment's on input subsegments, 0 "
+    "elsewhere (" +
+      std::to_string(inputEdges) + " input subsegments, " + std::to_string(wrongEdges) + " wrong)");
+
   // An input array named like the mesh's own is left out, with a warning.
   vtkNew<vtkDoubleArray> clash;
   clash->SetName("VertexOrigin");
