@@ -52,8 +52,8 @@ vtkDataArray* SegmentMarkers(vtkCellData* cells)
 
 bool OverlayStitchInterpolatePointData(vtkPointData* in, vtkCellData* inCells,
   const osm::Pslg& pslg, const osm::Result& result, const std::vector<vtkIdType>& segmentCells,
-  double tolerance, vtkPointData* out, const std::function<bool(double)>& poll,
-  std::vector<std::string>& warnings)
+  double tolerance, const std::vector<std::string>& reserved, vtkPointData* out,
+  const std::function<bool(double)>& poll, std::vector<std::string>& warnings)
 {
   const auto vertices = static_cast<vtkIdType>(result.mesh.vertices.size());
   vtkDataArray* segmentMarkers = SegmentMarkers(inCells);
@@ -62,7 +62,7 @@ bool OverlayStitchInterpolatePointData(vtkPointData* in, vtkCellData* inCells,
   {
     vtkAbstractArray* source = in->GetAbstractArray(i);
     const char* name = source->GetName();
-    if (name && out->GetAbstractArray(name))
+    if (name && std::find(reserved.begin(), reserved.end(), name) != reserved.end())
     {
       warnings.push_back(std::string("The input's point data array ") + name +
         " is not carried to the mesh: the mesh has an array of that name of its own.");
@@ -195,4 +195,20 @@ void OverlayStitchSegmentMarkers(vtkCellData* inCells, const osm::Pslg& pslg,
     markers->SetValue(static_cast<vtkIdType>(e), marker);
   }
   edges->GetCellData()->AddArray(markers);
+}
+
+void OverlayStitchMovePointData(vtkPointData* from, vtkPointData* to)
+{
+  for (int i = 0; i < from->GetNumberOfArrays(); ++i)
+  {
+    to->AddArray(from->GetAbstractArray(i));
+  }
+  for (int a = 0; a < vtkDataSetAttributes::NUM_ATTRIBUTES; ++a)
+  {
+    vtkAbstractArray* active = from->GetAbstractAttribute(a);
+    if (active && active->GetName())
+    {
+      to->SetActiveAttribute(active->GetName(), a);
+    }
+  }
 }

@@ -34,16 +34,19 @@ struct Pslg;
 struct Result;
 }
 
-/// Fills out (the mesh's point data) from in (the input's, point i being the
-/// Pslg's point i). segmentCells gives each Pslg segment's input cell, whose
-/// cell data (inCells) holds the segment markers. tolerance: the merge
-/// tolerance. An input array named like an output array (VertexOrigin) is
-/// left out, with a warning. poll reports the fraction done and returns true
-/// to stop; returns false when stopped.
+/// Fills out with the mesh's point data from in (the input's, point i being
+/// the Pslg's point i). segmentCells gives each Pslg segment's input cell,
+/// whose cell data (inCells) holds the segment markers. tolerance: the merge
+/// tolerance. An input array with one of the reserved names (the mesh's own
+/// arrays) is left out, with a warning. poll reports the fraction done and
+/// returns true to stop; returns false when stopped.
 bool OverlayStitchInterpolatePointData(vtkPointData* in, vtkCellData* inCells,
   const osm::Pslg& pslg, const osm::Result& result, const std::vector<vtkIdType>& segmentCells,
-  double tolerance, vtkPointData* out, const std::function<bool(double)>& poll,
-  std::vector<std::string>& warnings);
+  double tolerance, const std::vector<std::string>& reserved, vtkPointData* out,
+  const std::function<bool(double)>& poll, std::vector<std::string>& warnings);
+
+/// Adds the arrays of from to to, with their active attributes.
+void OverlayStitchMovePointData(vtkPointData* from, vtkPointData* to);
 
 /// Triangle's segment markers on the Edges output (edges: result.edges as
 /// lines, in order): a cell array "SegmentMarker" giving each input

@@ -46,6 +46,7 @@
 #include <exception>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -980,6 +981,16 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
 
   // The core's phases (clean, overlay, stitch, complete, domain).
   ProgressAdapter progress(this, 0.05, 0.9);
+  // Carrying point data takes its scratch memory from the pages the mesher
+  // frees (kept while this scope lives) instead of fresh ones, whose first
+  // touch costs most of its time on a virtual machine.
+  const bool interpolate =
+    this->InterpolatePointData && input->GetPointData()->GetNumberOfArrays() > 0;
+  std::optional<osm::pages::Reuse> reuse;
+  if (interpolate)
+  {
+    reuse.emplace();
+  }
   osm::Result result;
   try
   {
@@ -1024,14 +1035,6 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   {
     return 1;
   }
-  FillMesh(result, map, mesh, [this](double fraction) {
-    this->UpdateProgress(0.9 + 0.03 * fraction);
-    return AbortRequested(this);
-  });
-  if (aborted())
-  {
-    return 1;
-  }
   std::vector<vtkIdType> segmentCells;
   if (this->InterpolatePointData)
   {
@@ -1041,14 +1044,15 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
       segmentCells.push_back(source.Cell);
     }
   }
-  if (this->InterpolatePointData && input->GetPointData()->GetNumberOfArrays() > 0)
+  vtkNew<vtkPointData> carried;
+  if (interpolate)
   {
     std::vector<std::string> warnings;
     OverlayStitchInterpolatePointData(
       input->GetPointData(), input->GetCellData(), pslg, result, segmentCells, this->MergeTolerance,
-      mesh->GetPointData(),
+      { "VertexOrigin" }, carried,
       [this](double fraction) {
-        this->UpdateProgress(0.93 + 0.02 * fraction);
+        this->UpdateProgress(0.9 + 0.03 * fraction);
         return AbortRequested(this);
       },
       warnings);
@@ -1056,11 +1060,21 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
     {
       vtkWarningMacro(<< warning);
     }
+    reuse.reset();
   }
   if (aborted())
   {
     return 1;
   }
+  FillMesh(result, map, mesh, [this](double fraction) {
+    this->UpdateProgress(0.93 + 0.02 * fraction);
+    return AbortRequested(this);
+  });
+  if (aborted())
+  {
+    return 1;
+  }
+  OverlayStitchMovePointData(carried, mesh->GetPointData());
   auto addCount = [mesh](const char* name, double value) {
     auto array = MakeArray<vtkDoubleArray>(name, 1);
     array->SetValue(0, value);
