@@ -52,7 +52,7 @@ vtkDataArray* SegmentMarkers(vtkCellData* cells)
 
 bool OverlayStitchInterpolatePointData(vtkPointData* in, vtkCellData* inCells,
   const osm::Pslg& pslg, const osm::Result& result, const std::vector<vtkIdType>& segmentCells,
-  double tolerance, const std::vector<std::string>& reserved, vtkPointData* out,
+  const std::vector<std::string>& reserved, vtkPointData* out,
   const std::function<bool(double)>& poll, std::vector<std::string>& warnings)
 {
   const auto vertices = static_cast<vtkIdType>(result.mesh.vertices.size());
@@ -92,7 +92,7 @@ bool OverlayStitchInterpolatePointData(vtkPointData* in, vtkCellData* inCells,
   vtkNew<vtkIdList> ids;
   double weights[6];
   vtkIdType visited = 0;
-  const bool done = osm::visitInputWeights(pslg, result, tolerance, [&](const osm::VertexTerms& t) {
+  const bool done = osm::visitInputWeights(pslg, result, [&](const osm::VertexTerms& t) {
     if ((++visited & 0xffff) == 0 && poll(static_cast<double>(visited) / vertices))
     {
       return false;
@@ -159,35 +159,22 @@ bool OverlayStitchInterpolatePointData(vtkPointData* in, vtkCellData* inCells,
 }
 
 void OverlayStitchSegmentMarkers(vtkCellData* inCells, const osm::Pslg& pslg,
-  const osm::Result& result, const std::vector<vtkIdType>& segmentCells, double tolerance,
-  vtkPolyData* edges)
+  const osm::Result& result, const std::vector<vtkIdType>& segmentCells, vtkPolyData* edges)
 {
   vtkDataArray* segmentMarkers = SegmentMarkers(inCells);
   if (!segmentMarkers || edges->GetNumberOfCells() != static_cast<vtkIdType>(result.edges.size()))
   {
     return;
   }
-  // An input subsegment's midpoint lies on its segment.
-  osm::Array<osm::Point> midpoints;
-  for (const osm::Edge& e : result.edges)
-  {
-    if (e.flags & osm::EdgeInput)
-    {
-      const osm::Point &a = result.edgeVertices[e.a], &b = result.edgeVertices[e.b];
-      midpoints.push_back({ 0.5 * (a.x + b.x), 0.5 * (a.y + b.y) });
-    }
-  }
-  const osm::Array<int> under = osm::segmentsUnder(pslg, midpoints, tolerance);
   vtkNew<vtkIntArray> markers;
   markers->SetName("SegmentMarker");
   markers->SetNumberOfTuples(static_cast<vtkIdType>(result.edges.size()));
-  std::size_t next = 0;
   for (std::size_t e = 0; e < result.edges.size(); ++e)
   {
     int marker = 0;
     if (result.edges[e].flags & osm::EdgeInput)
     {
-      const int s = under[next++];
+      const int s = result.edges[e].segment;
       marker = s >= 0 ? static_cast<int>(segmentMarkers->GetComponent(
                           segmentCells[static_cast<std::size_t>(s)], 0))
                       : 1;

@@ -36,13 +36,13 @@ struct Result;
 
 /// Fills out with the mesh's point data from in (the input's, point i being
 /// the Pslg's point i). segmentCells gives each Pslg segment's input cell,
-/// whose cell data (inCells) holds the segment markers. tolerance: the merge
-/// tolerance. An input array with one of the reserved names (the mesh's own
+/// whose cell data (inCells) holds the segment markers; result must come from
+/// Options::keepVertexSegments. An input array with one of the reserved names (the mesh's own
 /// arrays) is left out, with a warning. poll reports the fraction done and
 /// returns true to stop; returns false when stopped.
 bool OverlayStitchInterpolatePointData(vtkPointData* in, vtkCellData* inCells,
   const osm::Pslg& pslg, const osm::Result& result, const std::vector<vtkIdType>& segmentCells,
-  double tolerance, const std::vector<std::string>& reserved, vtkPointData* out,
+  const std::vector<std::string>& reserved, vtkPointData* out,
   const std::function<bool(double)>& poll, std::vector<std::string>& warnings);
 
 /// Adds the arrays of from to to, with their active attributes.
@@ -50,12 +50,11 @@ void OverlayStitchMovePointData(vtkPointData* from, vtkPointData* to);
 
 /// Triangle's segment markers on the Edges output (edges: result.edges as
 /// lines, in order): a cell array "SegmentMarker" giving each input
-/// subsegment the marker of the input segment it lies on, 1 where it lies on
-/// none (the hull's edges, as Triangle marks boundary edges), and 0 to the
-/// other edges. Nothing when the input's cells have no integer
+/// subsegment the marker of its input segment (osm::Edge::segment), 1 where
+/// it has none (the hull's edges, as Triangle marks boundary edges), and 0
+/// to the other edges. Nothing when the input's cells have no integer
 /// "SegmentMarker".
 void OverlayStitchSegmentMarkers(vtkCellData* inCells, const osm::Pslg& pslg,
-  const osm::Result& result, const std::vector<vtkIdType>& segmentCells, double tolerance,
-  vtkPolyData* edges);
+  const osm::Result& result, const std::vector<vtkIdType>& segmentCells, vtkPolyData* edges);
 
 #endif

@@ -949,6 +949,8 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   }
   this->UpdateProgress(0.05);
 
+  const bool interpolate =
+    this->InterpolatePointData && input->GetPointData()->GetNumberOfArrays() > 0;
   osm::Options options;
   options.minAngleDeg = this->MinimumAngle;
   options.maxEdgeLength = this->MaximumEdgeLength;
@@ -973,6 +975,7 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   options.maxSteinerPoints = static_cast<std::size_t>(this->MaximumSteinerPoints);
   options.keepEdges = this->GenerateEdges != 0;
   options.keepOverlay = this->GenerateOverlay != 0;
+  options.keepVertexSegments = interpolate; // the segment of each vertex, to carry data along
   if (map.isFitted())
   {
     // Points named in messages in the input's 3D coordinates, not the plane's 2D frame.
@@ -984,8 +987,6 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   // Carrying point data takes its scratch memory from the pages the mesher
   // frees (kept while this scope lives) instead of fresh ones, whose first
   // touch costs most of its time on a virtual machine.
-  const bool interpolate =
-    this->InterpolatePointData && input->GetPointData()->GetNumberOfArrays() > 0;
   std::optional<osm::pages::Reuse> reuse;
   if (interpolate)
   {
@@ -1049,8 +1050,8 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   {
     std::vector<std::string> warnings;
     OverlayStitchInterpolatePointData(
-      input->GetPointData(), input->GetCellData(), pslg, result, segmentCells, this->MergeTolerance,
-      { "VertexOrigin" }, carried,
+      input->GetPointData(), input->GetCellData(), pslg, result, segmentCells, { "VertexOrigin" },
+      carried,
       [this](double fraction) {
         this->UpdateProgress(0.9 + 0.03 * fraction);
         return AbortRequested(this);
@@ -1097,8 +1098,7 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
     });
     if (this->InterpolatePointData)
     {
-      OverlayStitchSegmentMarkers(
-        input->GetCellData(), pslg, result, segmentCells, this->MergeTolerance, edges);
+      OverlayStitchSegmentMarkers(input->GetCellData(), pslg, result, segmentCells, edges);
     }
   }
   this->UpdateProgress(0.98);

@@ -20,125 +20,6 @@ double along(const Point& p, const Point& a, const Point& b)
   return std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
 }
 
-/// The valid input segments in grid cells of about their own spacing, each in
-/// every cell its reach-wide neighbourhood meets: the cell of a point lists
-/// every segment within reach of it.
-class SegmentGrid
-{
-public:
-  SegmentGrid(const Pslg& input, double reach)
-    : in(input)
-    , reach(reach)
-  {
-    Array<int> valid;
-    Bounds b = emptyBounds();
-    double length = 0;
-    const int n = static_cast<int>(in.points.size());
-    for (int s = 0; s < static_cast<int>(in.segments.size()); ++s)
-    {
-      const Segment& e = in.segments[s];
-      if (e[0] < 0 || e[1] < 0 || e[0] >= n || e[1] >= n || in.points[e[0]] == in.points[e[1]])
-        continue;
-      valid.push_back(s);
-      extend(b, in.points[e[0]]);
-      extend(b, in.points[e[1]]);
-      length += std::sqrt(dist2(in.points[e[0]], in.points[e[1]]));
-    }
-    if (valid.empty())
-      return;
-    box = { { b.lo.x - reach, b.lo.y - reach }, { b.hi.x + reach, b.hi.y + reach } };
-    // About two cells per segment, however the segments are spread, and at
-    // least half a segment's mean length: a segment then covers a few cells.
-    const double m = 2.0 * static_cast<double>(valid.size());
-    cell = std::max({ std::sqrt(box.width() * box.height() / m),
-      std::max(box.width(), box.height()) / m, length / m });
-    nx = static_cast<int>(box.width() / cell) + 1;
-    ny = static_cast<int>(box.height() / cell) + 1;
-    Array<std::pair<int, int>> entries; // (cell, segment)
-    for (int s : valid)
-      cover(s, entries);
-    std::sort(entries.begin(), entries.end());
-    entries.erase(std::unique(entries.begin(), entries.end()), entries.end());
-    start.assign(static_cast<std::size_t>(nx) * ny + 1, 0);
-    for (const auto& e : entries)
-      ++start[e.first + 1];
-    for (std::size_t c = 1; c < start.size(); ++c)
-      start[c] += start[c - 1];
-    ids.reserve(entries.size());
-    for (const auto& e : entries)
-      ids.push_back(e.second);
-  }
-
-  /// The input segment nearest p if within reach, else -1; t is p's
-  /// position along it (0 at its first point, 1 at its second).
-  int nearest(const Point& p, double& t) const
-  {
-    if (ids.empty() || p.x < box.lo.x || p.y < box.lo.y || p.x > box.hi.x || p.y > box.hi.y)
-      return -1;
-    const std::size_t c = cellOf(p);
-    int best = -1;
-    double bestDistance2 = reach * reach;
-    for (std::size_t k = start[c]; k < start[c + 1]; ++k)
-    {
-      const Segment& e = in.segments[ids[k]];
-      const Point &a = in.points[e[0]], &b = in.points[e[1]];
-      const double u = along(p, a, b);
-      const double d2 = dist2(p, { a.x + u * (b.x - a.x), a.y + u * (b.y - a.y) });
-      if (d2 <= bestDistance2)
-      {
-        best = ids[k];
-        bestDistance2 = d2;
-        t = u;
-      }
-    }
-    return best;
-  }
-
-private:
-  const Pslg& in;
-  double reach;
-  Bounds box{};
-  double cell = 1;
-  int nx = 0, ny = 0;
-  Array<std::size_t> start;
-  Array<int> ids;
-
-  std::size_t cellOf(const Point& p) const
-  {
-    const int i = std::min(nx - 1, static_cast<int>((p.x - box.lo.x) / cell));
-    const int j = std::min(ny - 1, static_cast<int>((p.y - box.lo.y) / cell));
-    return static_cast<std::size_t>(j) * nx + i;
-  }
-
-  /// Lists s in the cells its reach-wide neighbourhood meets, a piece of at
-  /// most a cell's length at a time (so a long diagonal takes a band of
-  /// cells, not its bounding box's).
-  void cover(int s, Array<std::pair<int, int>>& entries) const
-  {
-    const Point a = in.points[in.segments[s][0]], b = in.points[in.segments[s][1]];
-    const int pieces = static_cast<int>(std::ceil(std::sqrt(dist2(a, b)) / cell)) + 1;
-    for (int k = 0; k < pieces; ++k)
-    {
-      const double t0 = double(k) / pieces, t1 = double(k + 1) / pieces;
-      const Point p = { a.x + t0 * (b.x - a.x), a.y + t0 * (b.y - a.y) };
-      const Point q = { a.x + t1 * (b.x - a.x), a.y + t1 * (b.y - a.y) };
-      const auto lo = cellIndex({ std::min(p.x, q.x) - reach, std::min(p.y, q.y) - reach });
-      const auto hi = cellIndex({ std::max(p.x, q.x) + reach, std::max(p.y, q.y) + reach });
-      for (int j = lo.second; j <= hi.second; ++j)
-        for (int i = lo.first; i <= hi.first; ++i)
-          entries.push_back({ j * nx + i, s });
-    }
-  }
-
-  std::pair<int, int> cellIndex(const Point& p) const
-  {
-    auto clampTo = [](double x, int n) {
-      return x <= 0 ? 0 : x >= n - 1 ? n - 1 : static_cast<int>(x);
-    };
-    return { clampTo((p.x - box.lo.x) / cell, nx), clampTo((p.y - box.lo.y) / cell, ny) };
-  }
-};
-
 /// A power of two that brings the largest coordinate of a and b near 1
 /// (within the normal range of powers of two).
 double unitScale(const Array<Point>& a, const Array<Point>& b)
@@ -153,27 +34,13 @@ double unitScale(const Array<Point>& a, const Array<Point>& b)
     : 1.0;
 }
 
-/// The points of input times scale, and its segments.
-Pslg scaledBy(const Pslg& input, double scale)
+/// Twice the signed area of abc, to about an ulp: in doubles, or exactly
+/// where rounding could be much of it (in slivers, where the fuzzer found
+/// weights off by 1e-9 of the field).
+double twiceArea(const Point& a, const Point& b, const Point& c)
 {
-  Pslg scaled;
-  scaled.points.reserve(input.points.size());
-  for (const Point& q : input.points)
-    scaled.points.push_back({ q.x * scale, q.y * scale });
-  scaled.segments = input.segments;
-  return scaled;
-}
-
-/// The distance within which a vertex lies on a segment: the tolerance, and
-/// at least what rounding a stitch vertex moves it by.
-double onSegmentReach(const Pslg& input, double tolerance)
-{
-  const Bounds b = boundsOf(input.points);
-  const double magnitude =
-    std::max({ std::abs(b.lo.x), std::abs(b.lo.y), std::abs(b.hi.x), std::abs(b.hi.y) });
-  const double extent = std::max(b.width(), b.height());
-  return std::max({ tolerance, 1e-9 * extent,
-    64 * std::numeric_limits<double>::epsilon() * magnitude, std::numeric_limits<double>::min() });
+  const double l = (b.x - a.x) * (c.y - a.y), r = (b.y - a.y) * (c.x - a.x);
+  return std::abs(l - r) > 1e-14 * (std::abs(l) + std::abs(r)) ? l - r : orient2dAccurate(a, b, c);
 }
 
 /// The terms of p in triangle t of T, from those of its known vertices
@@ -193,12 +60,9 @@ void termsIn(const Triangulation& T, int t, const Point& p, const Array<int>& kn
   if (count == 3)
   {
     const Point &a = T.vertex(t, 0), &b = T.vertex(t, 1), &c = T.vertex(t, 2);
-    auto cross = [](const Point& o, const Point& u, const Point& v) {
-      return (u.x - o.x) * (v.y - o.y) - (u.y - o.y) * (v.x - o.x);
-    };
-    lambda[0] = std::max(0.0, cross(p, b, c));
-    lambda[1] = std::max(0.0, cross(a, p, c));
-    lambda[2] = std::max(0.0, cross(a, b, p));
+    lambda[0] = std::max(0.0, twiceArea(p, b, c));
+    lambda[1] = std::max(0.0, twiceArea(a, p, c));
+    lambda[2] = std::max(0.0, twiceArea(a, b, p));
   }
   else if (count == 2)
   {
@@ -264,8 +128,7 @@ void VertexTerms::add(int p, double w)
   weight[count++] = w;
 }
 
-bool visitInputWeights(
-  const Pslg& input, const Result& result, double tolerance, const TermsVisitor& visit)
+bool visitInputWeights(const Pslg& input, const Result& result, const TermsVisitor& visit)
 {
   const pages::Reuse reuse; // the scratch arrays in huge pages, freed ones used again
   const Array<Point>& vertices = result.mesh.vertices;
@@ -277,16 +140,26 @@ bool visitInputWeights(
     if (v >= 0 && inputPoint[v] < 0)
       inputPoint[v] = static_cast<int>(i);
   }
-
   // Coordinates scaled by a power of two (exactly) to magnitudes about 1,
-  // so that no square or circumcircle test overflows, at 1e300 or 1e-300.
+  // so that no circumcircle test overflows, at 1e300 or 1e-300.
   const double scale = unitScale(input.points, vertices);
-  const Pslg scaled = scaledBy(input, scale);
-  auto at = [&](std::size_t v) { return Point{ vertices[v].x * scale, vertices[v].y * scale }; };
+  auto scaled = [scale](const Point& p) { return Point{ p.x * scale, p.y * scale }; };
+  // The segment the mesher found a vertex on, if it is a segment of length.
+  const bool segmentsKnown = result.vertexSegment.size() == n;
+  auto segmentOf = [&](std::size_t v) {
+    const int s = segmentsKnown ? result.vertexSegment[v] : -1;
+    const int points = static_cast<int>(input.points.size());
+    if (s < 0 || s >= static_cast<int>(input.segments.size()))
+      return -1;
+    const Segment& e = input.segments[s];
+    return e[0] >= 0 && e[1] >= 0 && e[0] < points && e[1] < points &&
+        input.points[e[0]] != input.points[e[1]]
+      ? s
+      : -1;
+  };
 
   // Input vertices and points on segments: their own terms, visited at once
   // and kept as (input point or segment, position along it) for the others.
-  const SegmentGrid grid(scaled, onSegmentReach(scaled, tolerance * scale));
   Array<int> unknown;
   Array<Point> knownPoints;
   Array<int> knownSegment;  // per known point: its segment, or -1
@@ -303,19 +176,19 @@ bool visitInputWeights(
   };
   for (std::size_t v = 0; v < n; ++v)
   {
-    // Overlay Steiner points lie on a segment only by chance; the others
-    // are looked up.
-    double t = 0;
-    const bool lookUp = inputPoint[v] < 0 && result.vertexOrigin[v] != VertexOrigin::Overlay;
-    const int segment = lookUp ? grid.nearest(at(v), t) : -1;
+    const Point p = scaled(vertices[v]);
+    const int segment = inputPoint[v] >= 0 ? -1 : segmentOf(v);
     if (inputPoint[v] < 0 && segment < 0)
     {
       unknown.push_back(static_cast<int>(v));
       continue;
     }
-    knownPoints.push_back(at(v));
+    const Segment e = segment >= 0 ? input.segments[segment] : Segment{ 0, 0 };
+    knownPoints.push_back(p);
     knownSegment.push_back(segment);
-    knownAlong.push_back(segment < 0 ? inputPoint[v] : t);
+    knownAlong.push_back(segment < 0
+        ? inputPoint[v]
+        : along(p, scaled(input.points[e[0]]), scaled(input.points[e[1]])));
     VertexTerms terms;
     terms.vertex = v;
     terms.inputPoint = inputPoint[v];
@@ -345,7 +218,7 @@ bool visitInputWeights(
   Array<Point> unknownPoints;
   unknownPoints.reserve(unknown.size());
   for (int v : unknown)
-    unknownPoints.push_back(at(v));
+    unknownPoints.push_back(scaled(vertices[v]));
   int start = 0;
   while (start < T.slots() && !T.alive(start))
     ++start;
@@ -364,21 +237,6 @@ bool visitInputWeights(
       return false;
   }
   return true;
-}
-
-Array<int> segmentsUnder(const Pslg& input, const Array<Point>& points, double tolerance)
-{
-  const double scale = unitScale(input.points, points);
-  const Pslg scaled = scaledBy(input, scale);
-  const SegmentGrid grid(scaled, onSegmentReach(scaled, tolerance * scale));
-  Array<int> under;
-  under.reserve(points.size());
-  for (const Point& p : points)
-  {
-    double t = 0;
-    under.push_back(grid.nearest({ p.x * scale, p.y * scale }, t));
-  }
-  return under;
 }
 
 } // namespace osm

@@ -3,10 +3,11 @@
 // reaches the points the mesher adds, as Triangle interpolates its vertex
 // attributes.
 //
-// An input vertex takes its own value. A point the mesher put on an input
-// segment (a stitch vertex, a crossing of two segments) takes the value
-// linear along that segment, between its two ends. Every other point (an
-// overlay Steiner point, a point on the hull's edges,
+// An input vertex takes its own value. A point the mesher found on an input
+// segment (a stitch vertex, a crossing of two segments, an overlay vertex a
+// segment passes through; Result::vertexSegment) takes the value linear
+// along that segment, between its two ends. Every other point (an overlay
+// Steiner point, a point on the hull's edges,
 // a point splitting a long edge) takes the value linear within the triangle
 // that holds it in the Delaunay triangulation of the points of the first two
 // kinds. Those on the segments make that triangulation follow the segments,
@@ -31,7 +32,7 @@ struct VertexTerms
 {
   std::size_t vertex = 0;
   int inputPoint = -1; ///< the input point it is (the first merged into it), else -1
-  int segment = -1;    ///< else the input segment it lies on (within the tolerance), else -1
+  int segment = -1;    ///< else the input segment the mesher put it on, else -1
   int count = 0;       ///< 1 to 6 terms (0 only where no vertex is an input point or on a segment)
   int point[6];        ///< input points (indices in the Pslg)
   double weight[6];
@@ -43,17 +44,11 @@ struct VertexTerms
 using TermsVisitor = std::function<bool(const VertexTerms&)>;
 
 /// Visits every vertex of result's mesh of input (the same Pslg given to
-/// mesh(), and its Result) once, in no set order, with its terms. A vertex
-/// within tolerance of an input segment (at least rounding at the
-/// coordinates' magnitude and 1e-9 of the extent; pass the merge tolerance)
-/// lies on it. Returns false if the visitor stopped it.
-bool visitInputWeights(
-  const Pslg& input, const Result& result, double tolerance, const TermsVisitor& visit);
-
-/// For each point, the input segment it lies on (within tolerance, as
-/// visitInputWeights decides it), else -1: the segment under the midpoint
-/// of an input subsegment, say.
-Array<int> segmentsUnder(const Pslg& input, const Array<Point>& points, double tolerance = 0.0);
+/// mesh(), and its Result, meshed with Options::keepVertexSegments so that
+/// the segment of each vertex on one is known; else no vertex but the input
+/// ones is known) once, in no set order, with its terms. Returns false if
+/// the visitor stopped it.
+bool visitInputWeights(const Pslg& input, const Result& result, const TermsVisitor& visit);
 
 } // namespace osm
 

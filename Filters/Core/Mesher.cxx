@@ -593,7 +593,28 @@ private:
   /// otherwise fall outside the domain (worthFindingTheDomainFirst).
   bool boundWhereKept = false;
   int regionRounds = 0; ///< rounds meshed again for regions found in another place
+  /// Options::keepVertexSegments: per point of the planar graph, the input
+  /// segment the walks found it on, else -1.
+  Array<int> graphSegment;
+  void findGraphSegments(const Walk& walk, const PlanarGraph& g, const Work& w);
 };
+
+void Mesher::findGraphSegments(const Walk& walk, const PlanarGraph& g, const Work& w)
+{
+  // Walked segments past the working ones are the hull's edges: no input segment.
+  auto inputSegment = [&w](int s) {
+    return s < static_cast<int>(w.segmentOrigin.size()) ? w.segmentOrigin[s] : -1;
+  };
+  graphSegment.assign(g.points.size(), -1);
+  for (const Piece& p : walk.pieces)
+    if (!p.duplicate)
+      for (int v : { p.v0, p.v1 })
+        if (graphSegment[v] < 0)
+          graphSegment[v] = inputSegment(p.segment);
+  const std::size_t first = g.points.size() - g.stitchSegment.size();
+  for (std::size_t k = 0; k < g.stitchSegment.size(); ++k)
+    graphSegment[first + k] = inputSegment(g.stitchSegment[k]);
+}
 
 Result Mesher::execute()
 {
@@ -1051,6 +1072,8 @@ void Mesher::meshRounds(Work& w)
     run.phase("stitch", 0.7, 0.75); // the walks done: the planar graph
     PlanarGraph g = stitch(std::move(ov), std::move(overlay.mesh.points), overlay.isInput, walk,
       options.keepEdges ? &edges : nullptr, st, run);
+    if (options.keepVertexSegments)
+      findGraphSegments(walk, g, w);
     st.secondsStitch += since(t);
     overlay.mesh = Triangulation();
     walk = Walk();
@@ -1436,6 +1459,9 @@ void Mesher::buildOutput(const Work& w, const PlanarGraph& g, Completion& c, Car
         newIndex[v] = static_cast<int>(res.mesh.vertices.size());
         res.mesh.vertices.push_back(unscale(g.points[v]));
         res.vertexOrigin.push_back(g.origin[v]);
+        if (options.keepVertexSegments) // points splitting long edges are on none
+          res.vertexSegment.push_back(
+            static_cast<std::size_t>(v) < graphSegment.size() ? graphSegment[v] : -1);
       }
       v = newIndex[v];
     }
@@ -1496,6 +1522,10 @@ void Mesher::buildOutput(const Work& w, const PlanarGraph& g, Completion& c, Car
     for (const Point& p : g.points)
       res.edgeVertices.push_back(unscale(p));
     res.edges = std::move(edges);
+    for (Edge& e : res.edges) // walked segments to input segments
+      e.segment = e.segment >= 0 && e.segment < static_cast<int>(w.segmentOrigin.size())
+        ? w.segmentOrigin[e.segment]
+        : -1;
   }
   for (Point& p : res.overlay.vertices)
     p = unscale(p);

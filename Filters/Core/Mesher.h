@@ -51,6 +51,8 @@ struct Options
   /// Keep the phase-1 overlay and the classified edges in the result (for inspection).
   bool keepOverlay = true;
   bool keepEdges = true;
+  /// Fill Result::vertexSegment (for carrying data along the segments).
+  bool keepVertexSegments = false;
   /// Writes the coordinates of points named in warnings and errors (input
   /// points, crossings, seeds); empty: "(x, y)" in the input's coordinates.
   PointFormat pointFormat;
@@ -100,6 +102,8 @@ struct Edge
   int a = -1;
   int b = -1;
   std::uint8_t flags = 0;
+  /// An input subsegment's input segment (-1: a hull edge, or any other edge).
+  int segment = -1;
 };
 
 EdgeClass edgeClass(std::uint8_t flags);
@@ -127,6 +131,12 @@ struct Result
   /// For each input point (by its index in the Pslg), its vertex in mesh, or -1 if
   /// it lies outside the returned domain (e.g. inside a hole).
   Array<int> inputVertex;
+  /// When Options::keepVertexSegments: per mesh vertex, an input segment that
+  /// the walks found it on (a stitch vertex, a crossing, an overlay vertex a
+  /// segment passes through, the ends of segments), else -1 (hull edges are
+  /// no input segment). With a merge tolerance it lies on that segment's
+  /// bent chain, within the tolerance of the segment.
+  Array<int> vertexSegment;
 
   /// Overlay edges (uncrossed, kept, discarded) and input subsegments; indices
   /// refer to edgeVertices. Filled when Options::keepEdges.

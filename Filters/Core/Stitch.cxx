@@ -644,9 +644,17 @@ PlanarGraph stitch(OverlayEdges ov, Array<Point> points, const Array<char>& isIn
     ++(c.good ? stats.goodCrossings : stats.badCrossings);
   }
   stats.crossings = stats.goodCrossings + stats.badCrossings;
+  // For inspection: the segment along each overlay edge that is a piece.
+  Array<int> alongSegment;
+  if (inspect)
+    alongSegment.assign(ne, -1);
   for (const Piece& p : walk.pieces)
     if (p.overlayEdge >= 0 && !p.duplicate)
+    {
       flagEdge(ov, flags, p.overlayEdge, HalfAlongInput);
+      if (inspect)
+        alongSegment[ov.edgeId(p.overlayEdge / 3, p.overlayEdge % 3)] = p.segment;
+    }
   int intactCount = 0;
   const Array<int> intactIndex = numberIntact(flags, intactCount);
   // The faces still to trace lie on the sides of an edge whose triangle there
@@ -713,6 +721,7 @@ PlanarGraph stitch(OverlayEdges ov, Array<Point> points, const Array<char>& isIn
         const int v = static_cast<int>(g.points.size());
         g.points.push_back(c.p);
         g.origin.push_back(VertexOrigin::Stitch);
+        g.stitchSegment.push_back(segment);
         stitchVertex[order[k]] = v;
         addEdge(prev, v, false, OpenBoth);
         prev = v;
@@ -725,7 +734,7 @@ PlanarGraph stitch(OverlayEdges ov, Array<Point> points, const Array<char>& isIn
       edgeFlags |= EdgeDiscarded | EdgeCrossed;
     }
     if (inspect)
-      inspect->push_back({ ends[0], ends[1], edgeFlags });
+      inspect->push_back({ ends[0], ends[1], edgeFlags, alongSegment[e] });
   }
   listIntact(ov, flags, intactIndex, intactCount, walk, g, run);
   stats.stitchVertices = g.points.size() - overlayVertices;
@@ -743,12 +752,12 @@ PlanarGraph stitch(OverlayEdges ov, Array<Point> points, const Array<char>& isIn
         continue;
       addEdge(prev, stitchVertex[k], true, OpenBoth);
       if (inspect)
-        inspect->push_back({ prev, stitchVertex[k], EdgeInput });
+        inspect->push_back({ prev, stitchVertex[k], EdgeInput, p.segment });
       prev = stitchVertex[k];
     }
     addEdge(prev, p.v1, true, OpenBoth);
     if (inspect && p.overlayEdge < 0)
-      inspect->push_back({ prev, p.v1, EdgeInput });
+      inspect->push_back({ prev, p.v1, EdgeInput, p.segment });
   });
   return g;
 }

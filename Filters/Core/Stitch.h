@@ -130,6 +130,9 @@ struct PlanarGraph
 {
   Array<Point> points;
   Array<VertexOrigin> origin;
+  /// Per stitch vertex (the points after the overlay's): the segment (index
+  /// in the walked segments) whose crossing it is.
+  Array<int> stitchSegment;
   Array<Triangle> intact;         ///< overlay triangles that no segment crosses
   KnownAdjacency intactAdjacency; ///< their neighbours among them, for carveDomain
   Array<Segment> edges;

@@ -20,12 +20,20 @@ double linear(const Point& p)
   return 2.0 * p.x - 3.0 * p.y + 1.0;
 }
 
+/// The mesh, with the segment of each vertex found on one.
+Result meshed(const Pslg& in, Options o = {})
+{
+  o.keepVertexSegments = true;
+  return mesh(in, o);
+}
+
 /// Every vertex's terms, by vertex; each vertex must be visited once.
 std::vector<VertexTerms> termsOf(const Pslg& in, const Result& r, const std::string& name)
 {
   std::vector<VertexTerms> all(r.mesh.vertices.size());
   std::vector<char> seen(all.size(), 0);
-  EXPECT_TRUE(visitInputWeights(in, r, 0.0, [&](const VertexTerms& t) {
+  EXPECT_TRUE(r.vertexSegment.size() == r.mesh.vertices.size()) << name;
+  EXPECT_TRUE(visitInputWeights(in, r, [&](const VertexTerms& t) {
     EXPECT_LT(t.vertex, all.size()) << name;
     if (t.vertex < all.size())
     {
@@ -89,7 +97,7 @@ TEST(Interpolation, LinearFieldsAreReproducedAtEveryVertex)
       const std::string name = "seed " + std::to_string(seed);
       Options o;
       o.domain = domain;
-      const Result r = mesh(in, o);
+      const Result r = meshed(in, o);
       ASSERT_TRUE(r.ok) << name << ": " << r.error;
       const std::vector<VertexTerms> w = termsOf(in, r, name);
       for (std::size_t v = 0; v < r.mesh.vertices.size(); ++v)
@@ -105,7 +113,7 @@ TEST(Interpolation, InputVerticesKeepTheirOwnValueAndOthersLieOnTheirSegment)
   in.points.push_back(in.points[3]); // a duplicate: merged into point 3
   Options o;
   o.domain = Domain::Box; // no hull edges, which are stitched too but no input segment
-  const Result r = mesh(in, o);
+  const Result r = meshed(in, o);
   ASSERT_TRUE(r.ok) << r.error;
   ASSERT_GT(r.stats.crossingsSplit, 0u);
   const std::vector<VertexTerms> w = termsOf(in, r, "crossing segments");
@@ -143,7 +151,7 @@ TEST(Interpolation, BeyondTheInputTheBoxTakesValuesWithinTheInputs)
   const Pslg in = randomInput(rng, 15, 5);
   Options o;
   o.domain = Domain::Box;
-  const Result r = mesh(in, o);
+  const Result r = meshed(in, o);
   ASSERT_TRUE(r.ok) << r.error;
   const std::vector<VertexTerms> w = termsOf(in, r, "box");
   const Bounds b = boundsOf(in.points);
@@ -176,7 +184,7 @@ TEST(Interpolation, ValuesAreNotAveragedAcrossASegment)
   {
     Options o;
     o.minAngleDeg = angle;
-    const Result r = mesh(in, o);
+    const Result r = meshed(in, o);
     ASSERT_TRUE(r.ok) << r.error;
     const std::vector<VertexTerms> w = termsOf(in, r, "kink");
     for (std::size_t v = 0; v < r.mesh.vertices.size(); ++v)
@@ -201,7 +209,7 @@ TEST(Interpolation, KinksAlongSegmentsAmongRandomPoints)
     in.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 4 }, { 4, 5 }, { 5, 0 }, { 1, 4 } };
     for (int i = 0; i < 30; ++i)
       in.points.push_back({ U(rng), U(rng) });
-    const Result r = mesh(in);
+    const Result r = meshed(in);
     ASSERT_TRUE(r.ok) << r.error;
     const std::vector<VertexTerms> w = termsOf(in, r, "kink " + std::to_string(seed));
     for (std::size_t v = 0; v < r.mesh.vertices.size(); ++v)
@@ -222,7 +230,7 @@ TEST(Interpolation, OnePointGivesItsValueEverywhere)
 {
   Pslg in;
   in.points = { { 4, 0 } };
-  const Result r = mesh(in);
+  const Result r = meshed(in);
   ASSERT_TRUE(r.ok) << r.error;
   ASSERT_GT(r.mesh.vertices.size(), 1u);
   for (const VertexTerms& t : termsOf(in, r, "one point"))
@@ -242,7 +250,7 @@ TEST(Interpolation, HugeAndTinyCoordinatesGiveTheSameTerms)
   const Pslg unit = randomInput(rng, 10, 6);
   Options o;
   o.domain = Domain::Hull;
-  const Result r = mesh(unit, o);
+  const Result r = meshed(unit, o);
   ASSERT_TRUE(r.ok) << r.error;
   const std::vector<VertexTerms> reference = termsOf(unit, r, "unit");
   for (double factor : { 0x1p996, 0x1p-1000, 0x1p-1060 })
@@ -268,14 +276,93 @@ TEST(Interpolation, HugeAndTinyCoordinatesGiveTheSameTerms)
   }
 }
 
-// The segment under a point: the nearest within the tolerance, else none.
-TEST(Interpolation, SegmentsUnderPoints)
+// An overlay Steiner point that a segment passes through exactly (here the
+// circumcenter of a right triangle whose hypotenuse is the segment) lies on
+// it: a kink along the segment is kept there (the review's first find, when
+// only stitch vertices and crossings were looked up).
+TEST(Interpolation, OverlayVerticesOnASegmentTakeItsValues)
 {
   Pslg in;
-  in.points = { { 0, 0 }, { 10, 0 }, { 10, 10 }, { 3, 1e-3 } };
-  in.segments = { { 0, 1 }, { 1, 2 }, { 0, 0 } }; // the last one has no length
-  const Array<Point> points = { { 5, 0 }, { 10, 5 }, { 10, 0 }, { 5, 5 }, { 4, 1e-12 },
-    { 4, 1e-6 } };
-  EXPECT_EQ(segmentsUnder(in, points), (Array<int>{ 0, 1, 1, -1, 0, -1 }));
-  EXPECT_EQ(segmentsUnder(in, points, 1e-5), (Array<int>{ 0, 1, 1, -1, 0, 0 }));
+  in.points = { { 3, 6 }, { 3, 4 }, { 2, 6 }, { 2, 4 } };
+  in.segments = { { 0, 3 } };
+  const Result r = meshed(in);
+  ASSERT_TRUE(r.ok) << r.error;
+  const std::vector<VertexTerms> w = termsOf(in, r, "right triangles");
+  // |distance to the segment's line|, 0 along it.
+  auto kink = [](const Point& p) { return std::abs(2 * (p.x - 3) - (p.y - 6)) / std::sqrt(5.0); };
+  std::size_t onIt = 0;
+  for (std::size_t v = 0; v < w.size(); ++v)
+  {
+    const Point& p = r.mesh.vertices[v];
+    if (r.vertexOrigin[v] == VertexOrigin::Overlay && kink(p) < 1e-12)
+    {
+      ++onIt;
+      EXPECT_EQ(w[v].segment, 0) << formatPoint(p);
+    }
+    EXPECT_NEAR(valueAt(w[v], in, kink), kink(p), 1e-12) << formatPoint(p);
+  }
+  EXPECT_GT(onIt, 0u);
+}
+
+// With a merge tolerance a segment bends through points near it; its
+// vertices keep it (not a nearer other segment: the review's third find),
+// and lie within the tolerance of it.
+TEST(Interpolation, VerticesKeepTheirSegmentWhereItBends)
+{
+  Pslg in;
+  in.points = { { 0, 0 }, { 10, 0 }, { 5, 0.1 }, { 4.6, 0.16 }, { 4.6, 3 }, { 0, 5 }, { 10, 5 } };
+  in.segments = { { 0, 1 }, { 3, 4 } };
+  Options o;
+  o.mergeTolerance = 0.1;
+  o.domain = Domain::Hull;
+  const Result r = meshed(in, o);
+  ASSERT_TRUE(r.ok) << r.error;
+  std::size_t onA = 0;
+  for (const VertexTerms& t : termsOf(in, r, "bent"))
+  {
+    const Point& p = r.mesh.vertices[t.vertex];
+    if (t.segment < 0)
+      continue;
+    const Segment& s = in.segments[t.segment];
+    EXPECT_LE(distanceToSegment(p, in.points[s[0]], in.points[s[1]]), 0.1 + 1e-12)
+      << formatPoint(p) << " on segment " << t.segment;
+    if (p.y < 0.2 && p.x > 3 && p.x < 6 && p.y > 0.01)
+    {
+      ++onA;
+      EXPECT_EQ(t.segment, 0) << formatPoint(p);
+    }
+  }
+  EXPECT_GT(onA, 0u);
+}
+
+// Input subsegments name their input segment (hull edges none), and both
+// their ends lie on it.
+TEST(Interpolation, InputSubsegmentsNameTheirSegment)
+{
+  std::mt19937_64 rng(5);
+  const Pslg in = randomInput(rng, 10, 12);
+  Options o;
+  o.domain = Domain::Hull;
+  const Result r = meshed(in, o);
+  ASSERT_TRUE(r.ok) << r.error;
+  std::size_t named = 0, hull = 0;
+  for (const Edge& e : r.edges)
+  {
+    if (!(e.flags & EdgeInput))
+    {
+      EXPECT_EQ(e.segment, -1);
+      continue;
+    }
+    if (e.segment < 0)
+    {
+      ++hull;
+      continue;
+    }
+    ++named;
+    const Segment& s = in.segments[e.segment];
+    for (int v : { e.a, e.b })
+      EXPECT_LT(distanceToSegment(r.edgeVertices[v], in.points[s[0]], in.points[s[1]]), 1e-12);
+  }
+  EXPECT_GT(named, 0u);
+  EXPECT_GT(hull, 0u);
 }

@@ -76,8 +76,25 @@ void checkInterpolation(
   bool linear = std::isfinite(scale) && extent < 1e300;
   for (const osm::Point& v : r.mesh.vertices)
     linear = linear && v.x >= x0 && v.x <= x1 && v.y >= y0 && v.y <= y1;
-  const double allowed = 3 * scale * o.mergeTolerance + 1e-6;
-  osm::visitInputWeights(p, r, o.mergeTolerance, [&](const osm::VertexTerms& t) {
+  // Rounding, relative to the input's magnitude: a stitch vertex is some
+  // units in the last place off its segment, which moves its weights by that
+  // over the width of the triangles it falls in: more in a flat input (a
+  // long thin box, by its aspect) and among points closer than its
+  // magnitude (by their spread; points 1e-19 apart at 12 gave 3e-9).
+  double magnitude = 0, closest = 1e300;
+  for (const osm::Point& q : p.points)
+  {
+    magnitude = std::fmax(magnitude, std::fmax(std::abs(q.x), std::abs(q.y)));
+    for (const osm::Point& u : p.points)
+      if (u != q)
+        closest = std::fmin(closest, std::hypot(u.x - q.x, u.y - q.y));
+  }
+  const double aspect =
+    std::fmax(x1 - x0, y1 - y0) / std::fmax(std::fmin(x1 - x0, y1 - y0), 1e-300);
+  const double spread = magnitude / std::fmax(closest, 1e-300);
+  const double allowed =
+    3 * scale * o.mergeTolerance + (1e-9 + 1e-15 * (aspect + spread)) * scale * magnitude;
+  osm::visitInputWeights(p, r, [&](const osm::VertexTerms& t) {
     if (t.vertex >= seen.size() || seen[t.vertex]++)
       fail(
         "interpolation", "vertex " + std::to_string(t.vertex) + " out of range or visited twice");
@@ -125,6 +142,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // validation took 6.7 s under the fuzzer's instrumentation, near its
   // 10 s time-out.
   o.maxSteinerPoints = 100000;
+  o.keepVertexSegments = true; // for checkInterpolation
   // Last, so that older seeds decode as before: a size bound of 1/2 to 1/5
   // of the input's extent for a quarter of the inputs, or none (finer or more
   // bounds make meshes that the validator's brute-force overlap check takes
