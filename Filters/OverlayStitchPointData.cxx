@@ -27,7 +27,7 @@ struct Carried
   {
     Linear,  ///< floating point: the weighted sum
     Largest, ///< labels: the tuple of the largest weight
-    Marker   ///< Triangle's vertex markers: the segment's marker, else 0
+    Marker   ///< Triangle's vertex markers: the segment's marker (1 without), else 0
   };
   vtkAbstractArray* Source;
   vtkSmartPointer<vtkAbstractArray> Target;
@@ -77,7 +77,7 @@ bool OverlayStitchInterpolatePointData(vtkPointData* in, vtkCellData* inCells,
     {
       data->Fill(0.0); // a vertex with no terms (none on the input) reads 0
     }
-    const bool marker = name && std::strcmp(name, "PointMarker") == 0 && segmentMarkers &&
+    const bool marker = name && std::strcmp(name, "PointMarker") == 0 &&
       source->GetNumberOfComponents() == 1 && !IsFloating(source);
     carried.push_back({ source, target,
       IsFloating(source) ? Carried::Linear
@@ -126,9 +126,11 @@ bool OverlayStitchInterpolatePointData(vtkPointData* in, vtkCellData* inCells,
       }
       else
       {
-        const double marker = t.segment >= 0
+        // Without segment markers, every segment is a boundary: 1.
+        const double marker = t.segment < 0 ? 0.0
+          : segmentMarkers
           ? segmentMarkers->GetComponent(segmentCells[static_cast<std::size_t>(t.segment)], 0)
-          : 0.0;
+          : 1.0;
         vtkDataArray::SafeDownCast(c.Target)->SetComponent(v, 0, marker);
       }
     }

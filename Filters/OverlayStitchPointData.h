@@ -10,11 +10,11 @@
 // the tuple linear in the triangle of those points that holds it. Other arrays
 // (integers, strings: labels and ids, which an average would turn into
 // another label) take the tuple of the input point with the largest weight,
-// except Triangle's vertex markers: a "PointMarker" array, when the input's
-// cells have a "SegmentMarker" array (as vtkTrianglePolyReader writes them),
-// gives a point on a segment that segment's marker and any other new point 0,
-// as Triangle does; the segment markers go to the input subsegments of the
-// Edges output as Triangle's .edge markers.
+// except Triangle's vertex markers: a "PointMarker" array (as
+// vtkTrianglePolyReader writes them) gives a new point on a segment that
+// segment's marker from the cells' "SegmentMarker" (1 when the input has
+// none) and any other new point 0, as Triangle does; the segment markers go
+// to the input subsegments of the Edges output as Triangle's .edge markers.
 #ifndef OverlayStitchPointData_h
 #define OverlayStitchPointData_h
 

@@ -208,10 +208,11 @@ public:
    * holds it, so that a field linear over the input is reproduced.
    * Floating-point arrays are interpolated so; other arrays (labels, ids,
    * strings) take the value of the input point with the largest weight,
-   * except Triangle's vertex markers (a "PointMarker" array with the cells'
-   * "SegmentMarker", as vtkTrianglePolyReader writes them): a new point on a
-   * segment takes the segment's marker, any other new point 0. Costs about a
-   * fifth of the meshing time on large inputs with point data.
+   * except Triangle's vertex markers (a "PointMarker" array, as
+   * vtkTrianglePolyReader writes them): a new point on a segment takes the
+   * segment's marker (the cells' "SegmentMarker"; 1 without), any other new
+   * point 0; the Edges output then gets a cell array "SegmentMarker". Costs
+   * a third to a half of the core's time on large inputs with point data.
    */
   vtkSetMacro(InterpolatePointData, vtkTypeBool);
   vtkGetMacro(InterpolatePointData, vtkTypeBool);

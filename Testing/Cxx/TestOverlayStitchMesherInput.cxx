@@ -1354,6 +1354,27 @@ int TestPointData()
     "elsewhere (" +
       std::to_string(inputEdges) + " input subsegments, " + std::to_string(wrongEdges) + " wrong)");
 
+  // Without segment markers every segment is a boundary: its new points 1.
+  auto unmarked = SquareWithPointData();
+  unmarked->GetCellData()->RemoveArray("SegmentMarker");
+  mesh = h.Run(unmarked, "point markers without segment markers");
+  auto* markers = vtkIntArray::SafeDownCast(mesh->GetPointData()->GetArray("PointMarker"));
+  origin = vtkUnsignedCharArray::SafeDownCast(mesh->GetPointData()->GetArray("VertexOrigin"));
+  int wrongUnmarked = 0;
+  for (vtkIdType v = 0; markers && origin && v < mesh->GetNumberOfPoints(); ++v)
+  {
+    double p[3];
+    mesh->GetPoint(v, p);
+    const bool onSegment = p[0] == 5.0 || p[0] == 0 || p[0] == 10 || p[1] == 0 || p[1] == 10;
+    if (origin->GetValue(v) != 0)
+    {
+      wrongUnmarked += markers->GetValue(v) != (onSegment ? 1 : 0);
+    }
+  }
+  Check(markers && origin && wrongUnmarked == 0,
+    "point data: without SegmentMarker, new points on segments get PointMarker 1, others 0 (" +
+      std::to_string(wrongUnmarked) + " wrong)");
+
   // An input array named like the mesh's own is left out, with a warning.
   vtkNew<vtkDoubleArray> clash;
   clash->SetName("VertexOrigin");
