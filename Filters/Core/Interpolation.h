@@ -11,8 +11,10 @@
 // a point splitting a long edge) takes the value linear within the triangle
 // that holds it in the Delaunay triangulation of the points of the first two
 // kinds. Those on the segments make that triangulation follow the segments,
-// so that values are seldom averaged across one (no vertex was, of the
-// 7,369 in the tests' kinked fields). Beyond the hull of those points (only
+// so that values are seldom averaged across one: none of the 7,369 vertices
+// of the tests' kinked fields is; of 14 real inputs meshed in 3 domains, one
+// vertex of la.poly takes 3% of its value (11% in the box domain) from a
+// point across a segment. Beyond the hull of those points (only
 // with the box domain) a point takes the value where it projects onto the
 // hull edge nearest it in that triangulation. A field linear over the input
 // points is reproduced at every vertex within their hull, to rounding.
