@@ -85,6 +85,18 @@ Pslg randomInput(std::mt19937_64& rng, int points, int segments)
   return p;
 }
 
+/// A random input (in) of the given size, meshed in the given domain.
+Result meshedRandom(Pslg& in, int seed, int points, int segments, Domain domain)
+{
+  std::mt19937_64 rng(seed);
+  in = randomInput(rng, points, segments);
+  Options o;
+  o.domain = domain;
+  const Result r = meshed(in, o);
+  EXPECT_TRUE(r.ok) << r.error;
+  return r;
+}
+
 } // namespace
 
 TEST(Interpolation, LinearFieldsAreReproducedAtEveryVertex)
@@ -147,12 +159,9 @@ TEST(Interpolation, InputVerticesKeepTheirOwnValueAndOthersLieOnTheirSegment)
 
 TEST(Interpolation, BeyondTheInputTheBoxTakesValuesWithinTheInputs)
 {
-  std::mt19937_64 rng(3);
-  const Pslg in = randomInput(rng, 15, 5);
-  Options o;
-  o.domain = Domain::Box;
-  const Result r = meshed(in, o);
-  ASSERT_TRUE(r.ok) << r.error;
+  Pslg in;
+  const Result r = meshedRandom(in, 3, 15, 5, Domain::Box);
+  ASSERT_TRUE(r.ok);
   const std::vector<VertexTerms> w = termsOf(in, r, "box");
   const Bounds b = boundsOf(in.points);
   std::size_t beyond = 0;
@@ -246,12 +255,9 @@ TEST(Interpolation, OnePointGivesItsValueEverywhere)
 // overflows.
 TEST(Interpolation, HugeAndTinyCoordinatesGiveTheSameTerms)
 {
-  std::mt19937_64 rng(11);
-  const Pslg unit = randomInput(rng, 10, 6);
-  Options o;
-  o.domain = Domain::Hull;
-  const Result r = meshed(unit, o);
-  ASSERT_TRUE(r.ok) << r.error;
+  Pslg unit;
+  const Result r = meshedRandom(unit, 11, 10, 6, Domain::Hull);
+  ASSERT_TRUE(r.ok);
   const std::vector<VertexTerms> reference = termsOf(unit, r, "unit");
   for (double factor : { 0x1p996, 0x1p-1000, 0x1p-1060 })
   {
@@ -339,12 +345,9 @@ TEST(Interpolation, VerticesKeepTheirSegmentWhereItBends)
 // their ends lie on it.
 TEST(Interpolation, InputSubsegmentsNameTheirSegment)
 {
-  std::mt19937_64 rng(5);
-  const Pslg in = randomInput(rng, 10, 12);
-  Options o;
-  o.domain = Domain::Hull;
-  const Result r = meshed(in, o);
-  ASSERT_TRUE(r.ok) << r.error;
+  Pslg in;
+  const Result r = meshedRandom(in, 5, 10, 12, Domain::Hull);
+  ASSERT_TRUE(r.ok);
   std::size_t named = 0, hull = 0;
   for (const Edge& e : r.edges)
   {
