@@ -206,10 +206,14 @@ bool visitInputWeights(const Pslg& input, const Result& result, const TermsVisit
   if (!knownPoints.empty())
   {
     Array<int> vertexOf;
-    // Corners far away: a triangle with a corner then lies beyond a hull
-    // edge of the known points (to within 2^-26 of their extent), so the
-    // triangles without one cover their hull.
-    T = delaunayTriangulation(knownPoints, vertexOf, 0x1p26);
+    // Corners very far away: a triangle with a corner then lies beyond a
+    // hull edge of the known points to within 2^-200 of their extent (the
+    // circle through an edge and a corner is a half-plane but for that), far
+    // below rounding, so the triangles without one cover their hull. (2^26
+    // left pockets 0.0002 deep along a hull edge 127,000 long, which the
+    // fuzzer found.) The coordinates are about 1, so the exact predicates'
+    // products, up to 2^800, cannot overflow.
+    T = delaunayTriangulation(knownPoints, vertexOf, 0x1p200);
     knownOf.assign(T.points.size(), -1);
     for (std::size_t k = 0; k < vertexOf.size(); ++k)
       if (vertexOf[k] >= 0)

@@ -369,3 +369,21 @@ TEST(Interpolation, InputSubsegmentsNameTheirSegment)
   EXPECT_GT(named, 0u);
   EXPECT_GT(hull, 0u);
 }
+
+// A hull edge nearly along a segment (the fuzzer's fourth find): with the
+// known points' triangulation's corners 2^26 times the extent away, the
+// triangles with a corner reached 0.0002 inside the hull there, and a point
+// on the hull edge took the segment's values (off by 5e-4 here). A linear
+// field is reproduced, to rounding at values of 2e5 in slivers (3e-6).
+TEST(Interpolation, AHullEdgeNearlyAlongASegment)
+{
+  Pslg in;
+  in.points = { { -127023.95459057762, 10 }, { 4, 0 }, { 0, 0 } };
+  in.segments = { { 2, 0 } };
+  const Result r = meshed(in);
+  ASSERT_TRUE(r.ok) << r.error;
+  const std::vector<VertexTerms> w = termsOf(in, r, "flat hull");
+  for (std::size_t v = 0; v < w.size(); ++v)
+    EXPECT_NEAR(valueAt(w[v], in, linear), linear(r.mesh.vertices[v]), 1e-5)
+      << formatPoint(r.mesh.vertices[v]);
+}
