@@ -80,7 +80,8 @@ void checkInterpolation(
   // units in the last place off its segment, which moves its weights by that
   // over the width of the triangles it falls in: more in a flat input (a
   // long thin box, by its aspect) and among points closer than its
-  // magnitude (by their spread; points 1e-19 apart at 12 gave 3e-9).
+  // magnitude (by their spread; points 1e-19 apart at 12 gave 3e-9, a box
+  // 14 by 1.5e9 1e-6).
   double magnitude = 0, closest = 1e300;
   for (const osm::Point& q : p.points)
   {
@@ -93,7 +94,7 @@ void checkInterpolation(
     std::fmax(x1 - x0, y1 - y0) / std::fmax(std::fmin(x1 - x0, y1 - y0), 1e-300);
   const double spread = magnitude / std::fmax(closest, 1e-300);
   const double allowed =
-    3 * scale * o.mergeTolerance + (1e-9 + 1e-15 * (aspect + spread)) * scale * magnitude;
+    3 * scale * o.mergeTolerance + (1e-9 + 1e-13 * (aspect + spread)) * scale * magnitude;
   osm::visitInputWeights(p, r, [&](const osm::VertexTerms& t) {
     if (t.vertex >= seen.size() || seen[t.vertex]++)
       fail(
