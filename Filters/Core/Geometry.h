@@ -35,12 +35,19 @@ inline double dist2(const Point& a, const Point& b)
   return dx * dx + dy * dy;
 }
 
+/// Where p projects onto the closed segment ab: 0 at a, 1 at b, clamped (0
+/// when a == b).
+inline double projectionOnSegment(const Point& p, const Point& a, const Point& b)
+{
+  const double dx = b.x - a.x, dy = b.y - a.y, l2 = dx * dx + dy * dy;
+  return l2 > 0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / l2, 0.0, 1.0) : 0.0;
+}
+
 /// Distance from p to the closed segment ab.
 inline double distanceToSegment(const Point& p, const Point& a, const Point& b)
 {
-  const double dx = b.x - a.x, dy = b.y - a.y, l2 = dx * dx + dy * dy;
-  const double t = l2 > 0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / l2, 0.0, 1.0) : 0.0;
-  return std::hypot(p.x - (a.x + t * dx), p.y - (a.y + t * dy));
+  const double t = projectionOnSegment(p, a, b);
+  return std::hypot(p.x - (a.x + t * (b.x - a.x)), p.y - (a.y + t * (b.y - a.y)));
 }
 
 /// Angle at b in triangle (a, b, c), in radians, robust for tiny and near-flat

@@ -6,19 +6,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace osm
 {
 namespace
 {
-
-/// Where p projects onto the segment ab (a != b): 0 at a, 1 at b, clamped.
-double along(const Point& p, const Point& a, const Point& b)
-{
-  const double dx = b.x - a.x, dy = b.y - a.y;
-  return std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
-}
 
 /// A power of two that brings the largest coordinate of a and b near 1
 /// (within the normal range of powers of two).
@@ -66,7 +58,7 @@ void termsIn(const Triangulation& T, int t, const Point& p, const Array<int>& kn
   }
   else if (count == 2)
   {
-    const double s = along(p, T.vertex(t, real[0]), T.vertex(t, real[1]));
+    const double s = projectionOnSegment(p, T.vertex(t, real[0]), T.vertex(t, real[1]));
     lambda[real[0]] = 1 - s;
     lambda[real[1]] = s;
   }
@@ -188,7 +180,7 @@ bool visitInputWeights(const Pslg& input, const Result& result, const TermsVisit
     knownSegment.push_back(segment);
     knownAlong.push_back(segment < 0
         ? inputPoint[v]
-        : along(p, scaled(input.points[e[0]]), scaled(input.points[e[1]])));
+        : projectionOnSegment(p, scaled(input.points[e[0]]), scaled(input.points[e[1]])));
     VertexTerms terms;
     terms.vertex = v;
     terms.inputPoint = inputPoint[v];
