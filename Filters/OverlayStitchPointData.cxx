@@ -6,10 +6,8 @@
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkIdList.h"
-#include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
-#include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 
 #include "Interpolation.h"
@@ -62,6 +60,10 @@ bool OverlayStitchInterpolatePointData(vtkPointData* in, vtkCellData* inCells,
   {
     vtkAbstractArray* source = in->GetAbstractArray(i);
     const char* name = source->GetName();
+    if (name && std::strcmp(name, vtkDataSetAttributes::GhostArrayName()) == 0)
+    {
+      continue; // the mesh is one piece: no point of it is a ghost
+    }
     if (name && std::find(reserved.begin(), reserved.end(), name) != reserved.end())
     {
       warnings.push_back(std::string("The input's point data array ") + name +
@@ -158,32 +160,6 @@ bool OverlayStitchInterpolatePointData(vtkPointData* in, vtkCellData* inCells,
     }
   }
   return true;
-}
-
-void OverlayStitchSegmentMarkers(vtkCellData* inCells, const osm::Pslg& pslg,
-  const osm::Result& result, const std::vector<vtkIdType>& segmentCells, vtkPolyData* edges)
-{
-  vtkDataArray* segmentMarkers = SegmentMarkers(inCells);
-  if (!segmentMarkers || edges->GetNumberOfCells() != static_cast<vtkIdType>(result.edges.size()))
-  {
-    return;
-  }
-  vtkNew<vtkIntArray> markers;
-  markers->SetName("SegmentMarker");
-  markers->SetNumberOfTuples(static_cast<vtkIdType>(result.edges.size()));
-  for (std::size_t e = 0; e < result.edges.size(); ++e)
-  {
-    int marker = 0;
-    if (result.edges[e].flags & osm::EdgeInput)
-    {
-      const int s = result.edges[e].segment;
-      marker = s >= 0 ? static_cast<int>(segmentMarkers->GetComponent(
-                          segmentCells[static_cast<std::size_t>(s)], 0))
-                      : 1;
-    }
-    markers->SetValue(static_cast<vtkIdType>(e), marker);
-  }
-  edges->GetCellData()->AddArray(markers);
 }
 
 void OverlayStitchMovePointData(vtkPointData* from, vtkPointData* to)

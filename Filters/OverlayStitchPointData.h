@@ -13,8 +13,8 @@
 // except Triangle's vertex markers: a "PointMarker" array (as
 // vtkTrianglePolyReader writes them) gives a new point on a segment that
 // segment's marker from the cells' "SegmentMarker" (1 when the input has
-// none) and any other new point 0, as Triangle does; the segment markers go
-// to the input subsegments of the Edges output as Triangle's .edge markers.
+// none) and any other new point 0, as Triangle does (OverlayStitchCellData.h
+// gives the segment markers to the Edges output).
 #ifndef OverlayStitchPointData_h
 #define OverlayStitchPointData_h
 
@@ -26,7 +26,6 @@
 
 class vtkCellData;
 class vtkPointData;
-class vtkPolyData;
 
 namespace osm
 {
@@ -47,14 +46,5 @@ bool OverlayStitchInterpolatePointData(vtkPointData* in, vtkCellData* inCells,
 
 /// Adds the arrays of from to to, with their active attributes.
 void OverlayStitchMovePointData(vtkPointData* from, vtkPointData* to);
-
-/// Triangle's segment markers on the Edges output (edges: result.edges as
-/// lines, in order): a cell array "SegmentMarker" giving each input
-/// subsegment the marker of its input segment (osm::Edge::segment), 1 where
-/// it has none (the hull's edges, as Triangle marks boundary edges), and 0
-/// to the other edges. Nothing when the input's cells have no integer
-/// "SegmentMarker".
-void OverlayStitchSegmentMarkers(vtkCellData* inCells, const osm::Pslg& pslg,
-  const osm::Result& result, const std::vector<vtkIdType>& segmentCells, vtkPolyData* edges);
 
 #endif

@@ -32,6 +32,7 @@
 #include "Geometry.h"
 #include "HugePages.h"
 #include "Mesher.h"
+#include "OverlayStitchCellData.h"
 #include "OverlayStitchGather.h"
 #include "OverlayStitchPointData.h"
 #include "Plane.h"
@@ -704,6 +705,7 @@ vtkOverlayStitchMesher::vtkOverlayStitchMesher()
   , ApplyRegionAreas(0)
   , MaximumSteinerPoints(0)
   , InterpolatePointData(1)
+  , PassCellData(1)
   , GenerateEdges(1)
   , GenerateOverlay(1)
 {
@@ -1037,7 +1039,7 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
     return 1;
   }
   std::vector<vtkIdType> segmentCells;
-  if (this->InterpolatePointData)
+  if (this->InterpolatePointData || (this->PassCellData && this->GenerateEdges))
   {
     segmentCells.reserve(segmentSources.size());
     for (const SegmentSource& source : segmentSources)
@@ -1093,12 +1095,25 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   if (this->GenerateEdges)
   {
     FillEdges(result, map, edges, [this](double fraction) {
-      this->UpdateProgress(0.95 + 0.03 * fraction);
+      this->UpdateProgress(0.95 + 0.02 * fraction);
       return AbortRequested(this);
     });
-    if (this->InterpolatePointData)
+    if (this->PassCellData && !AbortRequested(this))
     {
-      OverlayStitchSegmentMarkers(input->GetCellData(), pslg, result, segmentCells, edges);
+      std::vector<std::string> warnings;
+      OverlayStitchPassCellData(
+        input->GetCellData(), result, segmentCells,
+        { "Overlay", "Kept", "Discarded", "Input", "EdgeClass", "InputCellId" },
+        edges->GetCellData(),
+        [this](double fraction) {
+          this->UpdateProgress(0.97 + 0.01 * fraction);
+          return AbortRequested(this);
+        },
+        warnings);
+      for (const std::string& warning : warnings)
+      {
+        vtkWarningMacro(<< warning);
+      }
     }
   }
   this->UpdateProgress(0.98);
@@ -1136,6 +1151,7 @@ void vtkOverlayStitchMesher::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumSteinerPoints: " << this->MaximumSteinerPoints << "\n";
   os << indent << "GenerateEdges: " << (this->GenerateEdges ? "On" : "Off") << "\n";
   os << indent << "InterpolatePointData: " << (this->InterpolatePointData ? "On" : "Off") << "\n";
+  os << indent << "PassCellData: " << (this->PassCellData ? "On" : "Off") << "\n";
   os << indent << "GenerateOverlay: " << (this->GenerateOverlay ? "On" : "Off") << "\n";
   os << indent << "HolePoints: " << this->GetNumberOfHolePoints() << "\n";
   for (int i = 0; i < this->GetNumberOfHolePoints(); ++i)

@@ -211,12 +211,29 @@ public:
    * except Triangle's vertex markers (a "PointMarker" array, as
    * vtkTrianglePolyReader writes them): a new point on a segment takes the
    * segment's marker (the cells' "SegmentMarker"; 1 without), any other new
-   * point 0; the Edges output then gets a cell array "SegmentMarker". Costs
-   * a third to a half of the core's time on large inputs with point data.
+   * point 0. Costs a third to a half of the core's time on large inputs
+   * with point data.
    */
   vtkSetMacro(InterpolatePointData, vtkTypeBool);
   vtkGetMacro(InterpolatePointData, vtkTypeBool);
   vtkBooleanMacro(InterpolatePointData, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
+   * Whether to carry the input's cell data to the Edges output. Default on.
+   * Each input subsegment (an edge along a line, polyline or polygon of the
+   * input) takes the tuple of the cell it comes from, and "InputCellId"
+   * names that cell; every other edge takes NaN (floating point), 0 (other
+   * numbers) or an empty string, and InputCellId -1. Triangle's segment
+   * markers (the cells' "SegmentMarker", as vtkTrianglePolyReader writes
+   * them) are as in Triangle's .edge files: a hull edge 1, any other edge 0.
+   * Where segments of several cells overlap, a subsegment takes the first
+   * cell's.
+   */
+  vtkSetMacro(PassCellData, vtkTypeBool);
+  vtkGetMacro(PassCellData, vtkTypeBool);
+  vtkBooleanMacro(PassCellData, vtkTypeBool);
   ///@}
 
   ///@{
@@ -278,6 +295,7 @@ protected:
   vtkTypeBool ApplyRegionAreas;
   vtkIdType MaximumSteinerPoints;
   vtkTypeBool InterpolatePointData;
+  vtkTypeBool PassCellData;
   vtkTypeBool GenerateEdges;
   vtkTypeBool GenerateOverlay;
   std::vector<double> HolePoints; // x0, y0, x1, y1, ...

@@ -6,7 +6,9 @@
 // the same run (field data SecondsTotal) is reported as core_seconds, so the
 // filter's overhead is measured within one process. `--point-data` gives the
 // input points a scalar (their x), which the filter then interpolates onto the
-// mesh (InterpolatePointData): what that costs.
+// mesh (InterpolatePointData): what that costs. `--no-cell-data` turns
+// PassCellData off (it fills the Edges output's InputCellId): with
+// `--all-outputs`, what that costs.
 #include "VtkCommon.h"
 
 #include <vtkDataArray.h>
@@ -37,6 +39,7 @@ int main(int argc, char** argv)
       const bool all = out.has("--all-outputs");
       mesher->SetGenerateEdges(all);
       mesher->SetGenerateOverlay(all);
+      mesher->SetPassCellData(!out.has("--no-cell-data"));
       out.memory.before();
       osmbench::Stopwatch clock;
       mesher->Update();

@@ -18,6 +18,7 @@
 //   composite        multiblock and partitioned input: its polydata blocks are one graph
 //   matrix           the bad-input matrix of issue 6, through the filter
 //   point-data       the input's point data carried to the mesh (InterpolatePointData)
+//   cell-data        the input's cell data carried to the Edges output (PassCellData)
 // Every check prints "ok" or "FAILED"; the exit status is the number of failures (capped).
 #include "MesherTestUtils.h"
 
@@ -29,6 +30,7 @@
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkIdList.h"
+#include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkIntArray.h"
 #include "vtkMultiBlockDataSet.h"
@@ -867,6 +869,7 @@ public:
     if (this->AbortAt >= 0 && progress >= this->AbortAt && !this->AbortRequested)
     {
       this->AbortRequested = true;
+      this->AbortValue = progress;
       this->AbortTime = std::chrono::steady_clock::now();
       this->AbortPhase = algorithm->GetProgressText() ? algorithm->GetProgressText() : "";
       algorithm->SetAbortExecute(1);
@@ -877,6 +880,7 @@ public:
   std::vector<std::string> Phases;
   double AbortAt = -1.0;
   bool AbortRequested = false;
+  double AbortValue = -1.0;
   std::string AbortPhase;
   std::chrono::steady_clock::time_point AbortTime;
 };
@@ -949,9 +953,23 @@ int TestAbort(int points)
 {
   auto input = BigInput(points);
   Harness h;
-  // Progress 0.3, 0.7 and 0.9 fall in the overlay, complete and output phases.
-  for (const double at : { 0.3, 0.7, 0.9 })
+  // Progress 0.3, 0.7 and 0.9 fall in the overlay, complete and output
+  // phases; 0.905, with point data, in carrying it to the mesh (0.9 to 0.93).
+  auto withData = BigInput(points);
+  vtkNew<vtkDoubleArray> elevation;
+  elevation->SetName("Elevation");
+  elevation->SetNumberOfTuples(withData->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < withData->GetNumberOfPoints(); ++i)
   {
+    elevation->SetValue(i, withData->GetPoint(i)[0]);
+  }
+  withData->GetPointData()->AddArray(elevation);
+  for (const double at : { 0.3, 0.7, 0.9, 0.905 })
+  {
+    if (at == 0.905)
+    {
+      input = withData;
+    }
     vtkNew<ProgressRecorder> recorder;
     recorder->AbortAt = at;
     const unsigned long tag = h.Mesher->AddObserver(vtkCommand::ProgressEvent, recorder);
@@ -964,10 +982,17 @@ int TestAbort(int points)
     Check(recorder->AbortRequested, row + ": the observer requested the abort");
     if (recorder->AbortRequested)
     {
-      std::cout << row << ": requested in phase '" << recorder->AbortPhase << "' after "
+      std::cout << row << ": requested at " << recorder->AbortValue << " in phase '"
+                << recorder->AbortPhase << "' after "
                 << std::chrono::duration<double>(recorder->AbortTime - start).count()
                 << " s; Update() returned "
                 << std::chrono::duration<double>(end - recorder->AbortTime).count() << " s later\n";
+    }
+    if (at == 0.905)
+    {
+      Check(recorder->AbortValue > 0.9 && recorder->AbortValue < 0.93,
+        row + ": requested while the point data is carried (progress " + Num(recorder->AbortValue) +
+          ")");
     }
     Check(h.Messages->Errors.size() == 1 && h.Messages->HasError({ "aborted by the user" }),
       row + ": the run ends with the error 'aborted by the user'");
@@ -1395,6 +1420,119 @@ int TestPointData()
   return 0;
 }
 
+/// Each input subsegment of the Edges output takes its input cell's tuple.
+int TestCellData()
+{
+  Harness h;
+  h.Mesher->SetMaximumEdgeLength(2.0);
+  // Cell 0 is the square's polyline, cell 1 the segment x = 5; the lone
+  // point (14, 5) makes the hull reach beyond the square.
+  auto input = SquareWithPointData();
+  input->GetPoints()->InsertNextPoint(14, 5, 0);
+  input->GetPointData()->Initialize();
+  vtkNew<vtkDoubleArray> depth;
+  depth->SetName("Depth");
+  depth->InsertNextValue(2.5);
+  depth->InsertNextValue(-7.0);
+  vtkNew<vtkStringArray> river;
+  river->SetName("River");
+  river->InsertNextValue("Rhine");
+  river->InsertNextValue("Aare");
+  vtkNew<vtkIntArray> code;
+  code->SetName("Code");
+  code->SetNumberOfComponents(2);
+  code->InsertNextTuple2(3, 4);
+  code->InsertNextTuple2(5, 6);
+  vtkNew<vtkUnsignedCharArray> ghosts;
+  ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
+  ghosts->InsertNextValue(0);
+  ghosts->InsertNextValue(0);
+  vtkNew<vtkDoubleArray> clash;
+  clash->SetName("EdgeClass");
+  clash->InsertNextValue(1);
+  clash->InsertNextValue(1);
+  for (vtkAbstractArray* a :
+    std::initializer_list<vtkAbstractArray*>{ depth, river, code, ghosts, clash })
+  {
+    input->GetCellData()->AddArray(a);
+  }
+  input->GetCellData()->SetActiveScalars("Depth");
+
+  for (const bool hull : { false, true })
+  {
+    const std::string row = std::string("cell data, ") + (hull ? "hull" : "enclosed") + " domain";
+    hull ? h.Mesher->SetDomainToHull() : h.Mesher->SetDomainToEnclosed();
+    h.Run(input, row);
+    Check(h.NoError() && h.Messages->HasWarning({ "EdgeClass", "not carried" }),
+      row + ": meshed; a warning: the input's EdgeClass is not carried");
+    vtkPolyData* edges = h.Mesher->GetEdgesOutput();
+    vtkCellData* cd = edges->GetCellData();
+    auto* ids = vtkIdTypeArray::SafeDownCast(cd->GetArray("InputCellId"));
+    auto* depths = vtkDoubleArray::SafeDownCast(cd->GetArray("Depth"));
+    auto* rivers = vtkStringArray::SafeDownCast(cd->GetAbstractArray("River"));
+    auto* codes = vtkIntArray::SafeDownCast(cd->GetArray("Code"));
+    auto* markers = vtkIntArray::SafeDownCast(cd->GetArray("SegmentMarker"));
+    auto* isInput = cd->GetArray("Input");
+    auto* edgeClass = vtkUnsignedCharArray::SafeDownCast(cd->GetArray("EdgeClass"));
+    if (!Check(ids && depths && rivers && codes && codes->GetNumberOfComponents() == 2 && markers &&
+            isInput && edgeClass && !cd->GetArray(vtkDataSetAttributes::GhostArrayName()),
+          row +
+            ": InputCellId and every input cell array on the Edges output, the ghost "
+            "array left out"))
+    {
+      return 1;
+    }
+    Check(cd->GetScalars() == depths, row + ": the input's active cell scalars stay active");
+    int wrong = 0;
+    vtkIdType fromCells[2] = { 0, 0 }, hullEdges = 0, others = 0;
+    for (vtkIdType e = 0; e < edges->GetNumberOfCells(); ++e)
+    {
+      double a[3], b[3];
+      vtkIdList* pointIds = edges->GetCell(e)->GetPointIds();
+      edges->GetPoint(pointIds->GetId(0), a);
+      edges->GetPoint(pointIds->GetId(1), b);
+      const bool inner = a[0] == 5 && b[0] == 5;
+      const bool square =
+        (a[0] == b[0] && (a[0] == 0 || a[0] == 10)) || (a[1] == b[1] && (a[1] == 0 || a[1] == 10));
+      const bool input = isInput->GetComponent(e, 0) != 0;
+      const vtkIdType cell = !input ? -1 : inner ? 1 : square ? 0 : -2; // -2: a hull edge
+      const vtkIdType got = ids->GetValue(e);
+      if (cell >= 0)
+      {
+        ++fromCells[cell];
+        wrong += got != cell || depths->GetValue(e) != depth->GetValue(cell) ||
+          rivers->GetValue(e) != river->GetValue(cell) ||
+          codes->GetTypedComponent(e, 0) != code->GetTypedComponent(cell, 0) ||
+          codes->GetTypedComponent(e, 1) != code->GetTypedComponent(cell, 1) ||
+          markers->GetValue(e) != (cell == 0 ? 1 : 2) || edgeClass->GetValue(e) != 3;
+        continue;
+      }
+      hullEdges += cell == -2;
+      others += cell == -1;
+      wrong += got != -1 || !std::isnan(depths->GetValue(e)) || !rivers->GetValue(e).empty() ||
+        codes->GetTypedComponent(e, 0) != 0 || codes->GetTypedComponent(e, 1) != 0 ||
+        markers->GetValue(e) != (cell == -2 ? 1 : 0);
+    }
+    Check(
+      fromCells[0] > 0 && fromCells[1] > 0 && others > 0 && (hullEdges > 0) == hull && wrong == 0,
+      row +
+        ": input subsegments take their cell's tuple and id, hull edges NaN, 0, empty, id -1 "
+        "and marker 1, other edges marker 0 (" +
+        std::to_string(fromCells[0]) + " + " + std::to_string(fromCells[1]) + " subsegments, " +
+        std::to_string(hullEdges) + " hull edges, " + std::to_string(others) + " others, " +
+        std::to_string(wrong) + " wrong)");
+  }
+
+  // Off: nothing of the input's cells on the Edges output.
+  h.Mesher->PassCellDataOff();
+  h.Run(input, "cell data off");
+  vtkCellData* cd = h.Mesher->GetEdgesOutput()->GetCellData();
+  Check(h.NoError() && h.Messages->Warnings.empty() && !cd->GetArray("InputCellId") &&
+      !cd->GetArray("Depth") && !cd->GetArray("SegmentMarker") && cd->GetArray("EdgeClass"),
+    "cell data: PassCellData off carries nothing");
+  return 0;
+}
+
 } // namespace
 
 int main(int argc, char* argv[])
@@ -1417,6 +1555,7 @@ int main(int argc, char* argv[])
     { "composite", TestComposite },
     { "matrix", TestMatrix },
     { "point-data", TestPointData },
+    { "cell-data", TestCellData },
   };
   const auto it = tests.find(test);
   if (it == tests.end())

@@ -60,6 +60,8 @@ def main(plugin, data_dir):
         "UseInputHolePoints": 1,
         "ApplyRegionAreas": 0,
         "MaximumSteinerPoints": 0,
+        "InterpolatePointData": 1,
+        "PassCellData": 1,
         "GenerateEdges": 1,
         "GenerateOverlay": 1,
     }
@@ -110,6 +112,18 @@ def main(plugin, data_dir):
         array = edges.GetCellData().GetArray(name)
         check(array is not None and array.GetNumberOfTuples() == edges.GetNumberOfCells(),
               name + " per edge")
+    # PassCellData: each input subsegment names its input cell, other edges -1.
+    cell_ids = edges.GetCellData().GetArray("InputCellId")
+    is_input = edges.GetCellData().GetArray("Input")
+    if cell_ids is not None and is_input is not None:
+        named = [cell_ids.GetValue(e) for e in range(edges.GetNumberOfCells())]
+        inputs = [is_input.GetValue(e) for e in range(edges.GetNumberOfCells())]
+        cells = fetch(reader, 0).GetNumberOfCells()
+        check(all(0 <= c < cells for c, i in zip(named, inputs) if i) and
+              all(c == -1 for c, i in zip(named, inputs) if not i) and any(inputs),
+              "InputCellId names an input cell on input subsegments, -1 elsewhere")
+    else:
+        check(False, "the Edges output has InputCellId")
 
     # Port 2: the overlay.
     overlay = fetch(mesher, 2)
