@@ -3,20 +3,30 @@
 #include "OverlayStitchCellData.h"
 
 #include "vtkAbstractArray.h"
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkNew.h"
+#include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 
 #include "Mesher.h"
+#include "Predicates.h"
+#include "Pslg.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <limits>
+#include <utility>
 
 namespace
 {
+
+using Poll = std::function<bool(double)>;
+using CarriedArrays = std::vector<std::pair<vtkAbstractArray*, vtkSmartPointer<vtkAbstractArray>>>;
 
 bool IsFloating(vtkAbstractArray* array)
 {
@@ -31,8 +41,8 @@ bool IsSegmentMarker(vtkAbstractArray* array)
     vtkDataArray::SafeDownCast(array) && array->GetNumberOfComponents() == 1 && !IsFloating(array);
 }
 
-/// A new array like source, with n tuples of the value an edge from no input
-/// cell takes.
+/// A new array like source, with n tuples of the value an output cell from no
+/// input cell takes.
 vtkSmartPointer<vtkAbstractArray> NewTarget(vtkAbstractArray* source, vtkIdType n)
 {
   auto target = vtkSmartPointer<vtkAbstractArray>::Take(source->NewInstance());
@@ -47,29 +57,16 @@ vtkSmartPointer<vtkAbstractArray> NewTarget(vtkAbstractArray* source, vtkIdType 
   return target;
 }
 
-} // namespace
-
-bool OverlayStitchPassCellData(vtkCellData* in, const osm::Result& result,
-  const std::vector<vtkIdType>& segmentCells, const std::vector<std::string>& reserved,
-  vtkCellData* out, const std::function<bool(double)>& poll, std::vector<std::string>& warnings)
+/// Adds cellIds ("InputCellId": per output cell its input cell, or -1) to out,
+/// and a copy of each input array along it: the output cells listed in taking
+/// (those with an input cell) take their cell's tuple. carried lists the
+/// arrays made, with their sources.
+bool Carry(vtkCellData* in, vtkIdTypeArray* cellIds, const std::vector<vtkIdType>& taking,
+  const std::vector<std::string>& reserved, const char* output, vtkCellData* out, const Poll& poll,
+  std::vector<std::string>& warnings, CarriedArrays& carried)
 {
-  const auto n = static_cast<vtkIdType>(result.edges.size());
-  vtkNew<vtkIdTypeArray> cellIds;
-  cellIds->SetName("InputCellId");
-  cellIds->SetNumberOfTuples(n);
-  vtkIdType* cellOf = cellIds->GetPointer(0);
-  std::vector<vtkIdType> fromCells; // the input subsegments: the only edges that take a tuple
-  for (vtkIdType e = 0; e < n; ++e)
-  {
-    const int s = result.edges[static_cast<std::size_t>(e)].segment;
-    cellOf[e] = s >= 0 ? segmentCells[static_cast<std::size_t>(s)] : -1;
-    if (s >= 0)
-    {
-      fromCells.push_back(e);
-    }
-  }
-
-  std::vector<std::pair<vtkAbstractArray*, vtkSmartPointer<vtkAbstractArray>>> carried;
+  const vtkIdType n = cellIds->GetNumberOfTuples();
+  const vtkIdType* cellOf = cellIds->GetPointer(0);
   for (int i = 0; i < in->GetNumberOfArrays(); ++i)
   {
     vtkAbstractArray* source = in->GetAbstractArray(i);
@@ -81,26 +78,258 @@ bool OverlayStitchPassCellData(vtkCellData* in, const osm::Result& result,
     if (name && std::find(reserved.begin(), reserved.end(), name) != reserved.end())
     {
       warnings.push_back(std::string("The input's cell data array ") + name +
-        " is not carried to the Edges output: it has an array of that name of its own.");
+        " is not carried to the " + output + " output: it has an array of that name of its own.");
       continue;
     }
     carried.emplace_back(source, NewTarget(source, n));
   }
-
-  // Each carried array is filled along the input subsegments; the hull's
-  // edges are boundary edges to Triangle's markers.
-  const double total = static_cast<double>(fromCells.size() * (carried.size() + 1));
+  const double total = static_cast<double>(taking.size() * (carried.size() + 1));
   std::size_t done = 0;
   for (auto& [source, target] : carried)
   {
-    for (const vtkIdType e : fromCells)
+    for (const vtkIdType c : taking)
     {
       if ((++done & 0xffff) == 0 && poll(static_cast<double>(done) / total))
       {
         return false;
       }
-      target->SetTuple(e, cellOf[e], source);
+      target->SetTuple(c, cellOf[c], source);
     }
+  }
+  out->AddArray(cellIds);
+  for (auto& carriedArray : carried)
+  {
+    out->AddArray(carriedArray.second);
+  }
+  // The input's active scalars, ... stay active; not its global or pedigree
+  // ids, which the output cells of one input cell repeat.
+  for (int a = 0; a < vtkDataSetAttributes::NUM_ATTRIBUTES; ++a)
+  {
+    vtkAbstractArray* active = in->GetAbstractAttribute(a);
+    const bool isCarried = std::any_of(
+      carried.begin(), carried.end(), [active](const auto& c) { return c.first == active; });
+    if (active && isCarried && a != vtkDataSetAttributes::GLOBALIDS &&
+      a != vtkDataSetAttributes::PEDIGREEIDS)
+    {
+      out->SetActiveAttribute(active->GetName(), a);
+    }
+  }
+  return true;
+}
+
+vtkSmartPointer<vtkIdTypeArray> NewCellIds(vtkIdType n)
+{
+  auto ids = vtkSmartPointer<vtkIdTypeArray>::New();
+  ids->SetName("InputCellId");
+  ids->SetNumberOfTuples(n);
+  return ids;
+}
+
+/// An input polygon: its loop of Pslg points, its area and bounds.
+struct Polygon
+{
+  vtkIdType Cell;
+  std::size_t First; ///< in the loops' point list
+  std::size_t Count;
+  double Area;   ///< absolute
+  double Box[4]; ///< x min, x max, y min, y max
+};
+
+/// The input's polygons of nonzero area, in cell order.
+void ReadPolygons(vtkPolyData* input, const osm::Pslg& pslg, std::vector<Polygon>& polygons,
+  std::vector<int>& loops)
+{
+  // vtkPolyData numbers its cells verts first, then lines, polygons, strips.
+  vtkIdType cell = input->GetNumberOfVerts() + input->GetNumberOfLines();
+  auto it = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cell)
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    if (n >= 2 && ids[n - 1] == ids[0])
+    {
+      --n; // a loop closed by repeating its first point, as the segments read it
+    }
+    if (n < 3)
+    {
+      continue;
+    }
+    Polygon p{ cell, loops.size(), static_cast<std::size_t>(n), 0.0,
+      { std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+        std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity() } };
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      const osm::Point& a = pslg.points[static_cast<std::size_t>(ids[k])];
+      const osm::Point& b = pslg.points[static_cast<std::size_t>(ids[(k + 1) % n])];
+      p.Area += a.x * b.y - a.y * b.x;
+      p.Box[0] = std::min(p.Box[0], a.x);
+      p.Box[1] = std::max(p.Box[1], a.x);
+      p.Box[2] = std::min(p.Box[2], a.y);
+      p.Box[3] = std::max(p.Box[3], a.y);
+      loops.push_back(static_cast<int>(ids[k]));
+    }
+    p.Area = std::fabs(0.5 * p.Area);
+    if (p.Area > 0)
+    {
+      polygons.push_back(p);
+    }
+    else
+    {
+      loops.resize(p.First);
+    }
+  }
+}
+
+/// Per region of the mesh, a point inside it: the centroid of its largest
+/// triangle, well away from the segments that bound the region.
+std::vector<osm::Point> RegionPoints(const osm::Result& result)
+{
+  const auto& v = result.mesh.vertices;
+  std::vector<osm::Point> at;
+  std::vector<double> largest;
+  for (std::size_t t = 0; t < result.mesh.triangles.size(); ++t)
+  {
+    const int r = t < result.regionId.size() ? result.regionId[t] : -1;
+    if (r < 0)
+    {
+      continue;
+    }
+    if (static_cast<std::size_t>(r) >= at.size())
+    {
+      at.resize(static_cast<std::size_t>(r) + 1, { std::numeric_limits<double>::quiet_NaN(), 0 });
+      largest.resize(at.size(), -1.0);
+    }
+    const osm::Triangle& tri = result.mesh.triangles[t];
+    const osm::Point &a = v[tri[0]], &b = v[tri[1]], &c = v[tri[2]];
+    const double area = std::fabs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+    if (area > largest[static_cast<std::size_t>(r)])
+    {
+      largest[static_cast<std::size_t>(r)] = area;
+      at[static_cast<std::size_t>(r)] = { (a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3 };
+    }
+  }
+  return at;
+}
+
+/// The points in buckets of a square grid over their bounds, about one per
+/// bucket, so that those inside a polygon's bounds are found without a scan.
+struct PointGrid
+{
+  explicit PointGrid(const std::vector<osm::Point>& points)
+  {
+    for (const osm::Point& p : points)
+    {
+      Lo.x = std::min(Lo.x, p.x); // NaN (a region without a point) compares false: skipped
+      Lo.y = std::min(Lo.y, p.y);
+      Hi.x = std::max(Hi.x, p.x);
+      Hi.y = std::max(Hi.y, p.y);
+    }
+    Side = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(points.size())))));
+    Start.assign(static_cast<std::size_t>(Side) * Side + 1, 0);
+    for (const osm::Point& p : points)
+    {
+      Start[Bucket(p) + 1] += std::isnan(p.x) ? 0 : 1;
+    }
+    for (std::size_t b = 1; b < Start.size(); ++b)
+    {
+      Start[b] += Start[b - 1];
+    }
+    Items.resize(Start.back());
+    std::vector<std::size_t> next(Start.begin(), Start.end() - 1);
+    for (std::size_t i = 0; i < points.size(); ++i)
+    {
+      if (!std::isnan(points[i].x))
+      {
+        Items[next[Bucket(points[i])]++] = static_cast<int>(i);
+      }
+    }
+  }
+  int Column(double x) const
+  {
+    const double f = Hi.x > Lo.x ? (x - Lo.x) / (Hi.x - Lo.x) : 0.0;
+    return std::clamp(static_cast<int>(f * Side), 0, Side - 1);
+  }
+  int Row(double y) const
+  {
+    const double f = Hi.y > Lo.y ? (y - Lo.y) / (Hi.y - Lo.y) : 0.0;
+    return std::clamp(static_cast<int>(f * Side), 0, Side - 1);
+  }
+  std::size_t Bucket(const osm::Point& p) const
+  {
+    return std::isnan(p.x) ? 0
+                           : static_cast<std::size_t>(Row(p.y)) * static_cast<std::size_t>(Side) +
+        static_cast<std::size_t>(Column(p.x));
+  }
+  osm::Point Lo{ std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity() };
+  osm::Point Hi{ -std::numeric_limits<double>::infinity(),
+    -std::numeric_limits<double>::infinity() };
+  int Side = 1;
+  std::vector<std::size_t> Start;
+  std::vector<int> Items;
+};
+
+/// Which of the candidates (y, region point index), sorted by y, lie inside
+/// the polygon: the parity of the polygon's edges to their right (exact
+/// orientation tests), each edge tested against the candidates in its span of y.
+void MarkInside(const Polygon& p, const std::vector<int>& loops,
+  const std::vector<osm::Point>& points, const std::vector<std::pair<double, int>>& candidates,
+  const osm::Pslg& pslg, std::vector<unsigned char>& inside)
+{
+  inside.assign(candidates.size(), 0);
+  for (std::size_t k = 0; k < p.Count; ++k)
+  {
+    osm::Point lo = pslg.points[static_cast<std::size_t>(loops[p.First + k])];
+    osm::Point hi = pslg.points[static_cast<std::size_t>(loops[p.First + (k + 1) % p.Count])];
+    if (lo.y == hi.y)
+    {
+      continue;
+    }
+    if (lo.y > hi.y)
+    {
+      std::swap(lo, hi);
+    }
+    // Half-open spans [lo.y, hi.y), so that a vertex at a point's y counts once.
+    auto byY = [](const std::pair<double, int>& c, double y) { return c.first < y; };
+    const auto first = std::lower_bound(candidates.begin(), candidates.end(), lo.y, byY);
+    const auto last = std::lower_bound(first, candidates.end(), hi.y, byY);
+    for (auto c = first; c != last; ++c)
+    {
+      if (osm::orient2d(lo, hi, points[static_cast<std::size_t>(c->second)]) > 0)
+      {
+        inside[static_cast<std::size_t>(c - candidates.begin())] ^= 1;
+      }
+    }
+  }
+}
+
+} // namespace
+
+bool OverlayStitchPassCellData(vtkCellData* in, const osm::Result& result,
+  const std::vector<vtkIdType>& segmentCells, const std::vector<std::string>& reserved,
+  vtkCellData* out, const Poll& poll, std::vector<std::string>& warnings)
+{
+  const auto n = static_cast<vtkIdType>(result.edges.size());
+  auto cellIds = NewCellIds(n);
+  vtkIdType* cellOf = cellIds->GetPointer(0);
+  std::vector<vtkIdType> fromCells; // the input subsegments: the only edges that take a tuple
+  for (vtkIdType e = 0; e < n; ++e)
+  {
+    const int s = result.edges[static_cast<std::size_t>(e)].segment;
+    cellOf[e] = s >= 0 ? segmentCells[static_cast<std::size_t>(s)] : -1;
+    if (s >= 0)
+    {
+      fromCells.push_back(e);
+    }
+  }
+  CarriedArrays carried;
+  if (!Carry(in, cellIds, fromCells, reserved, "Edges", out, poll, warnings, carried))
+  {
+    return false;
+  }
+  // The hull's edges are boundary edges to Triangle's markers.
+  for (auto& [source, target] : carried)
+  {
     if (IsSegmentMarker(source))
     {
       auto* markers = vtkDataArray::SafeDownCast(target);
@@ -114,23 +343,89 @@ bool OverlayStitchPassCellData(vtkCellData* in, const osm::Result& result,
       }
     }
   }
-  out->AddArray(cellIds);
-  for (auto& carriedArray : carried)
+  return true;
+}
+
+bool OverlayStitchPassPolygonData(vtkPolyData* input, const osm::Pslg& pslg,
+  const osm::Result& result, const std::vector<std::string>& reserved, vtkCellData* out,
+  const Poll& poll, std::vector<std::string>& warnings)
+{
+  if (!input->GetPolys() || input->GetPolys()->GetNumberOfCells() == 0)
   {
-    out->AddArray(carriedArray.second);
+    return true;
   }
-  // The input's active scalars, ... stay active; not its global or pedigree
-  // ids, which the subsegments of one cell repeat.
-  for (int a = 0; a < vtkDataSetAttributes::NUM_ATTRIBUTES; ++a)
+  std::vector<Polygon> polygons;
+  std::vector<int> loops;
+  ReadPolygons(input, pslg, polygons, loops);
+
+  // Every region of the mesh lies inside or outside each polygon as a whole,
+  // since the polygons' edges are segments: one point of it decides.
+  const std::vector<osm::Point> points = RegionPoints(result);
+  const PointGrid grid(points);
+  std::vector<int> polygonOf(points.size(), -1);
+  std::vector<std::pair<double, int>> candidates;
+  std::vector<unsigned char> inside;
+  const double total = static_cast<double>(loops.size());
+  std::size_t edgesDone = 0;
+  std::size_t nextPoll = 0x10000;
+  for (std::size_t i = 0; i < polygons.size(); ++i)
   {
-    vtkAbstractArray* active = in->GetAbstractAttribute(a);
-    const bool isCarried = std::any_of(
-      carried.begin(), carried.end(), [active](const auto& c) { return c.first == active; });
-    if (active && isCarried && a != vtkDataSetAttributes::GLOBALIDS &&
-      a != vtkDataSetAttributes::PEDIGREEIDS)
+    const Polygon& p = polygons[i];
+    edgesDone += p.Count;
+    if (edgesDone >= nextPoll)
     {
-      out->SetActiveAttribute(active->GetName(), a);
+      nextPoll = edgesDone + 0x10000;
+      if (poll(static_cast<double>(edgesDone) / total))
+      {
+        return false;
+      }
+    }
+    candidates.clear();
+    for (int row = grid.Row(p.Box[2]); row <= grid.Row(p.Box[3]); ++row)
+    {
+      for (int column = grid.Column(p.Box[0]); column <= grid.Column(p.Box[1]); ++column)
+      {
+        const std::size_t b = static_cast<std::size_t>(row) * static_cast<std::size_t>(grid.Side) +
+          static_cast<std::size_t>(column);
+        for (std::size_t k = grid.Start[b]; k < grid.Start[b + 1]; ++k)
+        {
+          const osm::Point& q = points[static_cast<std::size_t>(grid.Items[k])];
+          if (q.x >= p.Box[0] && q.x <= p.Box[1] && q.y >= p.Box[2] && q.y <= p.Box[3])
+          {
+            candidates.emplace_back(q.y, grid.Items[k]);
+          }
+        }
+      }
+    }
+    std::sort(candidates.begin(), candidates.end());
+    MarkInside(p, loops, points, candidates, pslg, inside);
+    // The smallest polygon around a region is its innermost; a tie keeps the first.
+    for (std::size_t k = 0; k < candidates.size(); ++k)
+    {
+      int& of = polygonOf[static_cast<std::size_t>(candidates[k].second)];
+      if (inside[k] && (of < 0 || p.Area < polygons[static_cast<std::size_t>(of)].Area))
+      {
+        of = static_cast<int>(i);
+      }
     }
   }
-  return true;
+
+  const auto n = static_cast<vtkIdType>(result.mesh.triangles.size());
+  auto cellIds = NewCellIds(n);
+  vtkIdType* cellOf = cellIds->GetPointer(0);
+  std::vector<vtkIdType> fromCells;
+  for (vtkIdType t = 0; t < n; ++t)
+  {
+    const auto tt = static_cast<std::size_t>(t);
+    const int r = tt < result.regionId.size() ? result.regionId[tt] : -1;
+    const int of = r >= 0 ? polygonOf[static_cast<std::size_t>(r)] : -1;
+    cellOf[t] = of >= 0 ? polygons[static_cast<std::size_t>(of)].Cell : -1;
+    if (of >= 0)
+    {
+      fromCells.push_back(t);
+    }
+  }
+  CarriedArrays carried;
+  return Carry(
+    input->GetCellData(), cellIds, fromCells, reserved, "Mesh", out, poll, warnings, carried);
 }

@@ -2,9 +2,18 @@
 // Copyright (c) 2026, the Overlay Stitch Meshing authors
 //
 // Internal to OverlayStitch::Filters (not installed): carries the input's
-// cell data to the Edges output (vtkOverlayStitchMesher's PassCellData), so
-// that each input subsegment keeps what its line, polyline or polygon said
-// (a river's name, a boundary condition, Triangle's segment marker).
+// cell data to the outputs (vtkOverlayStitchMesher's PassCellData), so that
+// each input subsegment of the Edges output keeps what its line, polyline or
+// polygon said (a river's name, a boundary condition, Triangle's segment
+// marker), and each triangle of the Mesh what the polygon around it said (a
+// land use, a material).
+//
+// An output cell that comes from no input cell takes NaN (floating point),
+// 0 (other numbers) or an empty string, and "InputCellId" -1. Arrays named
+// as the output's own (reserved) are left out with a warning; the ghost
+// array is left out (the outputs are one piece, with no ghost cells). poll
+// reports the fraction done and returns true to stop; the functions return
+// false when stopped.
 #ifndef OverlayStitchCellData_h
 #define OverlayStitchCellData_h
 
@@ -15,9 +24,11 @@
 #include <vector>
 
 class vtkCellData;
+class vtkPolyData;
 
 namespace osm
 {
+struct Pslg;
 struct Result;
 }
 
@@ -30,15 +41,19 @@ struct Result;
 /// - Triangle's "SegmentMarker" (one integer per cell): an input subsegment
 ///   its cell's marker, a hull edge 1 (Triangle marks boundary edges so), any
 ///   other edge 0, as in Triangle's .edge files.
-/// - Every other array: an input subsegment its cell's tuple; every other
-///   edge NaN (floating point), 0 (other numbers) or an empty string.
-///
-/// Arrays named as the Edges output's own (reserved) are left out with a
-/// warning; the ghost array is left out (the output has no ghost cells).
-/// poll reports the fraction done and returns true to stop; returns false
-/// when stopped.
+/// - Every other array: an input subsegment its cell's tuple.
 bool OverlayStitchPassCellData(vtkCellData* in, const osm::Result& result,
   const std::vector<vtkIdType>& segmentCells, const std::vector<std::string>& reserved,
   vtkCellData* out, const std::function<bool(double)>& poll, std::vector<std::string>& warnings);
+
+/// Fills out, the cell data of the Mesh (result.mesh's triangles, in order),
+/// from the polygon cells of input (whose point i is the Pslg's point i):
+/// each triangle takes the tuple of the smallest polygon (by area) that
+/// contains it, the innermost where polygons nest (even-odd rule for a
+/// polygon that crosses itself), and "InputCellId" names it. Nothing when
+/// the input has no polygon cells.
+bool OverlayStitchPassPolygonData(vtkPolyData* input, const osm::Pslg& pslg,
+  const osm::Result& result, const std::vector<std::string>& reserved, vtkCellData* out,
+  const std::function<bool(double)>& poll, std::vector<std::string>& warnings);
 
 #endif

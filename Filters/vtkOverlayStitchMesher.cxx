@@ -1070,12 +1070,32 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
     return 1;
   }
   FillMesh(result, map, mesh, [this](double fraction) {
-    this->UpdateProgress(0.93 + 0.02 * fraction);
+    this->UpdateProgress(0.93 + 0.015 * fraction);
     return AbortRequested(this);
   });
   if (aborted())
   {
     return 1;
+  }
+  if (this->PassCellData)
+  {
+    std::vector<std::string> warnings;
+    OverlayStitchPassPolygonData(
+      input, pslg, result, { "MinAngle", "MaxAngle", "RegionId", "RegionAttribute", "InputCellId" },
+      mesh->GetCellData(),
+      [this](double fraction) {
+        this->UpdateProgress(0.945 + 0.005 * fraction);
+        return AbortRequested(this);
+      },
+      warnings);
+    for (const std::string& warning : warnings)
+    {
+      vtkWarningMacro(<< warning);
+    }
+    if (aborted())
+    {
+      return 1;
+    }
   }
   OverlayStitchMovePointData(carried, mesh->GetPointData());
   auto addCount = [mesh](const char* name, double value) {

@@ -221,11 +221,14 @@ public:
 
   ///@{
   /**
-   * Whether to carry the input's cell data to the Edges output. Default on.
-   * Each input subsegment (an edge along a line, polyline or polygon of the
-   * input) takes the tuple of the cell it comes from, and "InputCellId"
-   * names that cell; every other edge takes NaN (floating point), 0 (other
-   * numbers) or an empty string, and InputCellId -1. Triangle's segment
+   * Whether to carry the input's cell data to the outputs. Default on.
+   * Each triangle of the Mesh takes the tuple of the smallest input polygon
+   * around it (the innermost where polygons nest; nothing without polygon
+   * cells), each input subsegment of the Edges output (an edge along a
+   * line, polyline or polygon of the input) the tuple of the cell it comes
+   * from, and "InputCellId" names that cell; every other triangle or edge
+   * takes NaN (floating point), 0 (other numbers) or an empty string, and
+   * InputCellId -1. Triangle's segment
    * markers (the cells' "SegmentMarker", as vtkTrianglePolyReader writes
    * them) are as in Triangle's .edge files: a hull edge 1, any other edge 0.
    * Where segments of several cells overlap, a subsegment takes the first

@@ -99,11 +99,12 @@ INPUT                  Triangle .poly (holes honoured) or .node file, or
                        their regions, as Triangle's -a (default: ignored,
                        with a warning)
   --no-point-data      do not carry the input's point data (a .poly's vertex
-                       attributes and markers) to the mesh, nor its segment
-                       markers to .edge (default: input vertices keep theirs,
-                       new points take them linear along their segment or in
-                       the triangle of those around them; markers as
-                       Triangle's: a segment's on it, else 0)
+                       attributes and markers) to the mesh, nor its polygons'
+                       cell data, nor its segment markers to .edge (default:
+                       input vertices keep theirs, new points take them
+                       linear along their segment or in the triangle of those
+                       around them; markers as Triangle's: a segment's on it,
+                       else 0; a triangle its innermost polygon's)
   --stats              print the run statistics as JSON on stdout
   --svg FILE           draw the mesh: input segments bold, discarded overlay
                        edges dashed
@@ -904,10 +905,10 @@ int Run(int argc, char* argv[], OsmOutputWindow* window)
   mesher->SetProjectToXYPlane(args.projectXY);
   mesher->SetApplyRegionAreas(args.regionAreas);
   mesher->SetInterpolatePointData(args.pointData);
-  // The Edges output's cell data is only the .edge file's segment markers here.
-  mesher->SetPassCellData(args.pointData && Extension(args.output) == ".node");
+  mesher->SetPassCellData(args.pointData); // polygons' data, .edge markers
   mesher->SetMaximumSteinerPoints(static_cast<vtkIdType>(args.maxSteiner));
-  mesher->SetGenerateEdges(true);
+  // The edges are only written to .edge files and drawn.
+  mesher->SetGenerateEdges(Extension(args.output) == ".node" || !args.svg.empty());
   mesher->SetGenerateOverlay(false);
   mesher->Update();
   window->Check("", "meshing failed");

@@ -15,6 +15,7 @@ import argparse
 import json
 import math
 import os
+import re
 import shutil
 import struct
 import subprocess
@@ -449,22 +450,27 @@ def group_formats():
     validate(square, out("sub/UPPER.VTP"), "--allow-missing", what="an upper-case .VTP")
 
 
-def write_ascii_vtp(path, points, lines):
+def write_ascii_vtp(path, points, lines, polys=(), cell_values=None):
+    """Lines, or polygons (polys), and optionally a Float64 cell array Land."""
+    cells, tag = (polys, "Polys") if polys else (lines, "Lines")
     with open(path, "w") as f:
         f.write('<?xml version="1.0"?>\n<VTKFile type="PolyData" version="0.1" '
                 'byte_order="LittleEndian">\n<PolyData>\n'
                 '<Piece NumberOfPoints="%d" NumberOfVerts="0" NumberOfLines="%d" '
-                'NumberOfStrips="0" NumberOfPolys="0">\n' % (len(points), len(lines)))
+                'NumberOfStrips="0" NumberOfPolys="%d">\n' % (len(points), len(lines), len(polys)))
         f.write('<Points><DataArray type="Float64" NumberOfComponents="3" format="ascii">\n')
         f.write(" ".join("%r %r %r" % p for p in points) + "\n</DataArray></Points>\n")
-        f.write('<Lines><DataArray type="Int64" Name="connectivity" format="ascii">\n')
-        f.write(" ".join(" ".join(str(i) for i in l) for l in lines) + "\n</DataArray>\n")
+        if cell_values is not None:
+            f.write('<CellData><DataArray type="Float64" Name="Land" format="ascii">\n')
+            f.write(" ".join("%r" % v for v in cell_values) + "\n</DataArray></CellData>\n")
+        f.write('<%s><DataArray type="Int64" Name="connectivity" format="ascii">\n' % tag)
+        f.write(" ".join(" ".join(str(i) for i in l) for l in cells) + "\n</DataArray>\n")
         offsets, o = [], 0
-        for l in lines:
+        for l in cells:
             o += len(l)
             offsets.append(o)
         f.write('<DataArray type="Int64" Name="offsets" format="ascii">\n')
-        f.write(" ".join(str(x) for x in offsets) + "\n</DataArray></Lines>\n")
+        f.write(" ".join(str(x) for x in offsets) + "\n</DataArray></%s>\n" % tag)
         f.write("</Piece>\n</PolyData>\n</VTKFile>\n")
 
 
@@ -479,6 +485,22 @@ def group_inputs():
                     [[0, 1, 2, 3, 0], [4, 5]])
     mesh_ok(vtp, "-o", out("slit.vtu"))
     validate(vtp, out("slit.vtu"), what="a .vtp polyline input meshed, every point kept, valid")
+    # .vtp polygons with cell data: the mesh's triangles take their polygon's
+    # (PassCellData; its values are checked by vtk.OverlayStitchMesher.Input.polygon-data).
+    land = out("land.vtp")
+    write_ascii_vtp(land, [(0, 0, 0), (4, 0, 0), (4, 4, 0), (0, 4, 0), (1, 1, 0), (1, 3, 0),
+                           (3, 3, 0), (3, 1, 0)], [], polys=[[0, 1, 2, 3], [4, 5, 6, 7]],
+                    cell_values=[1.5, 2.5])
+    for extra, carried in (([], True), (["--no-point-data"], False)):
+        mesh_ok(land, "-o", out("land.vtu"), *extra)
+        validate(land, out("land.vtu"), what="a .vtp polygon input meshed, valid %r" % extra)
+        header = read_bytes(out("land.vtu")).split(b"<AppendedData")[0]
+        cell_data = header.split(b"<CellData")[1].split(b"</CellData>")[0]
+        names = set(n.decode() for n in re.findall(b'Name="([^"]+)"', cell_data))
+        check(({"InputCellId", "Land"} <= names) == carried and
+              ({"InputCellId", "Land"} & names == set()) == (not carried),
+              "polygon cell data on the mesh %s %r" % ("with" if carried else "without", extra),
+              str(sorted(names)))
     # .node: points only, meshed over their hull.
     node = data("split_pslg.node")
     s = stats_of(node, "-o", out("points.node"))

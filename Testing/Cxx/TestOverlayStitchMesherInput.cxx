@@ -19,6 +19,7 @@
 //   matrix           the bad-input matrix of issue 6, through the filter
 //   point-data       the input's point data carried to the mesh (InterpolatePointData)
 //   cell-data        the input's cell data carried to the Edges output (PassCellData)
+//   polygon-data     the input polygons' cell data carried to the Mesh (PassCellData)
 // Every check prints "ok" or "FAILED"; the exit status is the number of failures (capped).
 #include "MesherTestUtils.h"
 
@@ -1542,6 +1543,153 @@ int TestCellData()
   return 0;
 }
 
+/// Each triangle of the Mesh takes the cell data of the innermost input
+/// polygon around it.
+int TestPolygonData()
+{
+  // Lines first (cells 0-2: a dangling segment, and two cuts that split the
+  // ring between the squares in two), then polygons: the square A [0, 10]^2
+  // (cell 3, counter-clockwise), the square B [3, 7]^2 inside it (cell 4,
+  // clockwise) and the triangle D beside A (cell 5).
+  auto input =
+    MakeLines({ { 0, 0, 0 }, { 10, 0, 0 }, { 10, 10, 0 }, { 0, 10, 0 }, { 3, 3, 0 }, { 3, 7, 0 },
+                { 7, 7, 0 }, { 7, 3, 0 }, { 12, 0, 0 }, { 14, 0, 0 }, { 13, 2, 0 }, { 1, 1, 0 },
+                { 2, 2, 0 }, { 0, 5, 0 }, { 3, 5, 0 }, { 7, 5, 0 }, { 10, 5, 0 } },
+      { { 11, 12 }, { 13, 14 }, { 15, 16 } });
+  vtkNew<vtkCellArray> polys;
+  for (const std::vector<vtkIdType>& loop :
+    { std::vector<vtkIdType>{ 0, 1, 2, 3 }, { 4, 5, 6, 7 }, { 8, 9, 10, 8 } })
+  {
+    polys->InsertNextCell(static_cast<vtkIdType>(loop.size()), loop.data());
+  }
+  input->SetPolys(polys);
+  vtkNew<vtkDoubleArray> land;
+  land->SetName("Land");
+  vtkNew<vtkStringArray> name;
+  name->SetName("Name");
+  vtkNew<vtkIntArray> clash;
+  clash->SetName("RegionId");
+  for (int c = 0; c < 6; ++c)
+  {
+    land->InsertNextValue(c + 0.5);
+    name->InsertNextValue("cell " + std::to_string(c));
+    clash->InsertNextValue(c);
+  }
+  input->GetCellData()->AddArray(land);
+  input->GetCellData()->AddArray(name);
+  input->GetCellData()->AddArray(clash);
+
+  Harness h;
+  h.Mesher->SetMaximumEdgeLength(1.5);
+  for (const bool hull : { false, true })
+  {
+    const std::string row = std::string("polygon data, ") + (hull ? "hull" : "auto") + " domain";
+    hull ? h.Mesher->SetDomainToHull() : h.Mesher->SetDomainToAuto();
+    vtkPolyData* mesh = h.Run(input, row);
+    Check(h.NoError() && h.Messages->Warnings.size() == 1 &&
+        h.Messages->HasWarning({ "RegionId", "not carried to the Mesh output" }),
+      row + ": meshed; one warning: the input's RegionId is not carried to the Mesh");
+    vtkCellData* cd = mesh->GetCellData();
+    auto* ids = vtkIdTypeArray::SafeDownCast(cd->GetArray("InputCellId"));
+    auto* lands = vtkDoubleArray::SafeDownCast(cd->GetArray("Land"));
+    auto* names = vtkStringArray::SafeDownCast(cd->GetAbstractArray("Name"));
+    if (!Check(ids && lands && names && vtkIntArray::SafeDownCast(cd->GetArray("RegionId")),
+          row + ": InputCellId, Land and Name on the mesh, its own RegionId kept"))
+    {
+      return 1;
+    }
+    std::map<vtkIdType, vtkIdType> counts;
+    int wrong = 0;
+    for (vtkIdType t = 0; t < mesh->GetNumberOfCells(); ++t)
+    {
+      vtkIdList* corners = mesh->GetCell(t)->GetPointIds();
+      double c[2] = { 0, 0 };
+      for (int k = 0; k < 3; ++k)
+      {
+        c[0] += mesh->GetPoint(corners->GetId(k))[0] / 3;
+        c[1] += mesh->GetPoint(corners->GetId(k))[1] / 3;
+      }
+      const bool inB = c[0] > 3 && c[0] < 7 && c[1] > 3 && c[1] < 7;
+      const bool inA = c[0] > 0 && c[0] < 10 && c[1] > 0 && c[1] < 10;
+      const bool inD = c[1] > 0 && c[1] < 2 * (c[0] - 12) && c[1] < 2 * (14 - c[0]);
+      const vtkIdType cell = inB ? 4 : inA ? 3 : inD ? 5 : -1;
+      ++counts[cell];
+      const vtkIdType got = ids->GetValue(t);
+      wrong += got != cell ||
+        (cell < 0 ? !std::isnan(lands->GetValue(t)) || !names->GetValue(t).empty()
+                  : lands->GetValue(t) != cell + 0.5 ||
+              names->GetValue(t) != "cell " + std::to_string(cell));
+    }
+    Check(counts[3] > 0 && counts[4] > 0 && counts[5] > 0 && (counts[-1] > 0) == hull && wrong == 0,
+      row +
+        ": each triangle takes its innermost polygon's tuple and id, NaN, empty and -1 "
+        "outside every polygon (" +
+        std::to_string(counts[3]) + " in A, " + std::to_string(counts[4]) + " in B, " +
+        std::to_string(counts[5]) + " in D, " + std::to_string(counts[-1]) + " outside, " +
+        std::to_string(wrong) + " wrong)");
+  }
+
+  // Lines only: no polygon, nothing on the mesh.
+  input->SetPolys(nullptr);
+  for (vtkAbstractArray* a : std::initializer_list<vtkAbstractArray*>{ land, clash, name })
+  {
+    a->SetNumberOfTuples(3);
+  }
+  h.Mesher->SetDomainToHull();
+  vtkPolyData* mesh = h.Run(input, "polygon data, lines only");
+  Check(h.NoError() && !mesh->GetCellData()->GetArray("InputCellId") &&
+      !mesh->GetCellData()->GetArray("Land"),
+    "polygon data: without polygon cells the mesh takes no input cell array");
+  return 0;
+}
+
+/// Meshes a map of n polygons (a grid of squares, each with a value), with and
+/// without PassCellData, to measure what carrying the polygons' data costs
+/// (not a ctest).
+int MeasurePolygons(int n)
+{
+  const int side = std::max(1, static_cast<int>(std::sqrt(static_cast<double>(n))));
+  std::vector<Xyz> xyz;
+  for (int j = 0; j <= side; ++j)
+  {
+    for (int i = 0; i <= side; ++i)
+    {
+      xyz.push_back({ static_cast<double>(i), static_cast<double>(j), 0 });
+    }
+  }
+  auto input = MakeLines(xyz, {});
+  vtkNew<vtkCellArray> polys;
+  vtkNew<vtkDoubleArray> value;
+  value->SetName("Value");
+  for (int j = 0; j < side; ++j)
+  {
+    for (int i = 0; i < side; ++i)
+    {
+      const vtkIdType a = j * (side + 1) + i;
+      const vtkIdType loop[] = { a, a + 1, a + side + 2, a + side + 1 };
+      polys->InsertNextCell(4, loop);
+      value->InsertNextValue(i + j);
+    }
+  }
+  input->SetPolys(polys);
+  input->GetCellData()->AddArray(value);
+  Harness h;
+  int failures = 0;
+  for (const bool pass : { true, false, true, false })
+  {
+    h.Mesher->SetPassCellData(pass);
+    const auto start = std::chrono::steady_clock::now();
+    vtkPolyData* mesh = h.Run(input, "map of polygons");
+    const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::cout << side * side << " polygons, PassCellData " << (pass ? "on" : "off") << ": "
+              << mesh->GetNumberOfCells() << " triangles in " << seconds << " s (core "
+              << osmtest::Statistic(mesh, "SecondsTotal") << " s)\n";
+    failures += h.NoError() ? 0 : 1;
+  }
+  return failures;
+}
+
 } // namespace
 
 int main(int argc, char* argv[])
@@ -1561,10 +1709,12 @@ int main(int argc, char* argv[])
     { "progress", TestProgress },
     { "abort", [points] { return TestAbort(points); } },
     { "measure-big", [points] { return MeasureBig(points); } },
+    { "measure-polygons", [points] { return MeasurePolygons(points); } },
     { "composite", TestComposite },
     { "matrix", TestMatrix },
     { "point-data", TestPointData },
     { "cell-data", TestCellData },
+    { "polygon-data", TestPolygonData },
   };
   const auto it = tests.find(test);
   if (it == tests.end())
