@@ -38,9 +38,9 @@ struct Result;
 ///
 /// - "InputCellId": an input subsegment's input cell, -1 on every other edge
 ///   (the hull's edges included).
-/// - Triangle's "SegmentMarker" (one integer per cell): an input subsegment
-///   its cell's marker, a hull edge 1 (Triangle marks boundary edges so), any
-///   other edge 0, as in Triangle's .edge files.
+/// - Triangle's "SegmentMarker" (one integer per cell), by Triangle's rules
+///   for .edge files: an input subsegment's nonzero marker, else 1 on the
+///   mesh's boundary (the holes' included), else 0.
 /// - Every other array: an input subsegment its cell's tuple.
 bool OverlayStitchPassCellData(vtkCellData* in, const osm::Result& result,
   const std::vector<vtkIdType>& segmentCells, const std::vector<std::string>& reserved,

@@ -193,6 +193,40 @@ void CollectHolePoints(vtkFieldData* field, std::vector<std::array<double, 3>>& 
 } // namespace
 
 //------------------------------------------------------------------------------
+namespace
+{
+/// The arrays of some pieces that combining left out, since not every piece
+/// has them (with the same type and components): "point data X", "cell data Y".
+void NoteArraysLeftOut(
+  const std::vector<vtkPolyData*>& used, vtkPolyData* combined, std::vector<std::string>& out)
+{
+  std::set<std::string> seen;
+  for (const bool cells : { false, true })
+  {
+    vtkDataSetAttributes* kept = cells ? static_cast<vtkDataSetAttributes*>(combined->GetCellData())
+                                       : combined->GetPointData();
+    for (vtkPolyData* piece : used)
+    {
+      vtkDataSetAttributes* attributes =
+        cells ? static_cast<vtkDataSetAttributes*>(piece->GetCellData()) : piece->GetPointData();
+      for (int i = 0; i < attributes->GetNumberOfArrays(); ++i)
+      {
+        const char* name = attributes->GetArrayName(i);
+        const std::string item =
+          std::string(cells ? "cell" : "point") + " data " + (name ? name : "(unnamed)");
+        if ((!name || !kept->GetAbstractArray(name)) &&
+          !(name && std::strcmp(name, vtkDataSetAttributes::GhostArrayName()) == 0) &&
+          seen.insert(item).second)
+        {
+          out.push_back(item);
+        }
+      }
+    }
+  }
+}
+} // namespace
+
+//------------------------------------------------------------------------------
 vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
   const std::vector<vtkSmartPointer<vtkDataObject>>& pieces, OverlayStitchGatherSummary* summary,
   const char* pieceName)
@@ -454,6 +488,7 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
 
   if (summary)
   {
+    NoteArraysLeftOut(used, combined, summary->ArraysLeftOut);
     summary->SharedPointsMerged = sharedPoints;
     summary->SharedCellsDropped = sharedCells;
     summary->HolePoints = static_cast<vtkIdType>(seeds.size());

@@ -55,6 +55,9 @@ struct OverlayStitchGatherSummary
   /// rank 1 refers to point 57, ..."), for the caller to report.
   vtkIdType InvalidCells = 0;
   std::string FirstInvalidCell;
+  /// Point and cell arrays of some pieces but not all ("cell data Tag"): the
+  /// combined input has only those common to every piece.
+  std::vector<std::string> ArraysLeftOut;
 };
 
 /// Collective over `controller`: every rank must call it once, in the same

@@ -11,9 +11,13 @@
 #include "vtkSmartPointer.h"
 
 #include "Interpolation.h"
+#include "Mesher.h"
+#include "OverlayStitchBoundary.h"
+#include "Pslg.h"
 
 #include <algorithm>
 #include <cstring>
+#include <optional>
 
 namespace
 {
@@ -45,6 +49,62 @@ vtkDataArray* SegmentMarkers(vtkCellData* cells)
   return markers && markers->GetNumberOfComponents() == 1 && !IsFloating(markers) ? markers
                                                                                   : nullptr;
 }
+
+/// Triangle's vertex markers (its documentation's rules, in order): a
+/// vertex's own nonzero marker; else a nonzero marker of a segment it lies
+/// on (its end included); else 1 on the mesh's boundary; else 0.
+class TriangleMarkers
+{
+public:
+  TriangleMarkers(const osm::Pslg& pslg, const osm::Result& result, vtkDataArray* segmentMarkers,
+    const std::vector<vtkIdType>& segmentCells)
+    : Boundary(result.mesh)
+    , SegmentMarkers(segmentMarkers)
+    , SegmentCells(segmentCells)
+    , AtEnds(pslg.points.size(), 0.0)
+  {
+    for (std::size_t s = 0; segmentMarkers && s < pslg.segments.size(); ++s)
+    {
+      const double marker = this->OfSegment(static_cast<int>(s));
+      for (const int end : pslg.segments[s])
+      {
+        double& at = this->AtEnds[static_cast<std::size_t>(end)];
+        at = at == 0 ? marker : at;
+      }
+    }
+  }
+
+  double Of(const osm::VertexTerms& t, vtkDataArray* pointMarkers) const
+  {
+    double marker = t.inputPoint >= 0 ? pointMarkers->GetComponent(t.inputPoint, 0) : 0.0;
+    if (marker == 0)
+    {
+      marker = this->OfSegment(t.segment);
+    }
+    if (marker == 0 && t.inputPoint >= 0)
+    {
+      marker = this->AtEnds[static_cast<std::size_t>(t.inputPoint)];
+    }
+    if (marker == 0)
+    {
+      marker = this->Boundary.HasVertex(static_cast<int>(t.vertex)) ? 1.0 : 0.0;
+    }
+    return marker;
+  }
+
+private:
+  double OfSegment(int s) const
+  {
+    return s >= 0 && this->SegmentMarkers
+      ? this->SegmentMarkers->GetComponent(this->SegmentCells[static_cast<std::size_t>(s)], 0)
+      : 0.0;
+  }
+
+  OverlayStitchBoundary Boundary;
+  vtkDataArray* SegmentMarkers;
+  const std::vector<vtkIdType>& SegmentCells;
+  std::vector<double> AtEnds; ///< per input point, a nonzero marker of a segment it ends
+};
 
 } // namespace
 
@@ -90,6 +150,13 @@ bool OverlayStitchInterpolatePointData(vtkPointData* in, vtkCellData* inCells,
   {
     return true;
   }
+  const bool markers = std::any_of(
+    carried.begin(), carried.end(), [](const Carried& c) { return c.How == Carried::Marker; });
+  std::optional<TriangleMarkers> triangle;
+  if (markers)
+  {
+    triangle.emplace(pslg, result, segmentMarkers, segmentCells);
+  }
 
   vtkNew<vtkIdList> ids;
   double weights[6];
@@ -114,7 +181,12 @@ bool OverlayStitchInterpolatePointData(vtkPointData* in, vtkCellData* inCells,
     }
     for (const Carried& c : carried)
     {
-      if (t.inputPoint >= 0)
+      if (c.How == Carried::Marker)
+      {
+        vtkDataArray::SafeDownCast(c.Target)->SetComponent(
+          v, 0, triangle->Of(t, vtkDataArray::SafeDownCast(c.Source)));
+      }
+      else if (t.inputPoint >= 0)
       {
         c.Target->SetTuple(v, t.inputPoint, c.Source);
       }
@@ -122,18 +194,9 @@ bool OverlayStitchInterpolatePointData(vtkPointData* in, vtkCellData* inCells,
       {
         c.Target->InterpolateTuple(v, ids, c.Source, weights);
       }
-      else if (c.How == Carried::Largest)
-      {
-        c.Target->SetTuple(v, t.point[largest], c.Source);
-      }
       else
       {
-        // Without segment markers, every segment is a boundary: 1.
-        const double marker = t.segment < 0 ? 0.0
-          : segmentMarkers
-          ? segmentMarkers->GetComponent(segmentCells[static_cast<std::size_t>(t.segment)], 0)
-          : 1.0;
-        vtkDataArray::SafeDownCast(c.Target)->SetComponent(v, 0, marker);
+        c.Target->SetTuple(v, t.point[largest], c.Source);
       }
     }
     return true;

@@ -11,10 +11,10 @@
 // (integers, strings: labels and ids, which an average would turn into
 // another label) take the tuple of the input point with the largest weight,
 // except Triangle's vertex markers: a "PointMarker" array (as
-// vtkTrianglePolyReader writes them) gives a new point on a segment that
-// segment's marker from the cells' "SegmentMarker" (1 when the input has
-// none) and any other new point 0, as Triangle does (OverlayStitchCellData.h
-// gives the segment markers to the Edges output).
+// vtkTrianglePolyReader writes them) follows Triangle's rules: a point's own
+// nonzero marker, else a nonzero marker of a segment it lies on (the cells'
+// "SegmentMarker"), else 1 on the mesh's boundary, else 0
+// (OverlayStitchCellData.h gives the segment markers to the Edges output).
 #ifndef OverlayStitchPointData_h
 #define OverlayStitchPointData_h
 

@@ -311,6 +311,26 @@ std::string ExplainSegments(const std::string& text, const osm::Array<SegmentSou
   return out.str();
 }
 
+/// The arrays that combining blocks or pieces left out and the filter would
+/// carry (point data when interpolating, cell data when passing it), listed.
+std::string ArraysLeftOut(
+  std::initializer_list<const OverlayStitchGatherSummary*> summaries, bool pointData, bool cellData)
+{
+  std::string names;
+  for (const OverlayStitchGatherSummary* summary : summaries)
+  {
+    for (const std::string& item : summary->ArraysLeftOut)
+    {
+      const bool point = item.rfind("point", 0) == 0;
+      if (point ? pointData : cellData)
+      {
+        names += (names.empty() ? "" : ", ") + item;
+      }
+    }
+  }
+  return names;
+}
+
 /// Reads the input's cells into segments, counting the cells that give none.
 void ReadSegments(
   vtkPolyData* input, osm::Pslg& pslg, osm::Array<SegmentSource>& sources, IgnoredCells& ignored)
@@ -844,6 +864,14 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
     vtkErrorMacro("No input polydata.");
     return 1;
   }
+  const std::string leftOut =
+    ArraysLeftOut({ &combination, &gather }, this->InterpolatePointData, this->PassCellData);
+  if (!leftOut.empty())
+  {
+    vtkWarningMacro(<< "Not carried to the outputs, since not every block or rank's piece of the "
+                       "input has them (with the same type and components): "
+                    << leftOut << ".");
+  }
 
   // Phase "input": points, the plane they lie in, segments, hole seeds.
   this->SetProgressText("input");
@@ -1156,6 +1184,7 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   return 1;
 }
 
+//------------------------------------------------------------------------------
 //------------------------------------------------------------------------------
 void vtkOverlayStitchMesher::PrintSelf(ostream& os, vtkIndent indent)
 {

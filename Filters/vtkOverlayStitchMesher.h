@@ -209,9 +209,10 @@ public:
    * Floating-point arrays are interpolated so; other arrays (labels, ids,
    * strings) take the value of the input point with the largest weight,
    * except Triangle's vertex markers (a "PointMarker" array, as
-   * vtkTrianglePolyReader writes them): a new point on a segment takes the
-   * segment's marker (the cells' "SegmentMarker"; 1 without), any other new
-   * point 0. Costs a third to a half of the core's time on large inputs
+   * vtkTrianglePolyReader writes them), which follow Triangle's rules: a
+   * point's own nonzero marker, else a nonzero marker of a segment it lies
+   * on (the cells' "SegmentMarker"), else 1 on the mesh's boundary (holes'
+   * included), else 0. Costs a third to a half of the core's time on large inputs
    * with point data.
    */
   vtkSetMacro(InterpolatePointData, vtkTypeBool);
@@ -228,9 +229,10 @@ public:
    * line, polyline or polygon of the input) the tuple of the cell it comes
    * from, and "InputCellId" names that cell; every other triangle or edge
    * takes NaN (floating point), 0 (other numbers) or an empty string, and
-   * InputCellId -1. Triangle's segment
-   * markers (the cells' "SegmentMarker", as vtkTrianglePolyReader writes
-   * them) are as in Triangle's .edge files: a hull edge 1, any other edge 0.
+   * InputCellId -1. Triangle's segment markers (the cells' "SegmentMarker",
+   * as vtkTrianglePolyReader writes them) follow Triangle's rules for .edge
+   * files: a subsegment's nonzero marker, else 1 on the mesh's boundary
+   * (holes' included), else 0.
    * Where segments of several cells overlap, a subsegment takes the first
    * cell's.
    */

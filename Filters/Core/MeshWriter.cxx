@@ -13,10 +13,13 @@ namespace osm
 namespace
 {
 
-/// Mesh edges as sorted (lo, hi) pairs, each once, with a marker: that of
-/// the input subsegment (per Result::edges entry; 1 when none are given), 0
-/// for the others.
-std::vector<std::array<int, 3>> meshEdges(const Result& r, const std::vector<int>& markers = {})
+/// Mesh edges as sorted (lo, hi) pairs, each once, with Triangle's marker: an
+/// input subsegment's nonzero marker (per Result::edges entry; 1 when none
+/// are given), else 1 on the mesh's boundary (unless markBoundary is false:
+/// then input subsegments only), else 0. boundaryVertex gets 1 per vertex on
+/// the boundary.
+std::vector<std::array<int, 3>> meshEdges(const Result& r, const std::vector<int>& markers,
+  std::vector<char>& boundaryVertex, bool markBoundary = true)
 {
   std::vector<std::array<int, 3>> edges;
   for (const Triangle& t : r.mesh.triangles)
@@ -26,7 +29,22 @@ std::vector<std::array<int, 3>> meshEdges(const Result& r, const std::vector<int
       edges.push_back({ std::min(a, b), std::max(a, b), 0 });
     }
   std::sort(edges.begin(), edges.end());
-  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  // An edge of one triangle is on the boundary (the holes' included).
+  boundaryVertex.assign(r.mesh.vertices.size(), 0);
+  std::vector<char> boundary;
+  std::size_t unique = 0;
+  for (std::size_t i = 0; i < edges.size();)
+  {
+    std::size_t j = i + 1;
+    while (j < edges.size() && edges[j] == edges[i])
+      ++j;
+    boundary.push_back(j - i == 1);
+    if (j - i == 1)
+      boundaryVertex[edges[i][0]] = boundaryVertex[edges[i][1]] = 1;
+    edges[unique++] = edges[i];
+    i = j;
+  }
+  edges.resize(unique);
   // Input subsegments are recorded against the edge vertices: map by coordinates.
   std::vector<std::pair<Point, int>> byPoint;
   for (std::size_t v = 0; v < r.mesh.vertices.size(); ++v)
@@ -51,6 +69,8 @@ std::vector<std::array<int, 3>> meshEdges(const Result& r, const std::vector<int
     if (it != edges.end() && (*it)[0] == key[0] && (*it)[1] == key[1])
       (*it)[2] = markers.empty() ? 1 : markers[i];
   }
+  for (std::size_t e = 0; e < edges.size(); ++e)
+    edges[e][2] = edges[e][2] == 0 && boundary[e] && markBoundary ? 1 : edges[e][2];
   return edges;
 }
 
@@ -67,6 +87,8 @@ std::string writeTriangleFiles(const std::string& base, const Result& r, const N
   std::ofstream node(base + ".node"), ele(base + ".ele"), edge(base + ".edge");
   if (!node || !ele || !edge)
     return "cannot write " + base + ".node/.ele/.edge";
+  std::vector<char> boundaryVertex;
+  const std::vector<std::array<int, 3>> edges = meshEdges(r, data.edgeMarkers, boundaryVertex);
   char buf[128];
   node << n << " 2 " << data.attributeCount << " 1\n";
   for (std::size_t v = 0; v < n; ++v)
@@ -80,10 +102,7 @@ std::string writeTriangleFiles(const std::string& base, const Result& r, const N
       std::snprintf(buf, sizeof buf, " %.17g", data.attributes[v * data.attributeCount + k]);
       node << buf;
     }
-    node << ' '
-         << (data.markers.empty() ? (r.vertexOrigin[v] == VertexOrigin::Input ? 1 : 0)
-                                  : data.markers[v])
-         << '\n';
+    node << ' ' << (data.markers.empty() ? int(boundaryVertex[v]) : data.markers[v]) << '\n';
   }
   // Attributes: the regional attribute first when there is one (as Triangle's
   // -A writes it), then the region id.
@@ -101,7 +120,6 @@ std::string writeTriangleFiles(const std::string& base, const Result& r, const N
     }
     ele << r.regionId[t] << '\n';
   }
-  const std::vector<std::array<int, 3>> edges = meshEdges(r, data.edgeMarkers);
   edge << edges.size() << " 1\n";
   for (std::size_t e = 0; e < edges.size(); ++e)
     edge << e + 1 << ' ' << edges[e][0] + 1 << ' ' << edges[e][1] + 1 << ' ' << edges[e][2] << '\n';
@@ -140,8 +158,9 @@ void writeSvg(std::ostream& out, const Result& r)
     out << buf;
   };
   out << "<g id=\"mesh\">\n";
-  for (const std::array<int, 3>& e : meshEdges(r))
-    if (!e[2])
+  std::vector<char> boundaryVertex;
+  for (const std::array<int, 3>& e : meshEdges(r, {}, boundaryVertex, false))
+    if (!e[2]) // drawn bold below
       line(r.mesh.vertices[e[0]], r.mesh.vertices[e[1]], "stroke=\"#4a6fa5\" stroke-width=\"0.4\"");
   out << "</g>\n<g id=\"discarded\">\n";
   for (const Edge& e : r.edges)

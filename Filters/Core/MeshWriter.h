@@ -19,7 +19,8 @@ struct NodeData
 {
   std::size_t attributeCount = 0; ///< per vertex
   std::vector<double> attributes; ///< vertex-major: attributeCount per vertex
-  /// Per vertex; empty: 1 for the input vertices, 0 for the others.
+  /// Per vertex; empty: 1 on the mesh's boundary, 0 elsewhere (Triangle's
+  /// markers for input without any).
   std::vector<int> markers;
   /// Per entry of Result::edges: the .edge marker of the mesh edge it is
   /// when an input subsegment; empty: 1.
@@ -27,8 +28,9 @@ struct NodeData
 };
 
 /// Write base.node, base.ele and base.edge (1-based, as Triangle writes them).
-/// The .edge file lists the input subsegments with boundary marker 1 and the
-/// other mesh edges with 0. Returns an empty string or the reason it failed
+/// The .edge file lists every mesh edge with Triangle's boundary marker: an
+/// input subsegment's nonzero marker (1 without edgeMarkers), else 1 on the
+/// mesh's boundary (the holes' included), else 0. Returns an empty string or the reason it failed
 /// (node data of the wrong size among them).
 std::string writeTriangleFiles(
   const std::string& base, const Result& result, const NodeData& data = {});

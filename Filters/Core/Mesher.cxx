@@ -1522,6 +1522,7 @@ void Mesher::buildOutput(const Work& w, const PlanarGraph& g, Completion& c, Car
     for (const Point& p : g.points)
       res.edgeVertices.push_back(unscale(p));
     res.edges = std::move(edges);
+    res.edgeVertexInMesh = newIndex;
     for (Edge& e : res.edges) // walked segments to input segments
       e.segment = e.segment >= 0 && e.segment < static_cast<int>(w.segmentOrigin.size())
         ? w.segmentOrigin[e.segment]

@@ -142,6 +142,9 @@ struct Result
   /// refer to edgeVertices. Filled when Options::keepEdges.
   Array<Point> edgeVertices;
   Array<Edge> edges;
+  /// Per edge vertex, the mesh vertex it is, or -1 outside the domain.
+  /// Filled when Options::keepEdges.
+  Array<int> edgeVertexInMesh;
 
   /// The phase-1 overlay triangulation. Filled when Options::keepOverlay. Of
   /// quality θ1 within the bounds of the segments (enclosed domain) or of the

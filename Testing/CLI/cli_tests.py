@@ -364,12 +364,21 @@ def group_formats():
     # Triangle's files: the three side by side, parsed back.
     v, t, e = read_triangle_files(out("square"))
     node_data_ok(out("square.node"), v)
-    # --no-point-data: no attribute, and markers 1 on the input vertices only.
+    # --no-point-data: no attribute, and Triangle's markers for input without
+    # any: 1 on the mesh's boundary (the outer square's and the hole's), else 0.
     mesh_ok(square, "-o", out("bare.node"), "--no-point-data")
     with open(out("bare.node")) as f:
         rows = [l.split() for l in f if l.strip() and not l.lstrip().startswith("#")]
-    check(rows[0][2] == "0" and sum(int(r[3]) for r in rows[1:]) == 9,
-          "--no-point-data: no vertex attribute, marker 1 on the 9 input vertices", rows[0])
+    wrong = []
+    for r in rows[1:]:
+        x, y, m = float(r[1]), float(r[2]), int(r[3])
+        boundary = (x in (0.0, 10.0) or y in (0.0, 10.0) or
+                    (x in (4.0, 6.0) and 4 <= y <= 6) or (y in (4.0, 6.0) and 4 <= x <= 6))
+        if m != (1 if boundary else 0):
+            wrong.append((x, y, m))
+    check(rows[0][2] == "0" and not wrong,
+          "--no-point-data: no vertex attribute, marker 1 on the boundary's vertices, 0 inside",
+          str((rows[0], wrong[:3])))
     check(abs(total_area(v, t) - 96.0) < 1e-9, ".node/.ele: area 96 (the hole is left out)")
     check(all(area(v, tri) > 0 for tri in t), ".ele: every triangle counter-clockwise")
     inside_hole = [tri for tri in t if

@@ -1380,26 +1380,35 @@ int TestPointData()
     "elsewhere (" +
       std::to_string(inputEdges) + " input subsegments, " + std::to_string(wrongEdges) + " wrong)");
 
-  // Without segment markers every segment is a boundary: its new points 1.
+  // Without segment markers (all 0 to Triangle), a point's own nonzero
+  // marker stays, and any other point is 1 on the mesh's boundary, else 0:
+  // the inner segment's new points too. Points 1 (a corner) and 4 (on the
+  // boundary) lose their own markers here.
   auto unmarked = SquareWithPointData();
   unmarked->GetCellData()->RemoveArray("SegmentMarker");
+  auto* own = vtkIntArray::SafeDownCast(unmarked->GetPointData()->GetArray("PointMarker"));
+  own->SetValue(1, 0);
+  own->SetValue(4, 0);
   mesh = h.Run(unmarked, "point markers without segment markers");
   auto* markers = vtkIntArray::SafeDownCast(mesh->GetPointData()->GetArray("PointMarker"));
   origin = vtkUnsignedCharArray::SafeDownCast(mesh->GetPointData()->GetArray("VertexOrigin"));
+  auto* labels = vtkIntArray::SafeDownCast(mesh->GetPointData()->GetArray("Label"));
   int wrongUnmarked = 0;
-  for (vtkIdType v = 0; markers && origin && v < mesh->GetNumberOfPoints(); ++v)
+  vtkIdType innerPoints = 0;
+  for (vtkIdType v = 0; markers && origin && labels && v < mesh->GetNumberOfPoints(); ++v)
   {
     double p[3];
     mesh->GetPoint(v, p);
-    const bool onSegment = p[0] == 5.0 || p[0] == 0 || p[0] == 10 || p[1] == 0 || p[1] == 10;
-    if (origin->GetValue(v) != 0)
-    {
-      wrongUnmarked += markers->GetValue(v) != (onSegment ? 1 : 0);
-    }
+    const bool boundary = p[0] == 0 || p[0] == 10 || p[1] == 0 || p[1] == 10;
+    const int ownMarker = origin->GetValue(v) == 0 ? own->GetValue(labels->GetValue(v) / 10) : 0;
+    innerPoints += origin->GetValue(v) != 0 && p[0] == 5.0 && !boundary;
+    wrongUnmarked += markers->GetValue(v) != (ownMarker != 0 ? ownMarker : boundary ? 1 : 0);
   }
-  Check(markers && origin && wrongUnmarked == 0,
-    "point data: without SegmentMarker, new points on segments get PointMarker 1, others 0 (" +
-      std::to_string(wrongUnmarked) + " wrong)");
+  Check(markers && origin && labels && innerPoints > 0 && wrongUnmarked == 0,
+    "point data: without SegmentMarker, a point's own nonzero marker stays, others are 1 on the "
+    "boundary and 0 inside, the inner segment's " +
+      std::to_string(innerPoints) + " new points included (" + std::to_string(wrongUnmarked) +
+      " wrong)");
 
   // An input array named like the mesh's own is left out, with a warning.
   vtkNew<vtkDoubleArray> clash;
@@ -1629,6 +1638,99 @@ int TestPolygonData()
         std::to_string(wrong) + " wrong)");
   }
 
+  // Which polygon each triangle's centroid lies in, by InputCellId.
+  auto cellsOf = [](vtkPolyData* mesh, const std::function<vtkIdType(double, double)>& expected) {
+    auto* ids = vtkIdTypeArray::SafeDownCast(mesh->GetCellData()->GetArray("InputCellId"));
+    int wrong = ids ? 0 : 1;
+    for (vtkIdType t = 0; ids && t < mesh->GetNumberOfCells(); ++t)
+    {
+      vtkIdList* corners = mesh->GetCell(t)->GetPointIds();
+      double c[2] = { 0, 0 };
+      for (int k = 0; k < 3; ++k)
+      {
+        c[0] += mesh->GetPoint(corners->GetId(k))[0] / 3;
+        c[1] += mesh->GetPoint(corners->GetId(k))[1] / 3;
+      }
+      wrong += ids->GetValue(t) != expected(c[0], c[1]);
+    }
+    return wrong;
+  };
+  auto polygonsOnly = [](const std::vector<Xyz>& xyz,
+                        const std::vector<std::vector<vtkIdType>>& loops) {
+    auto data = MakeLines(xyz, {});
+    vtkNew<vtkCellArray> cells;
+    for (const auto& loop : loops)
+    {
+      cells->InsertNextCell(static_cast<vtkIdType>(loop.size()), loop.data());
+    }
+    data->SetPolys(cells);
+    return data;
+  };
+  h.Mesher->SetMaximumEdgeLength(0.0);
+  h.Mesher->SetDomainToAuto();
+
+  // A self-crossing loop (a bowtie) whose lobes' signed areas cancel: both
+  // lobes are inside it (even-odd).
+  vtkPolyData* mesh =
+    h.Run(polygonsOnly({ { 0, 0, 0 }, { 2, 2, 0 }, { 2, 0, 0 }, { 0, 2, 0 } }, { { 0, 1, 2, 3 } }),
+      "polygon data, a bowtie");
+  int wrong = cellsOf(mesh, [](double, double) { return 0; });
+  Check(h.NoError() && mesh->GetNumberOfCells() > 0 && wrong == 0,
+    "polygon data: both lobes of a bowtie whose signed areas cancel are inside it (" +
+      std::to_string(wrong) + " triangles wrong)");
+
+  // An unequal bowtie (signed area 0.02) around a square of area 0.1 in one
+  // lobe: the square is the innermost, by the area inside each.
+  mesh = h.Run(polygonsOnly({ { 0, -2, 0 }, { 4, 2, 0 }, { 4, -2, 0 }, { 0, 2.01, 0 },
+                              { 0.5, -0.1, 0 }, { 1, -0.1, 0 }, { 1, 0.1, 0 }, { 0.5, 0.1, 0 } },
+                 { { 0, 1, 2, 3 }, { 4, 5, 6, 7 } }),
+    "polygon data, a square in an unequal bowtie");
+  wrong = cellsOf(
+    mesh, [](double x, double y) { return x > 0.5 && x < 1 && y > -0.1 && y < 0.1 ? 1 : 0; });
+  Check(h.NoError() && wrong == 0,
+    "polygon data: a square inside a bowtie's lobe takes its own data, not the bowtie's (" +
+      std::to_string(wrong) + " triangles wrong)");
+
+  // A polygon far larger than what the mesh keeps of it (a hole seed removes
+  // its big region): the grid over the regions' points must still find them.
+  const double far = 3e9;
+  auto large = polygonsOnly(
+    { { 0, 0, 0 }, { far, 0, 0 }, { far, far, 0 }, { 0, far, 0 }, { 1, 1, 0 }, { 2, 1, 0 },
+      { 2, 2, 0 }, { 1, 2, 0 }, { 3, 1, 0 }, { 4, 1, 0 }, { 4, 2, 0 }, { 3, 2, 0 } },
+    { { 0, 1, 2, 3 } });
+  vtkNew<vtkCellArray> rings;
+  for (const std::vector<vtkIdType>& ring :
+    { std::vector<vtkIdType>{ 4, 5, 6, 7, 4 }, std::vector<vtkIdType>{ 8, 9, 10, 11, 8 } })
+  {
+    rings->InsertNextCell(static_cast<vtkIdType>(ring.size()), ring.data());
+  }
+  large->SetLines(rings);
+  h.Mesher->AddHolePoint(far / 3, far / 3);
+  mesh = h.Run(large, "polygon data, bounds far beyond the kept regions");
+  h.Mesher->RemoveAllHolePoints();
+  wrong = cellsOf(mesh, [](double, double) { return 2; }); // cells: two rings, then the polygon
+  Check(h.NoError() && mesh->GetNumberOfCells() > 0 && wrong == 0,
+    "polygon data: regions far inside a polygon's bounds take its data (" + std::to_string(wrong) +
+      " triangles wrong)");
+
+  // Blocks of a composite input without the same arrays: those not in every
+  // block cannot be carried, and a warning says which.
+  auto tagged = polygonsOnly({ { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 } }, { { 0, 1, 2 } });
+  vtkNew<vtkIntArray> tag;
+  tag->SetName("Tag");
+  tag->InsertNextValue(7);
+  tagged->GetCellData()->AddArray(tag);
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  blocks->SetNumberOfBlocks(2);
+  blocks->SetBlock(0, tagged);
+  blocks->SetBlock(1, polygonsOnly({ { 2, 0, 0 }, { 3, 0, 0 }, { 3, 1, 0 } }, { { 0, 1, 2 } }));
+  h.Messages->Clear();
+  h.Mesher->SetInputData(blocks);
+  h.Mesher->Update();
+  h.Messages->Print("polygon data, a cell array in one block only");
+  Check(h.NoError() && h.Messages->HasWarning({ "Not carried", "cell data Tag" }),
+    "polygon data: a cell array missing from a block is not carried, with a warning naming it");
+
   // Lines only: no polygon, nothing on the mesh.
   input->SetPolys(nullptr);
   for (vtkAbstractArray* a : std::initializer_list<vtkAbstractArray*>{ land, clash, name })
@@ -1636,7 +1738,7 @@ int TestPolygonData()
     a->SetNumberOfTuples(3);
   }
   h.Mesher->SetDomainToHull();
-  vtkPolyData* mesh = h.Run(input, "polygon data, lines only");
+  mesh = h.Run(input, "polygon data, lines only");
   Check(h.NoError() && !mesh->GetCellData()->GetArray("InputCellId") &&
       !mesh->GetCellData()->GetArray("Land"),
     "polygon data: without polygon cells the mesh takes no input cell array");
