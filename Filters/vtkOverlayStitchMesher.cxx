@@ -50,6 +50,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -362,8 +363,19 @@ void ReadSegments(
   }
   // Polygons: their closed edge loops (a last point equal to the first, as
   // some writers repeat it, closes the loop without a zero-length segment).
+  // Neighbouring polygons of a map share edges: each shared edge is one
+  // segment, of the first polygon, not a duplicate the core would warn of.
   if (vtkCellArray* polys = input->GetPolys())
   {
+    std::unordered_set<std::uint64_t> polygonEdges;
+    auto addPolygonEdge = [&](vtkIdType a, vtkIdType b) {
+      const auto lo = static_cast<std::uint64_t>(std::min(a, b));
+      const auto hi = static_cast<std::uint64_t>(std::max(a, b));
+      if (polygonEdges.insert((lo << 32) | hi).second) // ids fit in 31 bits: the Pslg's are int
+      {
+        addSegment(a, b);
+      }
+    };
     auto it = vtk::TakeSmartPointer(polys->NewIterator());
     for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
     {
@@ -381,7 +393,7 @@ void ReadSegments(
       }
       for (vtkIdType k = 0; n >= 3 && k < n; ++k)
       {
-        addSegment(ids[k], ids[(k + 1) % n]);
+        addPolygonEdge(ids[k], ids[(k + 1) % n]);
       }
       ++cellId;
     }

@@ -950,6 +950,8 @@ vtkSmartPointer<vtkPolyData> BigInput(int points)
   return MakeLines(xyz, { { 0, 1, 2, 3, 0 } });
 }
 
+vtkSmartPointer<vtkPolyData> MapOfSquares(int n);
+
 int TestAbort(int points)
 {
   auto input = BigInput(points);
@@ -965,11 +967,16 @@ int TestAbort(int points)
     elevation->SetValue(i, withData->GetPoint(i)[0]);
   }
   withData->GetPointData()->AddArray(elevation);
-  for (const double at : { 0.3, 0.7, 0.9, 0.905 })
+  // 0.946, with polygons, in giving their data to the triangles (0.945 to 0.95).
+  for (const double at : { 0.3, 0.7, 0.9, 0.905, 0.946 })
   {
     if (at == 0.905)
     {
       input = withData;
+    }
+    if (at == 0.946)
+    {
+      input = MapOfSquares(points);
     }
     vtkNew<ProgressRecorder> recorder;
     recorder->AbortAt = at;
@@ -994,6 +1001,12 @@ int TestAbort(int points)
       Check(recorder->AbortValue > 0.9 && recorder->AbortValue < 0.93,
         row + ": requested while the point data is carried (progress " + Num(recorder->AbortValue) +
           ")");
+    }
+    if (at == 0.946)
+    {
+      Check(recorder->AbortValue > 0.945 && recorder->AbortValue < 0.95,
+        row + ": requested while the polygons' data is carried (progress " +
+          Num(recorder->AbortValue) + ")");
     }
     Check(h.Messages->Errors.size() == 1 && h.Messages->HasError({ "aborted by the user" }),
       row + ": the run ends with the error 'aborted by the user'");
@@ -1713,6 +1726,29 @@ int TestPolygonData()
     "polygon data: regions far inside a polygon's bounds take its data (" + std::to_string(wrong) +
       " triangles wrong)");
 
+  // A map: polygons sharing their edges, each edge one segment (no warning
+  // of duplicates); every triangle takes its own square's value.
+  mesh = h.Run(MapOfSquares(16), "polygon data, a map of 4 x 4 squares");
+  auto* values = vtkDoubleArray::SafeDownCast(mesh->GetCellData()->GetArray("Value"));
+  wrong = values ? 0 : 1;
+  for (vtkIdType t = 0; values && t < mesh->GetNumberOfCells(); ++t)
+  {
+    vtkIdList* corners = mesh->GetCell(t)->GetPointIds();
+    double c[2] = { 0, 0 };
+    for (int k = 0; k < 3; ++k)
+    {
+      c[0] += mesh->GetPoint(corners->GetId(k))[0] / 3;
+      c[1] += mesh->GetPoint(corners->GetId(k))[1] / 3;
+    }
+    wrong += values->GetValue(t) != std::floor(c[0]) + std::floor(c[1]);
+  }
+  wrong += cellsOf(mesh,
+    [](double x, double y) { return static_cast<vtkIdType>(std::floor(y) * 4 + std::floor(x)); });
+  Check(h.NoError() && h.Messages->Warnings.empty() && mesh->GetNumberOfCells() > 0 && wrong == 0,
+    "polygon data: a map's squares share their edges without a warning, and each triangle takes "
+    "its square's value and id (" +
+      std::to_string(wrong) + " wrong)");
+
   // Blocks of a composite input without the same arrays: those not in every
   // block cannot be carried, and a warning says which.
   auto tagged = polygonsOnly({ { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 } }, { { 0, 1, 2 } });
@@ -1745,10 +1781,8 @@ int TestPolygonData()
   return 0;
 }
 
-/// Meshes a map of n polygons (a grid of squares, each with a value), with and
-/// without PassCellData, to measure what carrying the polygons' data costs
-/// (not a ctest).
-int MeasurePolygons(int n)
+/// A map of about n polygons: a grid of unit squares, each with a value.
+vtkSmartPointer<vtkPolyData> MapOfSquares(int n)
 {
   const int side = std::max(1, static_cast<int>(std::sqrt(static_cast<double>(n))));
   std::vector<Xyz> xyz;
@@ -1775,6 +1809,15 @@ int MeasurePolygons(int n)
   }
   input->SetPolys(polys);
   input->GetCellData()->AddArray(value);
+  return input;
+}
+
+/// Meshes a map of n polygons, with and without PassCellData, to measure
+/// what carrying the polygons' data costs (not a ctest).
+int MeasurePolygons(int n)
+{
+  auto input = MapOfSquares(n);
+  const vtkIdType polygons = input->GetNumberOfPolys();
   Harness h;
   int failures = 0;
   for (const bool pass : { true, false, true, false })
@@ -1784,7 +1827,7 @@ int MeasurePolygons(int n)
     vtkPolyData* mesh = h.Run(input, "map of polygons");
     const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::cout << side * side << " polygons, PassCellData " << (pass ? "on" : "off") << ": "
+    std::cout << polygons << " polygons, PassCellData " << (pass ? "on" : "off") << ": "
               << mesh->GetNumberOfCells() << " triangles in " << seconds << " s (core "
               << osmtest::Statistic(mesh, "SecondsTotal") << " s)\n";
     failures += h.NoError() ? 0 : 1;
