@@ -277,8 +277,8 @@ struct PointGrid
 /// the polygon: the parity of the polygon's edges to their right (exact
 /// orientation tests), each edge tested against the candidates in its span of y.
 /// Costs the candidates in each edge's span of y: the number of candidates
-/// times the edges a line across the polygon meets (a comb of 32,000 teeth
-/// over 16,000 regions: 14 s). tests counts the orientation tests, and poll is
+/// times the edges a line across the polygon meets (a comb of 16,000 teeth
+/// around 32,000 regions: 3.1 s). tests counts the orientation tests, and poll is
 /// asked every 2^20 of them; returns false when it says stop.
 bool MarkInside(const Polygon& p, const std::vector<int>& loops,
   const std::vector<osm::Point>& points, const std::vector<std::pair<double, int>>& candidates,

@@ -1078,6 +1078,22 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   {
     return 1;
   }
+  // The output steps: the input data carriers' warnings, and progress from lo
+  // to hi of the whole run, which an abort stops.
+  std::vector<std::string> warnings;
+  auto warn = [this, &warnings]() {
+    for (const std::string& warning : warnings)
+    {
+      vtkWarningMacro(<< warning);
+    }
+    warnings.clear();
+  };
+  auto outputSteps = [this](double lo, double hi) {
+    return [this, lo, hi](double fraction) {
+      this->UpdateProgress(lo + (hi - lo) * fraction);
+      return AbortRequested(this);
+    };
+  };
   std::vector<vtkIdType> segmentCells;
   if (this->InterpolatePointData || (this->PassCellData && this->GenerateEdges))
   {
@@ -1090,48 +1106,26 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   vtkNew<vtkPointData> carried;
   if (interpolate)
   {
-    std::vector<std::string> warnings;
-    OverlayStitchInterpolatePointData(
-      input->GetPointData(), input->GetCellData(), pslg, result, segmentCells, { "VertexOrigin" },
-      carried,
-      [this](double fraction) {
-        this->UpdateProgress(0.9 + 0.03 * fraction);
-        return AbortRequested(this);
-      },
-      warnings);
-    for (const std::string& warning : warnings)
-    {
-      vtkWarningMacro(<< warning);
-    }
+    OverlayStitchInterpolatePointData(input->GetPointData(), input->GetCellData(), pslg, result,
+      segmentCells, { "VertexOrigin" }, carried, outputSteps(0.9, 0.93), warnings);
+    warn();
     reuse.reset();
   }
   if (aborted())
   {
     return 1;
   }
-  FillMesh(result, map, mesh, [this](double fraction) {
-    this->UpdateProgress(0.93 + 0.015 * fraction);
-    return AbortRequested(this);
-  });
+  FillMesh(result, map, mesh, outputSteps(0.93, 0.945));
   if (aborted())
   {
     return 1;
   }
   if (this->PassCellData)
   {
-    std::vector<std::string> warnings;
-    OverlayStitchPassPolygonData(
-      input, pslg, result, { "MinAngle", "MaxAngle", "RegionId", "RegionAttribute", "InputCellId" },
-      mesh->GetCellData(),
-      [this](double fraction) {
-        this->UpdateProgress(0.945 + 0.005 * fraction);
-        return AbortRequested(this);
-      },
-      warnings);
-    for (const std::string& warning : warnings)
-    {
-      vtkWarningMacro(<< warning);
-    }
+    OverlayStitchPassPolygonData(input, pslg, result,
+      { "MinAngle", "MaxAngle", "RegionId", "RegionAttribute", "InputCellId" }, mesh->GetCellData(),
+      outputSteps(0.945, 0.95), warnings);
+    warn();
     if (aborted())
     {
       return 1;
@@ -1154,26 +1148,13 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   }
   if (this->GenerateEdges)
   {
-    FillEdges(result, map, edges, [this](double fraction) {
-      this->UpdateProgress(0.95 + 0.02 * fraction);
-      return AbortRequested(this);
-    });
+    FillEdges(result, map, edges, outputSteps(0.95, 0.97));
     if (this->PassCellData && !AbortRequested(this))
     {
-      std::vector<std::string> warnings;
-      OverlayStitchPassCellData(
-        input->GetCellData(), result, segmentCells,
+      OverlayStitchPassCellData(input->GetCellData(), result, segmentCells,
         { "Overlay", "Kept", "Discarded", "Input", "EdgeClass", "InputCellId" },
-        edges->GetCellData(),
-        [this](double fraction) {
-          this->UpdateProgress(0.97 + 0.01 * fraction);
-          return AbortRequested(this);
-        },
-        warnings);
-      for (const std::string& warning : warnings)
-      {
-        vtkWarningMacro(<< warning);
-      }
+        edges->GetCellData(), outputSteps(0.97, 0.98), warnings);
+      warn();
     }
   }
   this->UpdateProgress(0.98);
@@ -1183,10 +1164,7 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   }
   if (this->GenerateOverlay)
   {
-    MakeTriangles(result.overlay, map, overlay, [this](double fraction) {
-      this->UpdateProgress(0.98 + 0.02 * fraction);
-      return AbortRequested(this);
-    });
+    MakeTriangles(result.overlay, map, overlay, outputSteps(0.98, 1.0));
   }
   this->SetProgressText(nullptr);
   this->UpdateProgress(1.0);

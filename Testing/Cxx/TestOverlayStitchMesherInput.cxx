@@ -166,22 +166,28 @@ vtkIdType CountOrigin(vtkPolyData* mesh, int origin)
   return n;
 }
 
+/// The centroid (x, y) of triangle t.
+std::array<double, 2> Centroid(vtkPolyData* mesh, vtkIdType t)
+{
+  vtkIdList* ids = mesh->GetCell(t)->GetPointIds();
+  std::array<double, 2> centroid = { 0, 0 };
+  for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+  {
+    double p[3];
+    mesh->GetPoint(ids->GetId(k), p);
+    centroid[0] += p[0] / 3;
+    centroid[1] += p[1] / 3;
+  }
+  return centroid;
+}
+
 /// The number of triangles whose centroid (in x, y) lies strictly inside the box.
 vtkIdType CentroidsInside(vtkPolyData* mesh, double lo, double hi)
 {
   vtkIdType n = 0;
-  vtkNew<vtkIdList> ids;
   for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
   {
-    mesh->GetCellPoints(c, ids);
-    double centroid[2] = { 0, 0 };
-    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
-    {
-      double p[3];
-      mesh->GetPoint(ids->GetId(k), p);
-      centroid[0] += p[0] / 3;
-      centroid[1] += p[1] / 3;
-    }
+    const std::array<double, 2> centroid = Centroid(mesh, c);
     n += (centroid[0] > lo && centroid[0] < hi && centroid[1] > lo && centroid[1] < hi) ? 1 : 0;
   }
   return n;
@@ -1624,13 +1630,7 @@ int TestPolygonData()
     int wrong = 0;
     for (vtkIdType t = 0; t < mesh->GetNumberOfCells(); ++t)
     {
-      vtkIdList* corners = mesh->GetCell(t)->GetPointIds();
-      double c[2] = { 0, 0 };
-      for (int k = 0; k < 3; ++k)
-      {
-        c[0] += mesh->GetPoint(corners->GetId(k))[0] / 3;
-        c[1] += mesh->GetPoint(corners->GetId(k))[1] / 3;
-      }
+      const std::array<double, 2> c = Centroid(mesh, t);
       const bool inB = c[0] > 3 && c[0] < 7 && c[1] > 3 && c[1] < 7;
       const bool inA = c[0] > 0 && c[0] < 10 && c[1] > 0 && c[1] < 10;
       const bool inD = c[1] > 0 && c[1] < 2 * (c[0] - 12) && c[1] < 2 * (14 - c[0]);
@@ -1657,13 +1657,7 @@ int TestPolygonData()
     int wrong = ids ? 0 : 1;
     for (vtkIdType t = 0; ids && t < mesh->GetNumberOfCells(); ++t)
     {
-      vtkIdList* corners = mesh->GetCell(t)->GetPointIds();
-      double c[2] = { 0, 0 };
-      for (int k = 0; k < 3; ++k)
-      {
-        c[0] += mesh->GetPoint(corners->GetId(k))[0] / 3;
-        c[1] += mesh->GetPoint(corners->GetId(k))[1] / 3;
-      }
+      const std::array<double, 2> c = Centroid(mesh, t);
       wrong += ids->GetValue(t) != expected(c[0], c[1]);
     }
     return wrong;
@@ -1733,13 +1727,7 @@ int TestPolygonData()
   wrong = values ? 0 : 1;
   for (vtkIdType t = 0; values && t < mesh->GetNumberOfCells(); ++t)
   {
-    vtkIdList* corners = mesh->GetCell(t)->GetPointIds();
-    double c[2] = { 0, 0 };
-    for (int k = 0; k < 3; ++k)
-    {
-      c[0] += mesh->GetPoint(corners->GetId(k))[0] / 3;
-      c[1] += mesh->GetPoint(corners->GetId(k))[1] / 3;
-    }
+    const std::array<double, 2> c = Centroid(mesh, t);
     wrong += values->GetValue(t) != std::floor(c[0]) + std::floor(c[1]);
   }
   wrong += cellsOf(mesh,
