@@ -1,11 +1,13 @@
 // Writing results: Triangle files read back exactly, SVG and JSON content.
 #include "MeshWriter.h"
 #include "PolyReader.h"
+#include "Predicates.h"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 using namespace osm;
@@ -91,6 +93,69 @@ TEST(MeshWriter, VertexAttributesAndMarkersReadBackExactly)
   // Data of the wrong size is refused, naming the file.
   data.markers.pop_back();
   EXPECT_NE(writeTriangleFiles(base, r, data).find("out.node"), std::string::npos);
+  fs::remove_all(dir);
+}
+
+TEST(MeshWriter, TriangleBoundaryMarkersWithoutData)
+{
+  // The box domain: the mesh's boundary is the padded box, not a segment.
+  Pslg p;
+  p.points = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 }, { 0.2, 0.3 }, { 0.7, 0.35 } };
+  p.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 }, { 4, 5 } };
+  Options o;
+  o.domain = Domain::Box;
+  o.keepEdges = true;
+  const Result r = mesh(p, o);
+  ASSERT_TRUE(r.ok) << r.error;
+  const fs::path dir = fs::temp_directory_path() / "osm-writer-markers-test";
+  fs::create_directories(dir);
+  const std::string base = (dir / "out").string();
+  ASSERT_EQ(writeTriangleFiles(base, r), "");
+  // The boundary, independently: edges of one triangle.
+  std::map<std::pair<int, int>, int> triangles;
+  for (const Triangle& t : r.mesh.triangles)
+    for (int i = 0; i < 3; ++i)
+      ++triangles[{ std::min(t[i], t[(i + 1) % 3]), std::max(t[i], t[(i + 1) % 3]) }];
+  std::vector<int> boundaryVertex(r.mesh.vertices.size(), 0);
+  for (const auto& [edge, count] : triangles)
+    if (count == 1)
+      boundaryVertex[edge.first] = boundaryVertex[edge.second] = 1;
+  // Triangle's rules for input without markers: 1 on the boundary, else 0,
+  // input vertices inside included; input subsegments 1 as well.
+  const PolyFile node = readPolyFile(base + ".node");
+  ASSERT_TRUE(node.ok) << node.error;
+  ASSERT_EQ(node.pointMarkers.size(), r.mesh.vertices.size());
+  int onBoundary = 0;
+  for (std::size_t v = 0; v < r.mesh.vertices.size(); ++v)
+  {
+    EXPECT_EQ(node.pointMarkers[v], boundaryVertex[v]) << "vertex " << v;
+    onBoundary += boundaryVertex[v];
+  }
+  EXPECT_GE(onBoundary, 4);
+  auto onInput = [](const Point& a, const Point& b) {
+    auto side = [](double u, double v) { return u == v && (u == 0 || u == 1); };
+    const bool square = (side(a.x, b.x) && a.y >= 0 && a.y <= 1 && b.y >= 0 && b.y <= 1) ||
+      (side(a.y, b.y) && a.x >= 0 && a.x <= 1 && b.x >= 0 && b.x <= 1);
+    const Point s0{ 0.2, 0.3 }, s1{ 0.7, 0.35 };
+    const bool slit = orient2d(s0, s1, a) == 0 && orient2d(s0, s1, b) == 0 &&
+      std::min(a.x, b.x) >= 0.2 && std::max(a.x, b.x) <= 0.7;
+    return square || slit;
+  };
+  std::ifstream edge(base + ".edge");
+  std::size_t edges = 0, markers = 0, id, a, b;
+  edge >> edges >> markers;
+  int wrong = 0, boundaryEdges = 0;
+  for (std::size_t e = 0; e < edges; ++e)
+  {
+    int m;
+    ASSERT_TRUE(edge >> id >> a >> b >> m);
+    const int lo = static_cast<int>(std::min(a, b)) - 1, hi = static_cast<int>(std::max(a, b)) - 1;
+    const bool boundary = triangles[{ lo, hi }] == 1;
+    boundaryEdges += boundary;
+    wrong += m != (boundary || onInput(r.mesh.vertices[lo], r.mesh.vertices[hi]) ? 1 : 0);
+  }
+  EXPECT_GE(boundaryEdges, 4);
+  EXPECT_EQ(wrong, 0);
   fs::remove_all(dir);
 }
 
