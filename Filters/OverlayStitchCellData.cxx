@@ -13,7 +13,7 @@
 #include "vtkSmartPointer.h"
 
 #include "Mesher.h"
-#include "OverlayStitchBoundary.h"
+#include "OverlayStitchMarkers.h"
 #include "Predicates.h"
 #include "Pslg.h"
 
@@ -62,9 +62,10 @@ vtkSmartPointer<vtkAbstractArray> NewTarget(vtkAbstractArray* source, vtkIdType 
 /// and a copy of each input array along it: the output cells listed in taking
 /// (those with an input cell) take their cell's tuple. carried lists the
 /// arrays made, with their sources.
-bool Carry(vtkCellData* in, vtkIdTypeArray* cellIds, const std::vector<vtkIdType>& taking,
-  const std::vector<std::string>& reserved, const char* output, vtkCellData* out, const Poll& poll,
-  std::vector<std::string>& warnings, CarriedArrays& carried)
+bool Carry(vtkCellData* in, vtkIdType inputCells, vtkIdTypeArray* cellIds,
+  const std::vector<vtkIdType>& taking, const std::vector<std::string>& reserved,
+  const char* output, vtkCellData* out, const Poll& poll, std::vector<std::string>& warnings,
+  CarriedArrays& carried)
 {
   const vtkIdType n = cellIds->GetNumberOfTuples();
   const vtkIdType* cellOf = cellIds->GetPointer(0);
@@ -80,6 +81,13 @@ bool Carry(vtkCellData* in, vtkIdTypeArray* cellIds, const std::vector<vtkIdType
     {
       warnings.push_back(std::string("The input's cell data array ") + name +
         " is not carried to the " + output + " output: it has an array of that name of its own.");
+      continue;
+    }
+    if (source->GetNumberOfTuples() < inputCells)
+    {
+      warnings.push_back(std::string("The input's cell data array ") + (name ? name : "(unnamed)") +
+        " is not carried: it has " + std::to_string(source->GetNumberOfTuples()) + " tuples for " +
+        std::to_string(inputCells) + " cells.");
       continue;
     }
     carried.emplace_back(source, NewTarget(source, n));
@@ -319,9 +327,10 @@ bool MarkInside(const Polygon& p, const std::vector<int>& loops,
 
 } // namespace
 
-bool OverlayStitchPassCellData(vtkCellData* in, const osm::Result& result,
-  const std::vector<vtkIdType>& segmentCells, const std::vector<std::string>& reserved,
-  vtkCellData* out, const Poll& poll, std::vector<std::string>& warnings)
+bool OverlayStitchPassCellData(vtkCellData* in, vtkIdType inputCells, const osm::Pslg& pslg,
+  const osm::Result& result, const std::vector<vtkIdType>& segmentCells,
+  const std::vector<std::string>& reserved, vtkCellData* out, const Poll& poll,
+  std::vector<std::string>& warnings)
 {
   const auto n = static_cast<vtkIdType>(result.edges.size());
   auto cellIds = NewCellIds(n);
@@ -337,31 +346,23 @@ bool OverlayStitchPassCellData(vtkCellData* in, const osm::Result& result,
     }
   }
   CarriedArrays carried;
-  if (!Carry(in, cellIds, fromCells, reserved, "Edges", out, poll, warnings, carried))
+  if (!Carry(in, inputCells, cellIds, fromCells, reserved, "Edges", out, poll, warnings, carried))
   {
     return false;
   }
-  // Triangle's markers: an edge on the mesh's boundary (the hull's, the
-  // holes') that no segment marks otherwise is marked 1.
+  // Triangle's markers, by its rules.
   for (auto& [source, target] : carried)
   {
     if (!IsSegmentMarker(source))
     {
       continue;
     }
-    const OverlayStitchBoundary boundary(result.mesh);
-    const auto& inMesh = result.edgeVertexInMesh;
-    auto* markers = vtkDataArray::SafeDownCast(target);
+    const OverlayStitchMarkers markers(
+      pslg, result, vtkDataArray::SafeDownCast(source), segmentCells);
+    auto* marked = vtkDataArray::SafeDownCast(target);
     for (vtkIdType e = 0; e < n; ++e)
     {
-      const osm::Edge& edge = result.edges[static_cast<std::size_t>(e)];
-      if (markers->GetComponent(e, 0) == 0 && static_cast<std::size_t>(edge.a) < inMesh.size() &&
-        static_cast<std::size_t>(edge.b) < inMesh.size() &&
-        boundary.HasEdge(
-          inMesh[static_cast<std::size_t>(edge.a)], inMesh[static_cast<std::size_t>(edge.b)]))
-      {
-        markers->SetComponent(e, 0, 1.0);
-      }
+      marked->SetComponent(e, 0, markers.Edge(static_cast<std::size_t>(e)));
     }
   }
   return true;
@@ -465,6 +466,6 @@ bool OverlayStitchPassPolygonData(vtkPolyData* input, const osm::Pslg& pslg,
     }
   }
   CarriedArrays carried;
-  return Carry(
-    input->GetCellData(), cellIds, fromCells, reserved, "Mesh", out, poll, warnings, carried);
+  return Carry(input->GetCellData(), input->GetNumberOfCells(), cellIds, fromCells, reserved,
+    "Mesh", out, poll, warnings, carried);
 }

@@ -33,8 +33,9 @@ struct Result;
 }
 
 /// Fills out, the cell data of the Edges output (result.edges as lines, in
-/// order), from in, the input's cell data; segmentCells gives each Pslg
-/// segment's input cell.
+/// order), from in, the cell data of the input's inputCells cells (an array
+/// with fewer tuples is left out, with a warning); segmentCells gives each
+/// Pslg segment's input cell.
 ///
 /// - "InputCellId": an input subsegment's input cell, -1 on every other edge
 ///   (the hull's edges included).
@@ -42,9 +43,10 @@ struct Result;
 ///   for .edge files: an input subsegment's nonzero marker, else 1 on the
 ///   mesh's boundary (the holes' included), else 0.
 /// - Every other array: an input subsegment its cell's tuple.
-bool OverlayStitchPassCellData(vtkCellData* in, const osm::Result& result,
-  const std::vector<vtkIdType>& segmentCells, const std::vector<std::string>& reserved,
-  vtkCellData* out, const std::function<bool(double)>& poll, std::vector<std::string>& warnings);
+bool OverlayStitchPassCellData(vtkCellData* in, vtkIdType inputCells, const osm::Pslg& pslg,
+  const osm::Result& result, const std::vector<vtkIdType>& segmentCells,
+  const std::vector<std::string>& reserved, vtkCellData* out,
+  const std::function<bool(double)>& poll, std::vector<std::string>& warnings);
 
 /// Fills out, the cell data of the Mesh (result.mesh's triangles, in order),
 /// from the polygon cells of input (whose point i is the Pslg's point i):

@@ -12,7 +12,7 @@
 
 #include "Interpolation.h"
 #include "Mesher.h"
-#include "OverlayStitchBoundary.h"
+#include "OverlayStitchMarkers.h"
 #include "Pslg.h"
 
 #include <algorithm>
@@ -50,62 +50,6 @@ vtkDataArray* SegmentMarkers(vtkCellData* cells)
                                                                                   : nullptr;
 }
 
-/// Triangle's vertex markers (its documentation's rules, in order): a
-/// vertex's own nonzero marker; else a nonzero marker of a segment it lies
-/// on (its end included); else 1 on the mesh's boundary; else 0.
-class TriangleMarkers
-{
-public:
-  TriangleMarkers(const osm::Pslg& pslg, const osm::Result& result, vtkDataArray* segmentMarkers,
-    const std::vector<vtkIdType>& segmentCells)
-    : Boundary(result.mesh)
-    , SegmentMarkers(segmentMarkers)
-    , SegmentCells(segmentCells)
-    , AtEnds(pslg.points.size(), 0.0)
-  {
-    for (std::size_t s = 0; segmentMarkers && s < pslg.segments.size(); ++s)
-    {
-      const double marker = this->OfSegment(static_cast<int>(s));
-      for (const int end : pslg.segments[s])
-      {
-        double& at = this->AtEnds[static_cast<std::size_t>(end)];
-        at = at == 0 ? marker : at;
-      }
-    }
-  }
-
-  double Of(const osm::VertexTerms& t, vtkDataArray* pointMarkers) const
-  {
-    double marker = t.inputPoint >= 0 ? pointMarkers->GetComponent(t.inputPoint, 0) : 0.0;
-    if (marker == 0)
-    {
-      marker = this->OfSegment(t.segment);
-    }
-    if (marker == 0 && t.inputPoint >= 0)
-    {
-      marker = this->AtEnds[static_cast<std::size_t>(t.inputPoint)];
-    }
-    if (marker == 0)
-    {
-      marker = this->Boundary.HasVertex(static_cast<int>(t.vertex)) ? 1.0 : 0.0;
-    }
-    return marker;
-  }
-
-private:
-  double OfSegment(int s) const
-  {
-    return s >= 0 && this->SegmentMarkers
-      ? this->SegmentMarkers->GetComponent(this->SegmentCells[static_cast<std::size_t>(s)], 0)
-      : 0.0;
-  }
-
-  OverlayStitchBoundary Boundary;
-  vtkDataArray* SegmentMarkers;
-  const std::vector<vtkIdType>& SegmentCells;
-  std::vector<double> AtEnds; ///< per input point, a nonzero marker of a segment it ends
-};
-
 } // namespace
 
 bool OverlayStitchInterpolatePointData(vtkPointData* in, vtkCellData* inCells,
@@ -130,6 +74,14 @@ bool OverlayStitchInterpolatePointData(vtkPointData* in, vtkCellData* inCells,
         " is not carried to the mesh: the mesh has an array of that name of its own.");
       continue;
     }
+    if (source->GetNumberOfTuples() < static_cast<vtkIdType>(pslg.points.size()))
+    {
+      warnings.push_back(std::string("The input's point data array ") +
+        (name ? name : "(unnamed)") + " is not carried: it has " +
+        std::to_string(source->GetNumberOfTuples()) + " tuples for " +
+        std::to_string(pslg.points.size()) + " points.");
+      continue;
+    }
     auto target = vtkSmartPointer<vtkAbstractArray>::Take(source->NewInstance());
     target->SetName(name);
     target->SetNumberOfComponents(source->GetNumberOfComponents());
@@ -152,7 +104,7 @@ bool OverlayStitchInterpolatePointData(vtkPointData* in, vtkCellData* inCells,
   }
   const bool markers = std::any_of(
     carried.begin(), carried.end(), [](const Carried& c) { return c.How == Carried::Marker; });
-  std::optional<TriangleMarkers> triangle;
+  std::optional<OverlayStitchMarkers> triangle;
   if (markers)
   {
     triangle.emplace(pslg, result, segmentMarkers, segmentCells);
@@ -166,11 +118,22 @@ bool OverlayStitchInterpolatePointData(vtkPointData* in, vtkCellData* inCells,
     {
       return false;
     }
+    const auto v = static_cast<vtkIdType>(t.vertex);
+    for (const Carried& c : carried)
+    {
+      if (c.How == Carried::Marker)
+      {
+        auto* source = vtkDataArray::SafeDownCast(c.Source);
+        const int own =
+          t.inputPoint >= 0 ? static_cast<int>(source->GetComponent(t.inputPoint, 0)) : 0;
+        vtkDataArray::SafeDownCast(c.Target)->SetComponent(
+          v, 0, triangle->Vertex(static_cast<int>(t.vertex), own));
+      }
+    }
     if (t.count == 0)
     {
       return true;
     }
-    const auto v = static_cast<vtkIdType>(t.vertex);
     ids->SetNumberOfIds(t.count);
     int largest = 0;
     for (int k = 0; k < t.count; ++k)
@@ -183,10 +146,9 @@ bool OverlayStitchInterpolatePointData(vtkPointData* in, vtkCellData* inCells,
     {
       if (c.How == Carried::Marker)
       {
-        vtkDataArray::SafeDownCast(c.Target)->SetComponent(
-          v, 0, triangle->Of(t, vtkDataArray::SafeDownCast(c.Source)));
+        continue; // above
       }
-      else if (t.inputPoint >= 0)
+      if (t.inputPoint >= 0)
       {
         c.Target->SetTuple(v, t.inputPoint, c.Source);
       }

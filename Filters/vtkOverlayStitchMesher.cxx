@@ -48,6 +48,7 @@
 #include <functional>
 #include <limits>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <string>
 #include <unordered_set>
@@ -318,12 +319,13 @@ std::string ArraysLeftOut(
   std::initializer_list<const OverlayStitchGatherSummary*> summaries, bool pointData, bool cellData)
 {
   std::string names;
+  std::set<std::string> named; // blocks and ranks may both leave one out
   for (const OverlayStitchGatherSummary* summary : summaries)
   {
     for (const std::string& item : summary->ArraysLeftOut)
     {
       const bool point = item.rfind("point", 0) == 0;
-      if (point ? pointData : cellData)
+      if ((point ? pointData : cellData) && named.insert(item).second)
       {
         names += (names.empty() ? "" : ", ") + item;
       }
@@ -1015,7 +1017,10 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   options.mergeTolerance = this->MergeTolerance;
   options.regionAreas = this->ApplyRegionAreas != 0;
   options.maxSteinerPoints = static_cast<std::size_t>(this->MaximumSteinerPoints);
-  options.keepEdges = this->GenerateEdges != 0;
+  // Triangle's vertex markers need the input subsegments, to know which
+  // vertices lie on a marked segment.
+  options.keepEdges =
+    this->GenerateEdges != 0 || (interpolate && input->GetPointData()->GetArray("PointMarker"));
   options.keepOverlay = this->GenerateOverlay != 0;
   options.keepVertexSegments = interpolate; // the segment of each vertex, to carry data along
   if (map.isFitted())
@@ -1151,8 +1156,8 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
     FillEdges(result, map, edges, outputSteps(0.95, 0.97));
     if (this->PassCellData && !AbortRequested(this))
     {
-      OverlayStitchPassCellData(input->GetCellData(), result, segmentCells,
-        { "Overlay", "Kept", "Discarded", "Input", "EdgeClass", "InputCellId" },
+      OverlayStitchPassCellData(input->GetCellData(), input->GetNumberOfCells(), pslg, result,
+        segmentCells, { "Overlay", "Kept", "Discarded", "Input", "EdgeClass", "InputCellId" },
         edges->GetCellData(), outputSteps(0.97, 0.98), warnings);
       warn();
     }

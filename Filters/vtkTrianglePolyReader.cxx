@@ -92,14 +92,17 @@ void FillOutput(const osm::PolyFile& file, vtkPolyData* output)
   output->SetVerts(verts);
   output->SetLines(lines);
 
-  if (!file.pointMarkers.empty())
+  // A file with segment markers but none on its vertices has vertex markers
+  // 0 to Triangle, which then gives vertices their segments' markers.
+  if (!file.pointMarkers.empty() || !file.segmentMarkers.empty())
   {
     vtkNew<vtkIntArray> markers;
     markers->SetName("PointMarker");
     markers->SetNumberOfTuples(numberOfPoints);
     for (vtkIdType i = 0; i < numberOfPoints; ++i)
     {
-      markers->SetValue(i, file.pointMarkers[static_cast<std::size_t>(i)]);
+      markers->SetValue(
+        i, file.pointMarkers.empty() ? 0 : file.pointMarkers[static_cast<std::size_t>(i)]);
     }
     output->GetPointData()->AddArray(markers);
   }

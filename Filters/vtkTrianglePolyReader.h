@@ -16,7 +16,9 @@
  * - one 2-point line cell per segment, in file order, and one vertex cell per
  *   point that is on no segment (vertex cells come first in the cell data, as
  *   always in vtkPolyData);
- * - point data `PointMarker` (int, when the file has boundary markers) and
+ * - point data `PointMarker` (int, when the file has boundary markers on its
+ *   vertices or its segments: 0 where the vertices have none, as Triangle
+ *   reads them) and
  *   `Attribute0`, `Attribute1`, ... (double, one array per vertex attribute);
  * - cell data `SegmentMarker` (int, when the file has segment markers; 0 on
  *   the vertex cells);

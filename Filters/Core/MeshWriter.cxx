@@ -14,12 +14,11 @@ namespace
 {
 
 /// Mesh edges as sorted (lo, hi) pairs, each once, with Triangle's marker: an
-/// input subsegment's nonzero marker (per Result::edges entry; 1 when none
-/// are given), else 1 on the mesh's boundary (unless markBoundary is false:
-/// then input subsegments only), else 0. boundaryVertex gets 1 per vertex on
-/// the boundary.
+/// input subsegment's nonzero marker (per Result::edges entry; inputMarker
+/// when none are given), else 1 on the mesh's boundary (unless markBoundary
+/// is false), else 0. boundaryVertex gets 1 per vertex on the boundary.
 std::vector<std::array<int, 3>> meshEdges(const Result& r, const std::vector<int>& markers,
-  std::vector<char>& boundaryVertex, bool markBoundary = true)
+  std::vector<char>& boundaryVertex, bool markBoundary = true, int inputMarker = 0)
 {
   std::vector<std::array<int, 3>> edges;
   for (const Triangle& t : r.mesh.triangles)
@@ -67,7 +66,7 @@ std::vector<std::array<int, 3>> meshEdges(const Result& r, const std::vector<int
     const std::array<int, 3> key{ std::min(a, b), std::max(a, b), 0 };
     auto it = std::lower_bound(edges.begin(), edges.end(), key);
     if (it != edges.end() && (*it)[0] == key[0] && (*it)[1] == key[1])
-      (*it)[2] = markers.empty() ? 1 : markers[i];
+      (*it)[2] = markers.empty() ? inputMarker : markers[i];
   }
   for (std::size_t e = 0; e < edges.size(); ++e)
     edges[e][2] = edges[e][2] == 0 && boundary[e] && markBoundary ? 1 : edges[e][2];
@@ -159,7 +158,7 @@ void writeSvg(std::ostream& out, const Result& r)
   };
   out << "<g id=\"mesh\">\n";
   std::vector<char> boundaryVertex;
-  for (const std::array<int, 3>& e : meshEdges(r, {}, boundaryVertex, false))
+  for (const std::array<int, 3>& e : meshEdges(r, {}, boundaryVertex, false, 1))
     if (!e[2]) // drawn bold below
       line(r.mesh.vertices[e[0]], r.mesh.vertices[e[1]], "stroke=\"#4a6fa5\" stroke-width=\"0.4\"");
   out << "</g>\n<g id=\"discarded\">\n";

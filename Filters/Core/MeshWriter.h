@@ -23,14 +23,15 @@ struct NodeData
   /// markers for input without any).
   std::vector<int> markers;
   /// Per entry of Result::edges: the .edge marker of the mesh edge it is
-  /// when an input subsegment; empty: 1.
+  /// when an input subsegment; empty: 0 (then boundary edges 1).
   std::vector<int> edgeMarkers;
 };
 
 /// Write base.node, base.ele and base.edge (1-based, as Triangle writes them).
 /// The .edge file lists every mesh edge with Triangle's boundary marker: an
-/// input subsegment's nonzero marker (1 without edgeMarkers), else 1 on the
-/// mesh's boundary (the holes' included), else 0. Returns an empty string or the reason it failed
+/// input subsegment's nonzero marker (from edgeMarkers; without them, input
+/// without markers to Triangle), else 1 on the mesh's boundary (the holes'
+/// included), else 0. Returns an empty string or the reason it failed
 /// (node data of the wrong size among them).
 std::string writeTriangleFiles(
   const std::string& base, const Result& result, const NodeData& data = {});

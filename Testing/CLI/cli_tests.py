@@ -271,7 +271,7 @@ def group_options():
     for name, source in (("square", square), ("crossing", data("crossing.poly"))):
         svg = out(name + ".svg")
         s = stats_of(source, "--svg", svg, "-o", out(name + "-svg.node"))
-        _, _, edges = read_triangle_files(out(name + "-svg"))
+        v_of, _, edges = read_triangle_files(out(name + "-svg"))
         try:
             root = ET.parse(svg).getroot()
         except ET.ParseError as e:
@@ -289,8 +289,9 @@ def group_options():
                   "--svg %s: %d dashed discarded edges" % (name, s.get("DiscardedEdges", -1)),
                   str(len(dashed)))
             bold = list(groups["input"].iter(ns + "line"))
-            # Input subsegments carry their segment's marker (1 or 2 here), others 0.
-            input_edges = sum(1 for _, _, m in edges if m != 0)
+            # The input subsegments: the mesh edges along the file's segments.
+            input_edges = sum(1 for a, b, _ in edges
+                              if on_segments(source, v_of[a - 1], v_of[b - 1]))
             check(len(bold) == input_edges and
                   all(float(l.get("stroke-width")) > 1 for l in bold),
                   "--svg %s: %d bold input subsegments" % (name, input_edges), str(len(bold)))
@@ -395,6 +396,50 @@ def group_formats():
     _, _, bare_edges = read_triangle_files(out("bare"))
     check(abs(sum(math.dist(v[a - 1], v[b - 1]) for a, b, m in bare_edges if m == 1) - 48.0) < 1e-9,
           "--no-point-data: .edge marks every input subsegment 1 (40 + 8 long)")
+    # Triangle's marker rules (triangle.markers.html) on cases a review found:
+    # an input vertex inside a marked segment, a crossing of a 0 and a 7
+    # segment (either order), a vertex given twice, a segment given twice
+    # with 0 and 7, and a file with segment markers but none on its vertices.
+    rules = out("rules.poly")
+    with open(rules, "w") as f:
+        f.write("\n".join([
+            "14 2 0 1",
+            "0 0 0 0", "1 4 0 0", "2 4 4 0", "3 0 4 0",
+            "4 2 0 0",                          # inside the bottom segment (marker 5)
+            "5 0.5 1 0", "6 1.5 3 0",           # a diagonal, marker 0
+            "7 0.5 3 0", "8 1.5 1 0",           # the other, marker 7: they cross at (1, 2)
+            "9 3 1 0", "10 3 3 0",              # a slit given twice, with 0 and 3
+            "11 3.5 2 0", "12 3.5 2 0", "13 3.8 2 0",  # 12 repeats 11; 12-13 has marker 9
+            "9 1",
+            "0 0 1 5", "1 1 2 0", "2 2 3 0", "3 3 0 0",
+            "4 5 6 0", "5 7 8 7", "6 9 10 0", "7 10 9 3", "8 12 13 9",
+            "0", ""]))
+    mesh_ok(rules, "-o", out("rules.node"))
+    v, t, e = read_triangle_files(out("rules"))
+    with open(out("rules.node")) as f:
+        node_rows = [l.split() for l in f if l.strip() and not l.lstrip().startswith("#")][1:]
+    marker_at = {(float(r[1]), float(r[2])): int(r[3]) for r in node_rows}
+    expected_points = {(2.0, 0.0): 5, (0.0, 0.0): 5, (4.0, 0.0): 5, (0.0, 4.0): 1, (4.0, 4.0): 1,
+                       (1.0, 2.0): 7, (0.5, 1.0): 0, (1.5, 3.0): 0, (0.5, 3.0): 7, (1.5, 1.0): 7,
+                       (3.0, 1.0): 3, (3.0, 3.0): 3, (3.5, 2.0): 9, (3.8, 2.0): 9}
+    wrong = [(p, marker_at.get(p), m) for p, m in expected_points.items() if marker_at.get(p) != m]
+    check(not wrong, "Triangle's vertex markers: inside a marked segment, at a crossing, on a "
+          "segment given twice, at a point given twice, on the boundary", str(wrong))
+    slit = [m for a, b, m in e if all(v[i - 1][0] == 3.0 and 1 <= v[i - 1][1] <= 3 for i in (a, b))]
+    check(slit and all(m == 3 for m in slit),
+          "Triangle's edge markers: a segment given with 0 and 3 is marked 3", str(slit))
+    # No vertex markers, segment markers only: vertices take their segments'.
+    seg_only = out("segonly.poly")
+    with open(seg_only, "w") as f:
+        f.write("4 2 0 0\n0 0 0\n1 2 0\n2 2 2\n3 0 2\n"
+                "4 1\n0 0 1 5\n1 1 2 0\n2 2 3 0\n3 3 0 0\n0\n")
+    mesh_ok(seg_only, "-o", out("segonly.node"))
+    with open(out("segonly.node")) as f:
+        node_rows = [l.split() for l in f if l.strip() and not l.lstrip().startswith("#")][1:]
+    bottom = [int(r[3]) for r in node_rows if float(r[2]) == 0.0]
+    check(bottom and all(m == 5 for m in bottom),
+          "a file without vertex markers: the bottom segment's vertices take its marker 5",
+          str(bottom))
     # .vtu and .vtp hold the same mesh: validated above; the .vtk too.
     # Sizes agree between formats (validator summaries).
     summaries = {}
@@ -694,6 +739,24 @@ def group_realdata():
         check(s.get("MaxAngleDeg", 999) <= 170.0, n + ": no angle above 170 degrees",
               str(s.get("MaxAngleDeg")))
         validate(source, base + ".node", "--allow-missing", what=n + ": mesh valid")
+
+
+def on_segments(poly, a, b):
+    """Whether points a and b both lie on one segment of the .poly file poly."""
+    rows = [l.split("#", 1)[0].split() for l in open(poly)]
+    rows = [r for r in rows if r]
+    n, first = int(rows[0][0]), int(rows[1][0])
+    points = {int(r[0]) - first: (float(r[1]), float(r[2])) for r in rows[1:n + 1]}
+    for r in rows[n + 2:n + 2 + int(rows[n + 1][0])]:
+        p, q = points[int(r[1]) - first], points[int(r[2]) - first]
+        length = math.dist(p, q)
+        on = lambda x: (abs((q[0] - p[0]) * (x[1] - p[1]) - (q[1] - p[1]) * (x[0] - p[0]))
+                        <= 1e-9 * length * length and
+                        -1e-9 <= (x[0] - p[0]) * (q[0] - p[0]) + (x[1] - p[1]) * (q[1] - p[1])
+                        <= length * length * (1 + 1e-9))
+        if on(a) and on(b):
+            return True
+    return False
 
 
 def poly_text(points, segments, holes=()):

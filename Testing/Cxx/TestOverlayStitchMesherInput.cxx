@@ -1435,6 +1435,12 @@ int TestPointData()
   clash->SetNumberOfTuples(input->GetNumberOfPoints());
   clash->Fill(7.0);
   input->GetPointData()->AddArray(clash);
+  // An array shorter than the points (malformed input) is left out.
+  vtkNew<vtkDoubleArray> shortArray;
+  shortArray->SetName("Short");
+  shortArray->SetNumberOfTuples(3);
+  shortArray->Fill(1.0);
+  input->GetPointData()->AddArray(shortArray);
   // Ghost flags are not data: the mesh is one piece, none of its points a ghost.
   vtkNew<vtkUnsignedCharArray> ghosts;
   ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
@@ -1442,7 +1448,10 @@ int TestPointData()
   ghosts->Fill(0);
   input->GetPointData()->AddArray(ghosts);
   mesh = h.Run(input, "point data named VertexOrigin");
-  Check(h.Messages->Warnings.size() == 1 &&
+  Check(!mesh->GetPointData()->GetArray("Short") &&
+      h.Messages->HasWarning({ "Short is not carried: it has 3 tuples for 8 points" }),
+    "point data: an array shorter than the points is not carried, with a warning");
+  Check(h.Messages->Warnings.size() == 2 &&
       h.Messages->HasWarning({ "VertexOrigin", "not carried" }) &&
       vtkUnsignedCharArray::SafeDownCast(mesh->GetPointData()->GetArray("VertexOrigin")),
     "point data: an input VertexOrigin is not carried, with a warning");
@@ -1495,14 +1504,24 @@ int TestCellData()
     input->GetCellData()->AddArray(a);
   }
   input->GetCellData()->SetActiveScalars("Depth");
+  // An array shorter than the cells (malformed input) is left out, not read
+  // past its end.
+  vtkNew<vtkDoubleArray> shortArray;
+  shortArray->SetName("Short");
+  shortArray->InsertNextValue(1.0);
+  input->GetCellData()->AddArray(shortArray);
 
   for (const bool hull : { false, true })
   {
     const std::string row = std::string("cell data, ") + (hull ? "hull" : "enclosed") + " domain";
     hull ? h.Mesher->SetDomainToHull() : h.Mesher->SetDomainToEnclosed();
     h.Run(input, row);
-    Check(h.NoError() && h.Messages->HasWarning({ "EdgeClass", "not carried" }),
-      row + ": meshed; a warning: the input's EdgeClass is not carried");
+    Check(h.NoError() && h.Messages->HasWarning({ "EdgeClass", "not carried" }) &&
+        h.Messages->HasWarning({ "Short is not carried: it has 1 tuples for 2 cells" }) &&
+        !h.Mesher->GetEdgesOutput()->GetCellData()->GetArray("Short"),
+      row +
+        ": meshed; warnings: the input's EdgeClass, and an array shorter than the cells, "
+        "are not carried");
     vtkPolyData* edges = h.Mesher->GetEdgesOutput();
     vtkCellData* cd = edges->GetCellData();
     auto* ids = vtkIdTypeArray::SafeDownCast(cd->GetArray("InputCellId"));
