@@ -174,7 +174,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const osm::Result r = osm::mesh(p, o);
   if (!r.ok)
     return 0; // refused: the message is checked by the unit tests
-  for (std::size_t t = 0; t < r.regionAttribute.size(); ++t)
+  // Regions' areas bound their triangles, unless a warning says which edges
+  // stay longer (on a segment, or where a region seed on a segment left the
+  // refined side to the other: the warnings name both).
+  bool longKept = false;
+  for (const std::string& w : r.warnings)
+    longKept = longKept || w.find("longer than the maximum edge length") != std::string::npos;
+  for (std::size_t t = 0; !longKept && t < r.regionAttribute.size(); ++t)
   {
     const int k = static_cast<int>(r.regionAttribute[t]) - 1;
     if (k < 0 || !(p.regions[k].maxArea > 0))
@@ -219,9 +225,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       vo.maxAngleDeg = r.stats.maxAngleDeg + 1e-9;
     }
   // No edge longer than the size bound, unless a warning says which is.
-  bool longKept = false;
-  for (const std::string& w : r.warnings)
-    longKept = longKept || w.find("longer than the maximum edge length") != std::string::npos;
   vo.maxEdgeLength = longKept ? 0.0 : o.maxEdgeLength;
   // Holes and the enclosed-regions domain remove whole regions, and with them
   // the parts of segments inside (a hole seed on a vertex picks one of its
