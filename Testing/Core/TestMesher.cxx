@@ -821,6 +821,34 @@ double triangleArea(const Result& r, std::size_t t)
   return 0.5 * orient2d(r.mesh.vertices[tri[0]], r.mesh.vertices[tri[1]], r.mesh.vertices[tri[2]]);
 }
 
+TEST(Mesher, RegionSeedOnASegmentKeepsItsAreaOrSaysSo)
+{
+  // Found by the CI's mesher fuzz replay: a seed on a segment (10, 2) whose
+  // side differs between meshing rounds. Where its region's triangles stay
+  // larger than its area, warnings say both why and which.
+  Pslg p;
+  p.points = { { 11, 2 }, { 2, 4 }, { 4, 4 }, { 4, 0 }, { 0, 0 }, { 6, 14 }, { 2, 2 }, { 2, 8 },
+    { 0, 2 } };
+  p.segments = { { 6, 0 }, { 2, 4 }, { 0, 8 } };
+  p.regions = { { { 10, 2 }, 1.0, 0.98 }, { { 2, 2 }, 2.0, 9.8 } };
+  Options o;
+  o.regionAreas = true;
+  o.minAngleDeg = 20;
+  const Result r = meshAndValidate(p, "region seed on a segment", o);
+  double largest = 0;
+  for (std::size_t t = 0; t < r.mesh.triangles.size(); ++t)
+    if (r.regionAttribute[t] == 1.0)
+      largest = std::max(largest, triangleArea(r, t));
+  EXPECT_GT(largest, 0.0);
+  std::printf(
+    "region seed on a segment: largest triangle of its region %g (bound 0.98)\n", largest);
+  if (largest > 0.98 * (1 + 1e-9))
+  {
+    EXPECT_TRUE(mentions(r.warnings, "longer than the maximum edge length"));
+    EXPECT_TRUE(mentions(r.warnings, "region point(s) lie on a segment"));
+  }
+}
+
 TEST(Mesher, RegionalMaximumAreaBoundsEveryTriangleOfItsRegion)
 {
   // As Triangle's -a with area limits on region lines: every triangle of the
