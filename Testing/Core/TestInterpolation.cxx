@@ -341,6 +341,42 @@ TEST(Interpolation, VerticesKeepTheirSegmentWhereItBends)
   EXPECT_GT(onA, 0u);
 }
 
+// The fuzzer's case: a merge tolerance moves a segment's end onto an earlier
+// point (by up to the tolerance), then bends the moved segment through a
+// point near it (by up to the tolerance again). A vertex on the bent piece
+// takes the value at its nearest point of the input segment, so a linear
+// field is off there by at most its gradient times twice the tolerance.
+TEST(Interpolation, ASegmentMovedAndBentByTheToleranceKeepsItsValuesWithinTwiceIt)
+{
+  Pslg in;
+  // Segment 1-0 ends at (14, 4), which merges into (15, 5); the moved
+  // segment then bends through (12, 8), 1.45 off its line.
+  in.points = { { 0, 12 }, { 15, 5 }, { 14, 4 }, { 12, 8 }, { 0, 2 }, { 15, 12 } };
+  in.segments = { { 2, 0 } };
+  Options o;
+  o.mergeTolerance = 1.5;
+  o.maxEdgeLength = 1; // for stitch vertices all along it
+  o.domain = Domain::Hull;
+  const Result r = meshed(in, o);
+  ASSERT_TRUE(r.ok) << r.error;
+  const Point a = in.points[2], b = in.points[0];
+  const double gradient = std::sqrt(2.0 * 2.0 + 3.0 * 3.0);
+  double furthest = 0;
+  for (const VertexTerms& t : termsOf(in, r, "moved and bent"))
+  {
+    if (t.segment != 0)
+      continue;
+    const Point& p = r.mesh.vertices[t.vertex];
+    const double off = distanceToSegment(p, a, b);
+    furthest = std::max(furthest, off);
+    EXPECT_LE(off, 2 * o.mergeTolerance + 1e-12) << formatPoint(p);
+    EXPECT_LE(std::abs(valueAt(t, in, linear) - linear(p)), gradient * off * (1 + 1e-12) + 1e-12)
+      << formatPoint(p);
+  }
+  // Some vertex lies further than one tolerance off: the case is exercised.
+  EXPECT_GT(furthest, o.mergeTolerance);
+}
+
 // Input subsegments name their input segment (hull edges none), and both
 // their ends lie on it.
 TEST(Interpolation, InputSubsegmentsNameTheirSegment)

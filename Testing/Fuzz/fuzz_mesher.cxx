@@ -93,8 +93,13 @@ void checkInterpolation(
   const double aspect =
     std::fmax(x1 - x0, y1 - y0) / std::fmax(std::fmin(x1 - x0, y1 - y0), 1e-300);
   const double spread = magnitude / std::fmax(closest, 1e-300);
-  const double allowed =
-    3 * scale * o.mergeTolerance + (1e-9 + 1e-13 * (aspect + spread)) * scale * magnitude;
+  // A merge tolerance moves a segment's ends onto earlier points up to it
+  // away (Clean.h), then bends the moved segment through points up to it off
+  // the moved line (the validator checks that): a vertex on it lies up to
+  // twice the tolerance off its input segment and takes the value at its
+  // nearest point there, off by f's gradient (√5 scale) times that distance.
+  const double allowed = 2 * std::sqrt(5.0) * scale * o.mergeTolerance * (1 + 1e-9) +
+    (1e-9 + 1e-13 * (aspect + spread)) * scale * magnitude;
   osm::visitInputWeights(p, r, [&](const osm::VertexTerms& t) {
     if (t.vertex >= seen.size() || seen[t.vertex]++)
       fail(
