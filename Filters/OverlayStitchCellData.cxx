@@ -13,9 +13,11 @@
 #include "vtkSmartPointer.h"
 
 #include "Mesher.h"
+#include "OverlayStitchArrays.h"
 #include "OverlayStitchMarkers.h"
 #include "Predicates.h"
 #include "Pslg.h"
+#include "TriangleMarkers.h"
 
 #include <algorithm>
 #include <cmath>
@@ -29,19 +31,6 @@ namespace
 using Poll = std::function<bool(double)>;
 using CarriedArrays = std::vector<std::pair<vtkAbstractArray*, vtkSmartPointer<vtkAbstractArray>>>;
 
-bool IsFloating(vtkAbstractArray* array)
-{
-  const int type = array->GetDataType();
-  return vtkDataArray::SafeDownCast(array) && (type == VTK_FLOAT || type == VTK_DOUBLE);
-}
-
-/// Triangle's segment markers: one integer per cell.
-bool IsSegmentMarker(vtkAbstractArray* array)
-{
-  return array->GetName() && std::strcmp(array->GetName(), "SegmentMarker") == 0 &&
-    vtkDataArray::SafeDownCast(array) && array->GetNumberOfComponents() == 1 && !IsFloating(array);
-}
-
 /// A new array like source, with n tuples of the value an output cell from no
 /// input cell takes.
 vtkSmartPointer<vtkAbstractArray> NewTarget(vtkAbstractArray* source, vtkIdType n)
@@ -53,7 +42,7 @@ vtkSmartPointer<vtkAbstractArray> NewTarget(vtkAbstractArray* source, vtkIdType 
   target->SetNumberOfTuples(n);
   if (auto* data = vtkDataArray::SafeDownCast(target))
   {
-    data->Fill(IsFloating(source) ? std::numeric_limits<double>::quiet_NaN() : 0.0);
+    data->Fill(OverlayStitchIsFloating(source) ? std::numeric_limits<double>::quiet_NaN() : 0.0);
   }
   return target;
 }
@@ -69,27 +58,9 @@ bool Carry(vtkCellData* in, vtkIdType inputCells, vtkIdTypeArray* cellIds,
 {
   const vtkIdType n = cellIds->GetNumberOfTuples();
   const vtkIdType* cellOf = cellIds->GetPointer(0);
-  for (int i = 0; i < in->GetNumberOfArrays(); ++i)
+  for (vtkAbstractArray* source :
+    OverlayStitchCarriedArrays(in, inputCells, "cell", output, reserved, warnings))
   {
-    vtkAbstractArray* source = in->GetAbstractArray(i);
-    const char* name = source->GetName();
-    if (name && std::strcmp(name, vtkDataSetAttributes::GhostArrayName()) == 0)
-    {
-      continue;
-    }
-    if (name && std::find(reserved.begin(), reserved.end(), name) != reserved.end())
-    {
-      warnings.push_back(std::string("The input's cell data array ") + name +
-        " is not carried to the " + output + " output: it has an array of that name of its own.");
-      continue;
-    }
-    if (source->GetNumberOfTuples() < inputCells)
-    {
-      warnings.push_back(std::string("The input's cell data array ") + (name ? name : "(unnamed)") +
-        " is not carried: it has " + std::to_string(source->GetNumberOfTuples()) + " tuples for " +
-        std::to_string(inputCells) + " cells.");
-      continue;
-    }
     carried.emplace_back(source, NewTarget(source, n));
   }
   const double total = static_cast<double>(taking.size() * (carried.size() + 1));
@@ -110,19 +81,12 @@ bool Carry(vtkCellData* in, vtkIdType inputCells, vtkIdTypeArray* cellIds,
   {
     out->AddArray(carriedArray.second);
   }
-  // The input's active scalars, ... stay active; not its global or pedigree
-  // ids, which the output cells of one input cell repeat.
-  for (int a = 0; a < vtkDataSetAttributes::NUM_ATTRIBUTES; ++a)
+  std::vector<vtkAbstractArray*> sources;
+  for (auto& carriedArray : carried)
   {
-    vtkAbstractArray* active = in->GetAbstractAttribute(a);
-    const bool isCarried = std::any_of(
-      carried.begin(), carried.end(), [active](const auto& c) { return c.first == active; });
-    if (active && isCarried && a != vtkDataSetAttributes::GLOBALIDS &&
-      a != vtkDataSetAttributes::PEDIGREEIDS)
-    {
-      out->SetActiveAttribute(active->GetName(), a);
-    }
+    sources.push_back(carriedArray.first);
   }
+  OverlayStitchKeepActive(in, out, sources);
   return true;
 }
 
@@ -353,16 +317,15 @@ bool OverlayStitchPassCellData(vtkCellData* in, vtkIdType inputCells, const osm:
   // Triangle's markers, by its rules.
   for (auto& [source, target] : carried)
   {
-    if (!IsSegmentMarker(source))
+    if (OverlayStitchIsMarker(source, "SegmentMarker"))
     {
-      continue;
-    }
-    const OverlayStitchMarkers markers(
-      pslg, result, vtkDataArray::SafeDownCast(source), segmentCells);
-    auto* marked = vtkDataArray::SafeDownCast(target);
-    for (vtkIdType e = 0; e < n; ++e)
-    {
-      marked->SetComponent(e, 0, markers.Edge(static_cast<std::size_t>(e)));
+      const osm::TriangleMarkers markers(
+        pslg, result, OverlayStitchSegmentMarkers(source, segmentCells));
+      auto* marked = vtkDataArray::SafeDownCast(target);
+      for (vtkIdType e = 0; e < n; ++e)
+      {
+        marked->SetComponent(e, 0, markers.edge(static_cast<std::size_t>(e)));
+      }
     }
   }
   return true;

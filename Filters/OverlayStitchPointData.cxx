@@ -12,8 +12,10 @@
 
 #include "Interpolation.h"
 #include "Mesher.h"
+#include "OverlayStitchArrays.h"
 #include "OverlayStitchMarkers.h"
 #include "Pslg.h"
+#include "TriangleMarkers.h"
 
 #include <algorithm>
 #include <cstring>
@@ -36,20 +38,6 @@ struct Carried
   Kind How;
 };
 
-bool IsFloating(vtkAbstractArray* array)
-{
-  const int type = array->GetDataType();
-  return vtkDataArray::SafeDownCast(array) && (type == VTK_FLOAT || type == VTK_DOUBLE);
-}
-
-/// The input's segment markers when they are Triangle's: one integer per cell.
-vtkDataArray* SegmentMarkers(vtkCellData* cells)
-{
-  vtkDataArray* markers = cells ? cells->GetArray("SegmentMarker") : nullptr;
-  return markers && markers->GetNumberOfComponents() == 1 && !IsFloating(markers) ? markers
-                                                                                  : nullptr;
-}
-
 } // namespace
 
 bool OverlayStitchInterpolatePointData(vtkPointData* in, vtkCellData* inCells,
@@ -58,32 +46,12 @@ bool OverlayStitchInterpolatePointData(vtkPointData* in, vtkCellData* inCells,
   const std::function<bool(double)>& poll, std::vector<std::string>& warnings)
 {
   const auto vertices = static_cast<vtkIdType>(result.mesh.vertices.size());
-  vtkDataArray* segmentMarkers = SegmentMarkers(inCells);
   std::vector<Carried> carried;
-  for (int i = 0; i < in->GetNumberOfArrays(); ++i)
+  for (vtkAbstractArray* source : OverlayStitchCarriedArrays(
+         in, static_cast<vtkIdType>(pslg.points.size()), "point", "Mesh", reserved, warnings))
   {
-    vtkAbstractArray* source = in->GetAbstractArray(i);
-    const char* name = source->GetName();
-    if (name && std::strcmp(name, vtkDataSetAttributes::GhostArrayName()) == 0)
-    {
-      continue; // the mesh is one piece: no point of it is a ghost
-    }
-    if (name && std::find(reserved.begin(), reserved.end(), name) != reserved.end())
-    {
-      warnings.push_back(std::string("The input's point data array ") + name +
-        " is not carried to the mesh: the mesh has an array of that name of its own.");
-      continue;
-    }
-    if (source->GetNumberOfTuples() < static_cast<vtkIdType>(pslg.points.size()))
-    {
-      warnings.push_back(std::string("The input's point data array ") +
-        (name ? name : "(unnamed)") + " is not carried: it has " +
-        std::to_string(source->GetNumberOfTuples()) + " tuples for " +
-        std::to_string(pslg.points.size()) + " points.");
-      continue;
-    }
     auto target = vtkSmartPointer<vtkAbstractArray>::Take(source->NewInstance());
-    target->SetName(name);
+    target->SetName(source->GetName());
     target->SetNumberOfComponents(source->GetNumberOfComponents());
     target->CopyComponentNames(source);
     target->SetNumberOfTuples(vertices);
@@ -91,12 +59,10 @@ bool OverlayStitchInterpolatePointData(vtkPointData* in, vtkCellData* inCells,
     {
       data->Fill(0.0); // a vertex with no terms (none on the input) reads 0
     }
-    const bool marker = name && std::strcmp(name, "PointMarker") == 0 &&
-      source->GetNumberOfComponents() == 1 && !IsFloating(source);
     carried.push_back({ source, target,
-      IsFloating(source) ? Carried::Linear
-        : marker         ? Carried::Marker
-                         : Carried::Largest });
+      OverlayStitchIsFloating(source)                  ? Carried::Linear
+        : OverlayStitchIsMarker(source, "PointMarker") ? Carried::Marker
+                                                       : Carried::Largest });
   }
   if (carried.empty())
   {
@@ -104,10 +70,12 @@ bool OverlayStitchInterpolatePointData(vtkPointData* in, vtkCellData* inCells,
   }
   const bool markers = std::any_of(
     carried.begin(), carried.end(), [](const Carried& c) { return c.How == Carried::Marker; });
-  std::optional<OverlayStitchMarkers> triangle;
+  std::optional<osm::TriangleMarkers> triangle;
   if (markers)
   {
-    triangle.emplace(pslg, result, segmentMarkers, segmentCells);
+    triangle.emplace(pslg, result,
+      OverlayStitchSegmentMarkers(
+        inCells ? inCells->GetArray("SegmentMarker") : nullptr, segmentCells));
   }
 
   vtkNew<vtkIdList> ids;
@@ -127,7 +95,7 @@ bool OverlayStitchInterpolatePointData(vtkPointData* in, vtkCellData* inCells,
         const int own =
           t.inputPoint >= 0 ? static_cast<int>(source->GetComponent(t.inputPoint, 0)) : 0;
         vtkDataArray::SafeDownCast(c.Target)->SetComponent(
-          v, 0, triangle->Vertex(static_cast<int>(t.vertex), own));
+          v, 0, triangle->vertex(static_cast<int>(t.vertex), own));
       }
     }
     if (t.count == 0)
@@ -171,19 +139,12 @@ bool OverlayStitchInterpolatePointData(vtkPointData* in, vtkCellData* inCells,
   {
     out->AddArray(c.Target);
   }
-  // The input's active scalars, vectors, ... stay active; not its global or
-  // pedigree ids, which new points repeat, so that they are ids no more.
-  for (int a = 0; a < vtkDataSetAttributes::NUM_ATTRIBUTES; ++a)
+  std::vector<vtkAbstractArray*> sources;
+  for (const Carried& c : carried)
   {
-    vtkAbstractArray* active = in->GetAbstractAttribute(a);
-    const bool carriedActive = std::any_of(
-      carried.begin(), carried.end(), [active](const Carried& c) { return c.Source == active; });
-    if (active && active->GetName() && carriedActive && a != vtkDataSetAttributes::GLOBALIDS &&
-      a != vtkDataSetAttributes::PEDIGREEIDS)
-    {
-      out->SetActiveAttribute(active->GetName(), a);
-    }
+    sources.push_back(c.Source);
   }
+  OverlayStitchKeepActive(in, out, sources);
   return true;
 }
 

@@ -1,7 +1,8 @@
 #include "MeshWriter.h"
 
+#include "TriangleMarkers.h"
+
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -13,37 +14,12 @@ namespace osm
 namespace
 {
 
-/// Mesh edges as sorted (lo, hi) pairs, each once, with Triangle's marker: an
-/// input subsegment's nonzero marker (per Result::edges entry; inputMarker
-/// when none are given), else 1 on the mesh's boundary (unless markBoundary
-/// is false), else 0. boundaryVertex gets 1 per vertex on the boundary.
-std::vector<std::array<int, 3>> meshEdges(const Result& r, const std::vector<int>& markers,
-  std::vector<char>& boundaryVertex, bool markBoundary = true, int inputMarker = 0)
+/// Per mesh edge (of edges), the marker of the input subsegment on it: its
+/// entry of markers (per Result::edges entry), or inputMarker when none are
+/// given; 0 for the others.
+std::vector<int> inputMarkers(
+  const Result& r, const MeshEdges& edges, const std::vector<int>& markers, int inputMarker)
 {
-  std::vector<std::array<int, 3>> edges;
-  for (const Triangle& t : r.mesh.triangles)
-    for (int i = 0; i < 3; ++i)
-    {
-      const int a = t[i], b = t[(i + 1) % 3];
-      edges.push_back({ std::min(a, b), std::max(a, b), 0 });
-    }
-  std::sort(edges.begin(), edges.end());
-  // An edge of one triangle is on the boundary (the holes' included).
-  boundaryVertex.assign(r.mesh.vertices.size(), 0);
-  std::vector<char> boundary;
-  std::size_t unique = 0;
-  for (std::size_t i = 0; i < edges.size();)
-  {
-    std::size_t j = i + 1;
-    while (j < edges.size() && edges[j] == edges[i])
-      ++j;
-    boundary.push_back(j - i == 1);
-    if (j - i == 1)
-      boundaryVertex[edges[i][0]] = boundaryVertex[edges[i][1]] = 1;
-    edges[unique++] = edges[i];
-    i = j;
-  }
-  edges.resize(unique);
   // Input subsegments are recorded against the edge vertices: map by coordinates.
   std::vector<std::pair<Point, int>> byPoint;
   for (std::size_t v = 0; v < r.mesh.vertices.size(); ++v)
@@ -55,22 +31,17 @@ std::vector<std::array<int, 3>> meshEdges(const Result& r, const std::vector<int
       byPoint.begin(), byPoint.end(), p, [](const auto& a, const Point& q) { return a.first < q; });
     return it != byPoint.end() && it->first == p ? it->second : -1;
   };
+  std::vector<int> marker(edges.size(), 0);
   for (std::size_t i = 0; i < r.edges.size(); ++i)
   {
     const Edge& e = r.edges[i];
     if (!(e.flags & EdgeInput))
       continue;
-    const int a = find(r.edgeVertices[e.a]), b = find(r.edgeVertices[e.b]);
-    if (a < 0 || b < 0)
-      continue;
-    const std::array<int, 3> key{ std::min(a, b), std::max(a, b), 0 };
-    auto it = std::lower_bound(edges.begin(), edges.end(), key);
-    if (it != edges.end() && (*it)[0] == key[0] && (*it)[1] == key[1])
-      (*it)[2] = markers.empty() ? inputMarker : markers[i];
+    const std::size_t k = edges.find(find(r.edgeVertices[e.a]), find(r.edgeVertices[e.b]));
+    if (k < edges.size())
+      marker[k] = markers.empty() ? inputMarker : markers[i];
   }
-  for (std::size_t e = 0; e < edges.size(); ++e)
-    edges[e][2] = edges[e][2] == 0 && boundary[e] && markBoundary ? 1 : edges[e][2];
-  return edges;
+  return marker;
 }
 
 } // namespace
@@ -86,8 +57,8 @@ std::string writeTriangleFiles(const std::string& base, const Result& r, const N
   std::ofstream node(base + ".node"), ele(base + ".ele"), edge(base + ".edge");
   if (!node || !ele || !edge)
     return "cannot write " + base + ".node/.ele/.edge";
-  std::vector<char> boundaryVertex;
-  const std::vector<std::array<int, 3>> edges = meshEdges(r, data.edgeMarkers, boundaryVertex);
+  const MeshEdges edges(r.mesh);
+  const std::vector<int> marker = inputMarkers(r, edges, data.edgeMarkers, 0);
   char buf[128];
   node << n << " 2 " << data.attributeCount << " 1\n";
   for (std::size_t v = 0; v < n; ++v)
@@ -101,7 +72,10 @@ std::string writeTriangleFiles(const std::string& base, const Result& r, const N
       std::snprintf(buf, sizeof buf, " %.17g", data.attributes[v * data.attributeCount + k]);
       node << buf;
     }
-    node << ' ' << (data.markers.empty() ? int(boundaryVertex[v]) : data.markers[v]) << '\n';
+    node << ' '
+         << (data.markers.empty() ? boundaryMarker(0, edges.vertexOnBoundary(int(v)))
+                                  : data.markers[v])
+         << '\n';
   }
   // Attributes: the regional attribute first when there is one (as Triangle's
   // -A writes it), then the region id.
@@ -121,7 +95,8 @@ std::string writeTriangleFiles(const std::string& base, const Result& r, const N
   }
   edge << edges.size() << " 1\n";
   for (std::size_t e = 0; e < edges.size(); ++e)
-    edge << e + 1 << ' ' << edges[e][0] + 1 << ' ' << edges[e][1] + 1 << ' ' << edges[e][2] << '\n';
+    edge << e + 1 << ' ' << edges.lower(e) + 1 << ' ' << edges.higher(e) + 1 << ' '
+         << boundaryMarker(marker[e], edges.onBoundary(e)) << '\n';
   return node && ele && edge ? std::string() : "error while writing " + base + ".node/.ele/.edge";
 }
 
@@ -157,10 +132,12 @@ void writeSvg(std::ostream& out, const Result& r)
     out << buf;
   };
   out << "<g id=\"mesh\">\n";
-  std::vector<char> boundaryVertex;
-  for (const std::array<int, 3>& e : meshEdges(r, {}, boundaryVertex, false, 1))
-    if (!e[2]) // drawn bold below
-      line(r.mesh.vertices[e[0]], r.mesh.vertices[e[1]], "stroke=\"#4a6fa5\" stroke-width=\"0.4\"");
+  const MeshEdges edges(r.mesh);
+  const std::vector<int> input = inputMarkers(r, edges, {}, 1);
+  for (std::size_t e = 0; e < edges.size(); ++e)
+    if (!input[e]) // drawn bold below
+      line(r.mesh.vertices[edges.lower(e)], r.mesh.vertices[edges.higher(e)],
+        "stroke=\"#4a6fa5\" stroke-width=\"0.4\"");
   out << "</g>\n<g id=\"discarded\">\n";
   for (const Edge& e : r.edges)
     if (e.flags & EdgeDiscarded)

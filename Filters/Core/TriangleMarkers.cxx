@@ -1,0 +1,129 @@
+#include "TriangleMarkers.h"
+
+#include <algorithm>
+#include <unordered_map>
+
+namespace osm
+{
+
+namespace
+{
+std::uint64_t key(int a, int b)
+{
+  const auto lo = static_cast<std::uint32_t>(std::min(a, b));
+  const auto hi = static_cast<std::uint32_t>(std::max(a, b));
+  return (static_cast<std::uint64_t>(lo) << 32) | hi;
+}
+} // namespace
+
+MeshEdges::MeshEdges(const TriMesh& mesh, Keep keep)
+  : boundaryVertex_(mesh.vertices.size(), 0)
+{
+  keys_.reserve(3 * mesh.triangles.size());
+  for (const Triangle& t : mesh.triangles)
+    for (int i = 0; i < 3; ++i)
+      keys_.push_back(key(t[i], t[(i + 1) % 3]));
+  std::sort(keys_.begin(), keys_.end());
+  // In place: an edge listed once is on the boundary.
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < keys_.size();)
+  {
+    std::size_t j = i + 1;
+    while (j < keys_.size() && keys_[j] == keys_[i])
+      ++j;
+    const bool once = j - i == 1;
+    if (once)
+      boundaryVertex_[keys_[i] >> 32] = boundaryVertex_[keys_[i] & 0xffffffffu] = 1;
+    if (once || keep == Keep::All)
+    {
+      keys_[kept++] = keys_[i];
+      boundary_.push_back(once);
+    }
+    i = j;
+  }
+  keys_.resize(kept);
+  if (keep == Keep::Boundary)
+    keys_.shrink_to_fit();
+}
+
+bool MeshEdges::vertexOnBoundary(int v) const
+{
+  return v >= 0 && static_cast<std::size_t>(v) < boundaryVertex_.size() &&
+    boundaryVertex_[static_cast<std::size_t>(v)] != 0;
+}
+
+std::size_t MeshEdges::find(int a, int b) const
+{
+  if (a < 0 || b < 0)
+    return size();
+  const auto it = std::lower_bound(keys_.begin(), keys_.end(), key(a, b));
+  return it != keys_.end() && *it == key(a, b) ? static_cast<std::size_t>(it - keys_.begin())
+                                               : size();
+}
+
+bool MeshEdges::edgeOnBoundary(int a, int b) const
+{
+  const std::size_t k = find(a, b);
+  return k < size() && onBoundary(k);
+}
+
+TriangleMarkers::TriangleMarkers(
+  const Pslg& pslg, const Result& result, std::vector<int> segmentMarkers)
+  : result_(result)
+  , edges_(result.mesh, MeshEdges::Keep::Boundary)
+  , segmentMarker_(std::move(segmentMarkers))
+  , onSegment_(result.mesh.vertices.size(), 0)
+{
+  segmentMarker_.resize(pslg.segments.size(), 0);
+  // Segments given twice (the mesher keeps one) share a nonzero marker.
+  std::unordered_map<std::uint64_t, int> nonzero;
+  for (std::size_t s = 0; s < pslg.segments.size(); ++s)
+    if (segmentMarker_[s] != 0)
+      nonzero.emplace(key(pslg.segments[s][0], pslg.segments[s][1]), segmentMarker_[s]);
+  for (std::size_t s = 0; s < pslg.segments.size() && !nonzero.empty(); ++s)
+  {
+    const auto found = nonzero.find(key(pslg.segments[s][0], pslg.segments[s][1]));
+    if (segmentMarker_[s] == 0 && found != nonzero.end())
+      segmentMarker_[s] = found->second;
+  }
+  // The vertices on a marked segment: the ends of its subsegments (input
+  // vertices inside it, crossings and points merged into others included).
+  for (std::size_t e = 0; e < result.edges.size(); ++e)
+  {
+    const int marker = segmentOf(e);
+    for (const int end : { inMesh(result.edges[e].a), inMesh(result.edges[e].b) })
+      if (marker != 0 && end >= 0 && onSegment_[static_cast<std::size_t>(end)] == 0)
+        onSegment_[static_cast<std::size_t>(end)] = marker;
+  }
+}
+
+int TriangleMarkers::inMesh(int edgeVertex) const
+{
+  return edgeVertex >= 0 && static_cast<std::size_t>(edgeVertex) < result_.edgeVertexInMesh.size()
+    ? result_.edgeVertexInMesh[static_cast<std::size_t>(edgeVertex)]
+    : -1;
+}
+
+int TriangleMarkers::segmentOf(std::size_t e) const
+{
+  const Edge& edge = result_.edges[e];
+  return (edge.flags & EdgeInput) && edge.segment >= 0 &&
+      static_cast<std::size_t>(edge.segment) < segmentMarker_.size()
+    ? segmentMarker_[static_cast<std::size_t>(edge.segment)]
+    : 0;
+}
+
+int TriangleMarkers::vertex(int v, int own) const
+{
+  if (own != 0 || v < 0 || static_cast<std::size_t>(v) >= onSegment_.size())
+    return own;
+  return boundaryMarker(onSegment_[static_cast<std::size_t>(v)], edges_.vertexOnBoundary(v));
+}
+
+int TriangleMarkers::edge(std::size_t e) const
+{
+  const Edge& edge = result_.edges[e];
+  return boundaryMarker(segmentOf(e), edges_.edgeOnBoundary(inMesh(edge.a), inMesh(edge.b)));
+}
+
+} // namespace osm

@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026, the Overlay Stitch Meshing authors
+//
+// Internal to OverlayStitch::Filters (not installed): which input arrays the
+// filter carries to its outputs, shared by its point and cell data carriers.
+#ifndef OverlayStitchArrays_h
+#define OverlayStitchArrays_h
+
+#include "vtkType.h" // for vtkIdType
+
+#include <string>
+#include <vector>
+
+class vtkAbstractArray;
+class vtkDataArray;
+class vtkDataSetAttributes;
+
+/// Whether an array holds floats or doubles (interpolated, where others are copied).
+bool OverlayStitchIsFloating(vtkAbstractArray* array);
+
+/// Whether an array is Triangle's markers by that name: one integer per tuple.
+bool OverlayStitchIsMarker(vtkAbstractArray* array, const char* name);
+
+/// The arrays of in (data on `items` points or cells: kind "point" or
+/// "cell") that may go to an output (named for the warnings, "Mesh" or
+/// "Edges"): not the ghost array, since the outputs are one piece; not one
+/// named like one of reserved, the output's own, nor one with fewer tuples
+/// than items, each of those two with a warning.
+std::vector<vtkAbstractArray*> OverlayStitchCarriedArrays(vtkDataSetAttributes* in, vtkIdType items,
+  const char* kind, const char* output, const std::vector<std::string>& reserved,
+  std::vector<std::string>& warnings);
+
+/// Makes in's active attributes (scalars, vectors, ...) active in out where
+/// they are among carried, the arrays carried there; not global or pedigree
+/// ids, which the output repeats, so that they are ids no more.
+void OverlayStitchKeepActive(vtkDataSetAttributes* in, vtkDataSetAttributes* out,
+  const std::vector<vtkAbstractArray*>& carried);
+
+#endif
