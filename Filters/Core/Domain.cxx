@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <optional>
 
@@ -271,47 +272,99 @@ bool isConstrained(const KnownAdjacency& a, int t, int i)
   return false;
 }
 
-/// The components of the triangles not removed around vertex v of triangle t:
-/// whether there are two or more. Rotates one way through the neighbours
-/// across v's edges, and the other way from t if the first stops at the box.
-bool meetsTwoComponents(const Array<Triangle>& tris, const KnownAdjacency& a, int t, int v,
-  const Array<int>& component, const Array<char>& removed)
+/// The index of vertex v among triangle t's corners.
+int cornerOf(const Triangle& t, int v)
 {
-  int seen = -1;
-  auto visit = [&](int u) {
-    if (removed[component[u]])
-      return false;
-    if (seen < 0)
-      seen = component[u];
-    return component[u] != seen;
-  };
-  auto at = [&](int u) { return tris[u][0] == v ? 0 : tris[u][1] == v ? 1 : 2; };
-  for (int turn : { 2, 1 }) // the edge after v, then the edge before it
-    for (int u = t, steps = 0; u >= 0 && steps < static_cast<int>(tris.size()); ++steps)
-    {
-      if (visit(u))
-        return true;
-      u = a.nbr[u][(at(u) + turn) % 3];
-      if (u == t)
-        return false;
-    }
-  return false;
+  return t[0] == v ? 0 : t[1] == v ? 1 : 2;
 }
 
-/// Whether the search that found q in the closure of triangle t met one side
-/// of a segment by accident: q lies, within rounding, on a constrained edge of
-/// t with triangles of another region on its other side, or at a vertex where
-/// a constrained edge ends and triangles of two regions meet. A seed on the
+/// The triangles not removed around vertex v of triangle t, each once:
+/// rotating one way through the neighbours across v's edges, and the other
+/// way from t if the first stops at the box.
+Array<int> fanAround(const Array<Triangle>& tris, const KnownAdjacency& a, int t, int v,
+  const Array<int>& component, const Array<char>& removed)
+{
+  Array<int> fan;
+  auto keep = [&](int u) {
+    if (!removed[component[u]])
+      fan.push_back(u);
+  };
+  auto next = [&](int u, int turn) { return a.nbr[u][(cornerOf(tris[u], v) + turn) % 3]; };
+  const int n = static_cast<int>(tris.size());
+  keep(t);
+  for (int u = next(t, 2), steps = 0; u >= 0 && steps < n; u = next(u, 2), ++steps)
+  {
+    if (u == t)
+      return fan; // closed around v
+    keep(u);
+  }
+  for (int u = next(t, 1), steps = 0; u >= 0 && steps < n; u = next(u, 1), ++steps)
+    keep(u);
+  return fan;
+}
+
+/// Whether direction v->p comes before v->q counter-clockwise from +x
+/// (+x itself first), exactly.
+bool beforeFromPlusX(const Point& v, const Point& p, const Point& q)
+{
+  auto half = [&v](const Point& w) { return w.y > v.y || (w.y == v.y && w.x > v.x) ? 0 : 1; };
+  return half(p) != half(q) ? half(p) < half(q) : orient2d(v, p, q) > 0;
+}
+
+/// Of the fan's triangles around v, the one whose corner
+/// at v holds the direction +x, its first edge included; else (+x leads out
+/// of the domain) the first counter-clockwise from +x.
+int fanTriangleAtPlusX(
+  const Array<Point>& P, const Array<Triangle>& tris, const Array<int>& fan, int v)
+{
+  const Point& o = P[v];
+  // Exactly +x of o, however large o.x: only the direction matters.
+  const Point east{ std::nextafter(o.x, std::numeric_limits<double>::infinity()), o.y };
+  auto firstEdgeEnd = [&](int u) { return P[tris[u][(cornerOf(tris[u], v) + 1) % 3]]; };
+  int first = -1;
+  for (const int u : fan)
+  {
+    const Point &p = firstEdgeEnd(u), &r = P[tris[u][(cornerOf(tris[u], v) + 2) % 3]];
+    if (orient2d(o, p, east) >= 0 && orient2d(o, r, east) < 0)
+      return u;
+    if (first < 0 || beforeFromPlusX(o, p, firstEdgeEnd(first)))
+      first = u;
+  }
+  return first;
+}
+
+/// Whether the direction +x from a point on line b->c leads to its left, or
+/// runs along it with its left above (exactly).
+bool plusXEntersLeft(const Point& b, const Point& c)
+{
+  const Point east{ std::nextafter(b.x, std::numeric_limits<double>::infinity()), b.y };
+  const double side = orient2d(b, c, east);
+  return side != 0 ? side > 0 : c.x > b.x;
+}
+
+/// Where the search that found q in the closure of triangle t met a segment
+/// between two regions, the triangle whose region q goes to, else -1. q lies,
+/// within rounding, on a constrained edge of t with triangles of another
+/// region on its other side, or at a vertex where constrained edges end and
+/// triangles of two regions meet. The rule holds in every mesh of the input
+/// (the meshing rounds differ): the region the direction +x from q enters,
+/// the one above where a segment runs along +x (at a vertex, the first
+/// counter-clockwise from +x if +x leads out of the domain). A seed on the
 /// domain's boundary or on a dangling segment is not in doubt.
-bool seedBetweenRegions(const Array<Point>& P, const Array<Triangle>& tris, const KnownAdjacency& a,
-  int t, const Point& q, const Array<char>& constrainedEnd, const Array<int>& component,
+int seedSide(const Array<Point>& P, const Array<Triangle>& tris, const KnownAdjacency& a, int t,
+  const Point& q, const Array<char>& constrainedEnd, const Array<int>& component,
   const Array<char>& removed)
 {
   for (int i = 0; i < 3; ++i)
   {
     const int v = tris[t][i];
     if (P[v] == q && constrainedEnd[v])
-      return meetsTwoComponents(tris, a, t, v, component, removed);
+    {
+      const Array<int> fan = fanAround(tris, a, t, v, component, removed);
+      const bool twoRegions = std::any_of(
+        fan.begin(), fan.end(), [&](int u) { return component[u] != component[fan.front()]; });
+      return twoRegions ? fanTriangleAtPlusX(P, tris, fan, v) : -1;
+    }
     if (!isConstrained(a, t, i))
       continue;
     const int u = a.nbr[t][i];
@@ -320,9 +373,9 @@ bool seedBetweenRegions(const Array<Point>& P, const Array<Triangle>& tris, cons
     const Point &b = P[tris[t][(i + 1) % 3]], &c = P[tris[t][(i + 2) % 3]];
     const double length = std::hypot(c.x - b.x, c.y - b.y);
     if (onLineWithinRounding(orient2d(b, c, q), q, length, length))
-      return true;
+      return plusXEntersLeft(b, c) ? t : u; // t lies left of b->c
   }
-  return false;
+  return -1;
 }
 
 } // namespace
@@ -352,14 +405,14 @@ Carving carveDomain(const Array<Point>& P, const Array<Triangle>& tris,
     return grid ? grid->find(q, component, removed) : findByScan(P, tris, q, component, removed);
   };
   Array<char> constrainedEnd; // per vertex, made for the first seed found
-  auto onSegment = [&](int t, const Point& q) {
+  auto sideOf = [&](int t, const Point& q) {
     if (constrainedEnd.empty())
     {
       constrainedEnd.assign(P.size(), char{ 0 });
       for (const Segment& s : constrained)
         constrainedEnd[s[0]] = constrainedEnd[s[1]] = 1;
     }
-    return seedBetweenRegions(P, tris, a, t, q, constrainedEnd, component, removed);
+    return seedSide(P, tris, a, t, q, constrainedEnd, component, removed);
   };
   if (!holes.empty())
   {
@@ -367,14 +420,17 @@ Carving carveDomain(const Array<Point>& P, const Array<Triangle>& tris,
       grid.emplace(P, tris, component, removed);
     for (std::size_t h = 0; h < holes.size(); ++h)
     {
-      const int t = locate(holes[h]);
+      int t = locate(holes[h]);
       if (t < 0)
       {
         out.unusedHoles.push_back(static_cast<int>(h));
         continue;
       }
-      if (onSegment(t, holes[h]))
+      if (const int side = sideOf(t, holes[h]); side >= 0)
+      {
         out.seedsOnSegments.push_back(static_cast<int>(h));
+        t = side;
+      }
       removed[component[t]] = 1;
     }
   }
@@ -383,10 +439,13 @@ Carving carveDomain(const Array<Point>& P, const Array<Triangle>& tris,
     grid.emplace(P, tris, component, removed);
   for (std::size_t k = 0; k < regionSeeds.size(); ++k)
   {
-    const int t = locate(regionSeeds[k]);
-    out.seedRegion.push_back(t < 0 ? -1 : t);
-    if (t >= 0 && onSegment(t, regionSeeds[k]))
+    int t = locate(regionSeeds[k]);
+    if (const int side = t >= 0 ? sideOf(t, regionSeeds[k]) : -1; side >= 0)
+    {
       out.regionSeedsOnSegments.push_back(static_cast<int>(k));
+      t = side;
+    }
+    out.seedRegion.push_back(t);
   }
   // Regions are numbered in the order of their smallest triangle index: a
   // component's root comes before its other triangles, which take its id.

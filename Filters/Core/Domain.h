@@ -33,16 +33,19 @@ struct Carving
   std::size_t regions = 0;
   Array<int> unusedHoles; ///< hole seeds outside the remaining triangles
   /// Hole seeds on a segment or at a segment's end (within rounding) where
-  /// regions not yet removed meet: the region removed is the one on the side
-  /// their triangle search met first. Seeds on the domain's boundary or on a
-  /// dangling segment are not listed: only one region is there to take.
+  /// regions not yet removed meet. The region taken is the same in every mesh
+  /// of the input: the one the direction +x from the seed enters, the one
+  /// above where a segment runs along +x (at a segment's end, the first
+  /// counter-clockwise from +x if +x leads out of the domain).
+  /// Seeds on the domain's boundary or on a dangling segment are not listed:
+  /// only one region is there to take.
   Array<int> seedsOnSegments;
   /// Per region seed (carveDomain's regionSeeds): its region, or -1 if it lies
   /// outside the remaining triangles.
   Array<int> seedRegion;
   /// Region seeds on a segment or at a segment's end (within rounding) where
-  /// two regions meet: the region they give their attribute to is the first
-  /// their search met.
+  /// two regions meet: they give their attribute to a region chosen as for
+  /// seedsOnSegments.
   Array<int> regionSeedsOnSegments;
   /// Removing the exterior left no triangle (before any hole): the segments'
   /// cycles enclose no area (collinear segments over each other).

@@ -1141,9 +1141,11 @@ void Mesher::meshRounds(Work& w)
       const LongEdges split = splitLongEdges(g.points, g.origin, c.triangles, carve.regionId,
         c.constrainedEdges, regionMaxEdge, st.predictedMaxAngleDeg, run);
       st.longEdgesSplit = split.split;
-      // A region seed on a segment may fall on the other side in this round
-      // (the meshes differ), so that a region not refined takes the area:
-      // refine where this round's limited regions lie too, mesh again.
+      // A region seed on a segment goes to the same side in every round
+      // (carveDomain's rule), but one within rounding of a segment may be
+      // judged on it in one round and beside it in another, so that a region
+      // not refined takes the area: refine where this round's limited
+      // regions lie too, mesh again.
       if (split.remaining > 0 && !regionBoxes.empty() && regionRounds < 2)
       {
         ++regionRounds;
@@ -1179,8 +1181,8 @@ void Mesher::meshRounds(Work& w)
         " hole point(s) lie on a segment or at its end, e.g. hole " +
         std::to_string(carve.seedsOnSegments.front()) + " at " +
         formatPoint(input.holes[carve.seedsOnSegments.front()], options.pointFormat) +
-        ": the region on one side of it was removed, which side is not defined; move the "
-        "point into the hole");
+        ": the region the direction +x from it enters (above, where a segment runs along +x) "
+        "was removed; move the point into the hole to choose");
     run.phase("domain", 0.96, 1.0); // the output arrays
     buildOutput(w, g, c, carve, overlay, edges, domain);
     if (options.keepEdges) // points splitting long edges are on none of them
@@ -1274,9 +1276,9 @@ void Mesher::warnAboutRegionSeeds(const Carving& carve)
     res.warnings.push_back(std::to_string(carve.regionSeedsOnSegments.size()) +
       " region point(s) lie on a segment or at its end, e.g. region " + std::to_string(k) + " at " +
       formatPoint(regions[k].seed, options.pointFormat) +
-      ": the region on one side of it takes its attribute" +
-      (options.regionAreas ? " and area" : "") +
-      ", which side is not defined; move the point into its region");
+      ": the region the direction +x from it enters (above, where a segment runs along +x) "
+      "takes its attribute" +
+      (options.regionAreas ? " and area" : "") + "; move the point into its region to choose");
   }
   if (limits > 0 && !options.regionAreas)
     res.warnings.push_back(std::to_string(limits) +
