@@ -6,6 +6,8 @@
 #include "vtkDataArray.h"
 #include "vtkDataSetAttributes.h"
 
+#include "OverlayStitchGather.h"
+
 #include <algorithm>
 #include <cstring>
 
@@ -33,7 +35,10 @@ std::vector<vtkAbstractArray*> OverlayStitchCarriedArrays(vtkDataSetAttributes* 
     const char* name = source->GetName();
     const std::string array = std::string("The input's ") + kind + " data array " +
       (name ? name : "(unnamed)") + " is not carried";
-    if (name && std::strcmp(name, vtkDataSetAttributes::GhostArrayName()) == 0)
+    if (name &&
+      (std::strcmp(name, vtkDataSetAttributes::GhostArrayName()) == 0 ||
+        std::strcmp(name, OverlayStitchBlockIdName) == 0 ||
+        std::strcmp(name, OverlayStitchBlockCellIdName) == 0))
     {
       continue;
     }

@@ -23,7 +23,8 @@ bool OverlayStitchIsMarker(vtkAbstractArray* array, const char* name);
 
 /// The arrays of in (data on `items` points or cells: kind "point" or
 /// "cell") that may go to an output (named for the warnings, "Mesh" or
-/// "Edges"): not the ghost array, since the outputs are one piece; not one
+/// "Edges"): not the ghost array, since the outputs are one piece, nor the
+/// block ids a composite input's cells are given (OverlayStitchGather.h); not one
 /// named like one of reserved, the output's own, nor one with fewer tuples
 /// than items, each of those two with a warning.
 std::vector<vtkAbstractArray*> OverlayStitchCarriedArrays(vtkDataSetAttributes* in, vtkIdType items,

@@ -14,6 +14,7 @@
 
 #include "Mesher.h"
 #include "OverlayStitchArrays.h"
+#include "OverlayStitchGather.h"
 #include "OverlayStitchMarkers.h"
 #include "Predicates.h"
 #include "Pslg.h"
@@ -47,6 +48,32 @@ vtkSmartPointer<vtkAbstractArray> NewTarget(vtkAbstractArray* source, vtkIdType 
   return target;
 }
 
+/// For a composite input, whose cells carry their block and their id in it
+/// (OverlayStitchGather.h): cellIds, the combined input's cells, become ids in
+/// their blocks, and out gets "InputBlockId" (the flat index, -1 where no
+/// cell is named).
+void InBlocks(vtkCellData* in, vtkIdTypeArray* cellIds, vtkCellData* out)
+{
+  auto* block = vtkIdTypeArray::SafeDownCast(in->GetAbstractArray(OverlayStitchBlockIdName));
+  auto* inBlock = vtkIdTypeArray::SafeDownCast(in->GetAbstractArray(OverlayStitchBlockCellIdName));
+  if (!block || !inBlock)
+  {
+    return;
+  }
+  const vtkIdType n = cellIds->GetNumberOfTuples();
+  vtkNew<vtkIdTypeArray> blockIds;
+  blockIds->SetName("InputBlockId");
+  blockIds->SetNumberOfTuples(n);
+  vtkIdType* cellOf = cellIds->GetPointer(0);
+  for (vtkIdType c = 0; c < n; ++c)
+  {
+    const vtkIdType cell = cellOf[c];
+    blockIds->SetValue(c, cell >= 0 ? block->GetValue(cell) : -1);
+    cellOf[c] = cell >= 0 ? inBlock->GetValue(cell) : -1;
+  }
+  out->AddArray(blockIds);
+}
+
 /// Adds cellIds ("InputCellId": per output cell its input cell, or -1) to out,
 /// and a copy of each input array along it: the output cells listed in taking
 /// (those with an input cell) take their cell's tuple. carried lists the
@@ -76,6 +103,7 @@ bool Carry(vtkCellData* in, vtkIdType inputCells, vtkIdTypeArray* cellIds,
       target->SetTuple(c, cellOf[c], source);
     }
   }
+  InBlocks(in, cellIds, out);
   out->AddArray(cellIds);
   for (auto& carriedArray : carried)
   {

@@ -11,6 +11,7 @@
 #include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -224,7 +225,29 @@ void NoteArraysLeftOut(
     }
   }
 }
+
+/// A shallow copy of block whose cells carry its flat index and their ids.
+vtkSmartPointer<vtkPolyData> WithBlockIds(vtkPolyData* block, unsigned int flatIndex)
+{
+  auto copy = vtkSmartPointer<vtkPolyData>::New();
+  copy->ShallowCopy(block);
+  const vtkIdType n = block->GetNumberOfCells();
+  vtkNew<vtkIdTypeArray> blockIds;
+  blockIds->SetName(OverlayStitchBlockIdName);
+  blockIds->SetNumberOfTuples(n);
+  blockIds->FillValue(static_cast<vtkIdType>(flatIndex));
+  vtkNew<vtkIdTypeArray> cellIds;
+  cellIds->SetName(OverlayStitchBlockCellIdName);
+  cellIds->SetNumberOfTuples(n);
+  std::iota(cellIds->GetPointer(0), cellIds->GetPointer(0) + n, vtkIdType(0));
+  copy->GetCellData()->AddArray(blockIds);
+  copy->GetCellData()->AddArray(cellIds);
+  return copy;
+}
 } // namespace
+
+const char* const OverlayStitchBlockIdName = "vtkOverlayStitchBlockId";
+const char* const OverlayStitchBlockCellIdName = "vtkOverlayStitchBlockCellId";
 
 //------------------------------------------------------------------------------
 vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
@@ -577,9 +600,9 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombineBlocks(vtkCompositeDataSet* inp
   for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
   {
     vtkDataObject* leaf = it->GetCurrentDataObject();
-    if (vtkPolyData::SafeDownCast(leaf))
+    if (auto* polyData = vtkPolyData::SafeDownCast(leaf))
     {
-      blocks.emplace_back(leaf);
+      blocks.emplace_back(WithBlockIds(polyData, it->GetCurrentFlatIndex()));
     }
     else if (vtkDataSet* other = vtkDataSet::SafeDownCast(leaf))
     {
@@ -591,7 +614,7 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombineBlocks(vtkCompositeDataSet* inp
   }
   if (blocks.size() == 1)
   {
-    return vtkPolyData::SafeDownCast(blocks.front());
+    return vtkPolyData::SafeDownCast(blocks.front()); // already a copy
   }
   return OverlayStitchCombinePieces(blocks, summary, "polydata block");
 }

@@ -1128,8 +1128,8 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   if (this->PassCellData)
   {
     OverlayStitchPassPolygonData(input, pslg, result,
-      { "MinAngle", "MaxAngle", "RegionId", "RegionAttribute", "InputCellId" }, mesh->GetCellData(),
-      outputSteps(0.945, 0.95), warnings);
+      { "MinAngle", "MaxAngle", "RegionId", "RegionAttribute", "InputCellId", "InputBlockId" },
+      mesh->GetCellData(), outputSteps(0.945, 0.95), warnings);
     warn();
     if (aborted())
     {
@@ -1157,7 +1157,8 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
     if (this->PassCellData && !AbortRequested(this))
     {
       OverlayStitchPassCellData(input->GetCellData(), input->GetNumberOfCells(), pslg, result,
-        segmentCells, { "Overlay", "Kept", "Discarded", "Input", "EdgeClass", "InputCellId" },
+        segmentCells,
+        { "Overlay", "Kept", "Discarded", "Input", "EdgeClass", "InputCellId", "InputBlockId" },
         edges->GetCellData(), outputSteps(0.97, 0.98), warnings);
       warn();
     }

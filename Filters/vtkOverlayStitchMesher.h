@@ -234,7 +234,8 @@ public:
    * files: a subsegment's nonzero marker, else 1 on the mesh's boundary
    * (holes' included), else 0.
    * Where segments of several cells overlap, a subsegment takes the first
-   * cell's.
+   * cell's. For a composite input, InputCellId is the cell's id in its block
+   * and "InputBlockId" the block's flat index (-1 where no cell is named).
    */
   vtkSetMacro(PassCellData, vtkTypeBool);
   vtkGetMacro(PassCellData, vtkTypeBool);

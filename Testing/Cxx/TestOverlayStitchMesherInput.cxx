@@ -1773,6 +1773,32 @@ int TestPolygonData()
   h.Messages->Print("polygon data, a cell array in one block only");
   Check(h.NoError() && h.Messages->HasWarning({ "Not carried", "cell data Tag" }),
     "polygon data: a cell array missing from a block is not carried, with a warning naming it");
+  // Each output cell names its block (the flat index: 1 and 2 under the
+  // root) and its cell in that block, on the Mesh and on the Edges.
+  for (const int port : { 0, 1 })
+  {
+    vtkPolyData* out = vtkPolyData::SafeDownCast(h.Mesher->GetOutputDataObject(port));
+    auto* block = vtkIdTypeArray::SafeDownCast(out->GetCellData()->GetArray("InputBlockId"));
+    auto* cell = vtkIdTypeArray::SafeDownCast(out->GetCellData()->GetArray("InputCellId"));
+    vtkIdType named = 0, wrong = block && cell ? 0 : 1;
+    for (vtkIdType c = 0; block && cell && c < out->GetNumberOfCells(); ++c)
+    {
+      double bounds[6];
+      out->GetCellBounds(c, bounds);
+      const vtkIdType expected = bounds[1] <= 1 ? 1 : bounds[0] >= 2 ? 2 : -1;
+      named += block->GetValue(c) >= 0;
+      // Triangles and input subsegments lie in their block's triangle; other
+      // edges name none.
+      wrong += block->GetValue(c) >= 0 ? block->GetValue(c) != expected || cell->GetValue(c) != 0
+                                       : cell->GetValue(c) != -1;
+    }
+    Check(wrong == 0 && named >= (port ? 6 : 2) &&
+        !out->GetCellData()->GetArray("vtkOverlayStitchBlockId") &&
+        !out->GetCellData()->GetArray("vtkOverlayStitchBlockCellId"),
+      std::string("polygon data: a composite input's ") + (port ? "Edges" : "Mesh") +
+        " name each cell's block (InputBlockId) and its cell there (InputCellId); " +
+        std::to_string(named) + " named, " + std::to_string(wrong) + " wrong");
+  }
 
   // Lines only: no polygon, nothing on the mesh.
   input->SetPolys(nullptr);
