@@ -113,6 +113,10 @@ def main():
         info = OutputPort(mesher, port).GetDataInformation()
         result["outputs"].append(
             {"cells": info.GetNumberOfCells(), "points": info.GetNumberOfPoints()})
+    # A composite input's Edges name each input subsegment's block.
+    blocks = OutputPort(mesher, 1).GetDataInformation().GetCellDataInformation() \
+        .GetArrayInformation("InputBlockId")
+    result["block_ids"] = list(blocks.GetComponentRange(0)) if blocks else None
     for name in ("InputPoints", "InputSegments", "DuplicatePointsMerged",
                  "DuplicateSegmentsMerged", "ZeroLengthSegmentsDropped", "OutputTriangles",
                  "OutputVertices", "Regions", "MinAngleDeg", "MaxAngleDeg", "SecondsTotal"):

@@ -184,6 +184,10 @@ class Runner:
                       "%s: the run that failed on rank 0 left every output empty" % tag)
             self.compare(tag, serial, parallel, ranks, input_cells, distribute,
                          spread=distribute != "none" or kind in ("pvtp", "vtm"))
+            if kind == "vtm":  # 3 blocks, flat indices 1 to 3; -1 off the segments
+                check(parallel["block_ids"] == [-1, 3],
+                      "%s: the Edges name the input blocks -1..3 (InputBlockId), got %s" % (
+                          tag, parallel["block_ids"]))
             self.validate(vtp, parallel)
             figures[tag] = parallel
         return figures
