@@ -6,6 +6,8 @@
 
 #include "OverlayStitchArrays.h"
 
+#include <algorithm>
+
 std::vector<int> OverlayStitchSegmentMarkers(
   vtkAbstractArray* segmentMarkers, const std::vector<vtkIdType>& segmentCells)
 {
@@ -15,6 +17,12 @@ std::vector<int> OverlayStitchSegmentMarkers(
     return markers;
   }
   auto* data = vtkDataArray::SafeDownCast(segmentMarkers);
+  const vtkIdType tuples = data->GetNumberOfTuples();
+  if (std::any_of(segmentCells.begin(), segmentCells.end(),
+        [tuples](vtkIdType cell) { return cell < 0 || cell >= tuples; }))
+  {
+    return markers; // too short for the cells (the cell data carrier warns)
+  }
   markers.reserve(segmentCells.size());
   for (const vtkIdType cell : segmentCells)
   {

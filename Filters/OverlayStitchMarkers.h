@@ -14,8 +14,8 @@ class vtkAbstractArray;
 
 /// Per Pslg segment, its marker in segmentMarkers (the input's cell array
 /// "SegmentMarker", indexed by segmentCells, each segment's input cell), or
-/// none (every segment 0) when that is null or not Triangle's (one integer
-/// per cell).
+/// none (every segment 0) when that is null, not Triangle's (one integer
+/// per cell), or shorter than the cells.
 std::vector<int> OverlayStitchSegmentMarkers(
   vtkAbstractArray* segmentMarkers, const std::vector<vtkIdType>& segmentCells);
 

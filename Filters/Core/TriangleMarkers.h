@@ -27,7 +27,7 @@ class MeshEdges
 {
 public:
   /// Boundary keeps only the boundary's edges (the sort takes 24 bytes per
-  /// triangle either way; All keeps 12 and Boundary few).
+  /// triangle either way, which All keeps and Boundary gives back).
   enum class Keep
   {
     All,
@@ -59,6 +59,8 @@ public:
   /// per Pslg segment, or empty (every segment 0). Segments given twice
   /// share a nonzero marker, as Triangle overwrites a 0 with the other's.
   TriangleMarkers(const Pslg& pslg, const Result& result, std::vector<int> segmentMarkers);
+  /// It keeps a reference to result, which must outlive it.
+  TriangleMarkers(const Pslg&, Result&&, std::vector<int>) = delete;
 
   /// Mesh vertex v's marker, own being its own marker (0: none).
   int vertex(int v, int own) const;

@@ -1428,6 +1428,20 @@ int TestPointData()
     "boundary and 0 inside, the inner segment's " +
       std::to_string(innerPoints) + " new points included (" + std::to_string(wrongUnmarked) +
       " wrong)");
+  // A SegmentMarker shorter than the cells is none (and not read past its end).
+  std::vector<int> before(markers ? markers->GetPointer(0) : nullptr,
+    markers ? markers->GetPointer(0) + markers->GetNumberOfTuples() : nullptr);
+  vtkNew<vtkIntArray> shortMarkers;
+  shortMarkers->SetName("SegmentMarker");
+  shortMarkers->InsertNextValue(5);
+  unmarked->GetCellData()->AddArray(shortMarkers);
+  mesh = h.Run(unmarked, "point markers with a SegmentMarker shorter than the cells");
+  markers = vtkIntArray::SafeDownCast(mesh->GetPointData()->GetArray("PointMarker"));
+  Check(markers &&
+      std::equal(before.begin(), before.end(), markers->GetPointer(0),
+        markers->GetPointer(0) + markers->GetNumberOfTuples()) &&
+      h.Messages->HasWarning({ "SegmentMarker is not carried: it has 1 tuples" }),
+    "point data: a SegmentMarker shorter than the cells is no segment marker, with a warning");
 
   // An input array named like the mesh's own is left out, with a warning.
   vtkNew<vtkDoubleArray> clash;

@@ -2,6 +2,7 @@
 // independent validator as the oracle. Coordinates come mostly from a small
 // integer grid so duplicates, collinear points, T-junctions, overlaps and
 // crossings are frequent; some are raw doubles to reach extreme values.
+#include "Geometry.h"
 #include "Interpolation.h"
 #include "Mesher.h"
 #include "Validate.h"
@@ -59,10 +60,10 @@ void fail(const char* what, const std::string& detail)
 
 /// The weights that carry input point data to the mesh (Interpolation.h):
 /// every vertex once, convex terms on input points; a linear field (x/extent
-/// + 2 y/extent, a function of the input's scale) reproduced within the
-/// merge tolerance and rounding where every vertex lies within the input's
-/// hull: not with the box domain, chosen or fallen back to (seen as vertices
-/// beyond the input's bounds).
+/// + 2 y/extent, a function of the input's scale) reproduced to rounding
+/// (and the distance a merge tolerance moves a segment from its vertices)
+/// where every vertex lies within the input's hull: not with the box domain,
+/// chosen or fallen back to (seen as vertices beyond the input's bounds).
 void checkInterpolation(
   const osm::Pslg& p, const osm::Result& r, const osm::Options& o, double extent)
 {
@@ -93,13 +94,22 @@ void checkInterpolation(
   const double aspect =
     std::fmax(x1 - x0, y1 - y0) / std::fmax(std::fmin(x1 - x0, y1 - y0), 1e-300);
   const double spread = magnitude / std::fmax(closest, 1e-300);
-  // A merge tolerance moves a segment's ends onto earlier points up to it
-  // away (Clean.h), then bends the moved segment through points up to it off
-  // the moved line (the validator checks that): a vertex on it lies up to
-  // twice the tolerance off its input segment and takes the value at its
-  // nearest point there, off by f's gradient (√5 scale) times that distance.
-  const double allowed = 2 * std::sqrt(5.0) * scale * o.mergeTolerance * (1 + 1e-9) +
-    (1e-9 + 1e-13 * (aspect + spread)) * scale * magnitude;
+  const double rounding = (1e-9 + 1e-13 * (aspect + spread)) * scale * magnitude;
+  // Each vertex by its kind: an input vertex takes its own value, exactly; a
+  // vertex on a segment the value at its nearest point there (a merge
+  // tolerance may move and bend the segment away from it), off by f's
+  // gradient (√5 scale) times its distance to the segment; any other one a
+  // convex combination of those within their hull, off by at most their
+  // largest error.
+  double knownError = 0;
+  std::vector<double> otherError(r.mesh.vertices.size(), -1);
+  auto check = [&](double error, double allowed, const osm::VertexTerms& t, const char* kind) {
+    if (linear && error > allowed)
+      fail("interpolation",
+        "a linear field off by " + std::to_string(error) + " (allowed " + std::to_string(allowed) +
+          ") at vertex " + std::to_string(t.vertex) + ", " + kind + " (origin " +
+          std::to_string(static_cast<int>(r.vertexOrigin[t.vertex])) + ")");
+  };
   osm::visitInputWeights(p, r, [&](const osm::VertexTerms& t) {
     if (t.vertex >= seen.size() || seen[t.vertex]++)
       fail(
@@ -116,14 +126,29 @@ void checkInterpolation(
     if (t.count == 0 || std::abs(sum - 1) > 1e-9)
       fail("interpolation",
         "weights summing to " + std::to_string(sum) + " at vertex " + std::to_string(t.vertex));
-    const double error = std::abs(value - f(r.mesh.vertices[t.vertex]));
-    if (linear && error > allowed)
-      fail("interpolation",
-        "a linear field off by " + std::to_string(error) + " at vertex " +
-          std::to_string(t.vertex) + " (origin " +
-          std::to_string(static_cast<int>(r.vertexOrigin[t.vertex])) + ")");
+    const osm::Point& v = r.mesh.vertices[t.vertex];
+    const double error = std::abs(value - f(v));
+    if (t.inputPoint >= 0)
+      check(error, rounding, t, "an input vertex");
+    else if (t.segment >= 0)
+    {
+      const osm::Segment& e = p.segments[static_cast<std::size_t>(t.segment)];
+      const double off = osm::distanceToSegment(v, p.points[e[0]], p.points[e[1]]);
+      check(error, std::sqrt(5.0) * scale * off * (1 + 1e-9) + rounding, t, "on a segment");
+    }
+    else
+      otherError[t.vertex] = error;
+    if (t.inputPoint >= 0 || t.segment >= 0)
+      knownError = std::fmax(knownError, error);
     return true;
   });
+  for (std::size_t v = 0; v < otherError.size(); ++v)
+    if (otherError[v] >= 0)
+    {
+      osm::VertexTerms t;
+      t.vertex = v;
+      check(otherError[v], knownError + rounding, t, "neither an input vertex nor on a segment");
+    }
   if (std::count(seen.begin(), seen.end(), 1) != static_cast<long>(seen.size()))
     fail("interpolation", "not every vertex visited");
 }
