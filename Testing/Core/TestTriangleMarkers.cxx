@@ -102,6 +102,51 @@ TEST(TriangleMarkers, WithoutSegmentMarkersTheBoundaryIsOne)
     EXPECT_EQ(markers.vertex(static_cast<int>(v), 0), onSquare(m.result.mesh.vertices[v]) ? 1 : 0);
 }
 
+TEST(TriangleMarkers, AHolesBoundaryIsBoundary)
+{
+  // The square of Marked with a hole (0.6..0.8)² whose sides are marked 0
+  // and 4, 0, 0: its sides are boundary, 1 where unmarked.
+  Marked m;
+  const int first = static_cast<int>(m.pslg.points.size());
+  m.pslg.points.insert(
+    m.pslg.points.end(), { { 0.6, 0.6 }, { 0.8, 0.6 }, { 0.8, 0.8 }, { 0.6, 0.8 } });
+  for (int k = 0; k < 4; ++k)
+    m.pslg.segments.push_back({ first + k, first + (k + 1) % 4 });
+  m.markers.insert(m.markers.end(), { 4, 0, 0, 0 });
+  m.pslg.holes = { { 0.7, 0.7 } };
+  Options o;
+  o.maxEdgeLength = 0.1;
+  m.result = mesh(m.pslg, o);
+  ASSERT_TRUE(m.result.ok) << m.result.error;
+  const TriangleMarkers markers(m.pslg, m.result, m.markers);
+  auto onHole = [](const Point& p) {
+    const bool x = p.x >= 0.6 && p.x <= 0.8, y = p.y >= 0.6 && p.y <= 0.8;
+    return (x && (p.y == 0.6 || p.y == 0.8)) || (y && (p.x == 0.6 || p.x == 0.8));
+  };
+  std::size_t holeVertices = 0, holeEdges = 0;
+  for (std::size_t v = 0; v < m.result.mesh.vertices.size(); ++v)
+  {
+    const Point& p = m.result.mesh.vertices[v];
+    if (!onHole(p))
+      continue;
+    ++holeVertices;
+    EXPECT_EQ(markers.vertex(static_cast<int>(v), 0), p.y == 0.6 ? 4 : 1)
+      << "(" << p.x << ", " << p.y << ")";
+  }
+  for (std::size_t e = 0; e < m.result.edges.size(); ++e)
+  {
+    const Edge& edge = m.result.edges[e];
+    const Point &a = m.result.edgeVertices[edge.a], &b = m.result.edgeVertices[edge.b];
+    if (!(edge.flags & EdgeInput) || !onHole(a) || !onHole(b) || (a.x != b.x && a.y != b.y))
+      continue;
+    ++holeEdges;
+    EXPECT_EQ(markers.edge(e), a.y == 0.6 && b.y == 0.6 ? 4 : 1)
+      << "(" << a.x << ", " << a.y << ") - (" << b.x << ", " << b.y << ")";
+  }
+  EXPECT_GE(holeVertices, 8u);
+  EXPECT_GE(holeEdges, 8u);
+}
+
 TEST(MeshEdges, EveryEdgeOnceAndTheBoundaryThoseOfOneTriangle)
 {
   const Marked m;
