@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 #include <numeric>
 #include <optional>
 
@@ -272,12 +271,6 @@ bool isConstrained(const KnownAdjacency& a, int t, int i)
   return false;
 }
 
-/// The index of vertex v among triangle t's corners.
-int cornerOf(const Triangle& t, int v)
-{
-  return t[0] == v ? 0 : t[1] == v ? 1 : 2;
-}
-
 /// The triangles not removed around vertex v of triangle t, each once:
 /// rotating one way through the neighbours across v's edges, and the other
 /// way from t if the first stops at the box.
@@ -318,8 +311,7 @@ int fanTriangleAtPlusX(
   const Array<Point>& P, const Array<Triangle>& tris, const Array<int>& fan, int v)
 {
   const Point& o = P[v];
-  // Exactly +x of o, however large o.x: only the direction matters.
-  const Point east{ std::nextafter(o.x, std::numeric_limits<double>::infinity()), o.y };
+  const Point east = justRightOf(o);
   auto firstEdgeEnd = [&](int u) { return P[tris[u][(cornerOf(tris[u], v) + 1) % 3]]; };
   int first = -1;
   for (const int u : fan)
@@ -337,8 +329,7 @@ int fanTriangleAtPlusX(
 /// runs along it with its left above (exactly).
 bool plusXEntersLeft(const Point& b, const Point& c)
 {
-  const Point east{ std::nextafter(b.x, std::numeric_limits<double>::infinity()), b.y };
-  const double side = orient2d(b, c, east);
+  const double side = orient2d(b, c, justRightOf(b));
   return side != 0 ? side > 0 : c.x > b.x;
 }
 

@@ -152,6 +152,19 @@ Bounds boundsOf(const Points& points)
 using Segment = std::array<int, 2>;
 using Triangle = std::array<int, 3>;
 
+/// The index of vertex v among triangle t's corners, or -1.
+inline int cornerOf(const Triangle& t, int v)
+{
+  return t[0] == v ? 0 : t[1] == v ? 1 : t[2] == v ? 2 : -1;
+}
+
+/// A point exactly in the direction +x from p (one ulp to its right), for
+/// exact orientation tests against that direction however large p.x is.
+inline Point justRightOf(const Point& p)
+{
+  return { std::nextafter(p.x, std::numeric_limits<double>::infinity()), p.y };
+}
+
 } // namespace osm
 
 #endif

@@ -97,11 +97,6 @@ int OverlayEdges::twin(int c, int i) const
 namespace
 {
 
-int localIndex(const Triangle& t, int v)
-{
-  return t[0] == v ? 0 : t[1] == v ? 1 : t[2] == v ? 2 : -1;
-}
-
 double cross(double ax, double ay, double bx, double by)
 {
   return ax * by - ay * bx;
@@ -174,7 +169,7 @@ int Walker::firstStep(int cur, int b, int& l, int& r, int& tri)
   int t = ov.vtri[cur];
   for (std::size_t k = 0; k <= ov.tris.size(); ++k)
   {
-    const int i = localIndex(ov.tris[t], cur);
+    const int i = cornerOf(ov.tris[t], cur);
     const int u = ov.tris[t][(i + 1) % 3];
     if (ahead(C, P[u], B) &&
       onLineWithinRounding(orient2d(A, B, P[u]), P[u], std::sqrt(dist2(C, P[u])), segmentLength))
@@ -190,7 +185,7 @@ int Walker::firstStep(int cur, int b, int& l, int& r, int& tri)
   t = ov.vtri[cur];
   for (std::size_t k = 0; k <= ov.tris.size(); ++k)
   {
-    const int i = localIndex(ov.tris[t], cur);
+    const int i = cornerOf(ov.tris[t], cur);
     const int u = ov.tris[t][(i + 1) % 3], w = ov.tris[t][(i + 2) % 3];
     if (orientSign(C, P[u], B) > 0 && orientSign(C, P[w], B) < 0)
     {
@@ -275,7 +270,7 @@ void Walker::walk(int segment, int a, int b)
     {
       // Cross triangle after triangle until a vertex lies on the segment. The
       // edge to cross next is the one opposite the vertex it does not touch.
-      int across = localIndex(ov.tris[t], cur);
+      int across = cornerOf(ov.tris[t], cur);
       triPiece.push_back({ t, piece });
       for (std::size_t guard = 0; next < 0; ++guard)
       {
@@ -286,7 +281,7 @@ void Walker::walk(int segment, int a, int b)
         if (t < 0)
           throw Stop{ "internal error: a segment left the overlay while stitching" };
         triPiece.push_back({ t, piece });
-        const int il = localIndex(ov.tris[t], l), ir = localIndex(ov.tris[t], r);
+        const int il = cornerOf(ov.tris[t], l), ir = cornerOf(ov.tris[t], r);
         const int x = ov.tris[t][3 - il - ir];
         const double o = orient2d(A, B, P[x]);
         const double local = std::sqrt(std::max(dist2(P[x], P[l]), dist2(P[x], P[r])));
