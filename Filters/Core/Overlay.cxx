@@ -167,7 +167,7 @@ private:
   /// cavityKnown: cavity and waiting already hold p's cavity and its points.
   bool insertVertex(const Point& p, int start, int inputIndex, bool cavityKnown = false);
   void distribute(int v, const Array<int>& fan);
-  int findInFan(const Point& q, int v, const Array<int>& fan) const;
+  int findInFan(const Point& q, int v, const Array<int>& fan, std::size_t& hint) const;
   void countSteiner();
   double pointsForMaxEdge() const;
   /// The refinement's progress in [0, 1], never decreasing between calls.
@@ -547,18 +547,30 @@ bool Refiner::insertVertex(const Point& p, int start, int inputIndex, bool cavit
   return true;
 }
 
-int Refiner::findInFan(const Point& q, int v, const Array<int>& fan) const
+int Refiner::findInFan(const Point& q, int v, const Array<int>& fan, std::size_t& hint) const
 {
   // q lies in the cavity, which the fan covers, star-shaped around v: q is in
   // the closed fan triangle (a, b, v) iff it lies in the closed wedge from the
-  // ray v->a to the ray v->b. Consecutive fan triangles share a ray, so each
-  // ray is tested once: about one orientation per triangle instead of three.
-  // (q lies strictly left of v->a iff orient(v, q, a) < 0.)
+  // ray v->a to the ray v->b. (q lies strictly left of v->a iff
+  // orient(v, q, a) < 0.)
   const Point& c = mesh.points[v];
+  // Waiting points come in Hilbert order, so most lie in the wedge of the
+  // one before: try it first. Strictly inside it, q is in no other closed
+  // wedge (a star's open wedges are disjoint, each under 180 degrees), so
+  // the scan below would find this one too.
+  if (hint < fan.size())
+  {
+    const Triangulation::Slot& s = mesh.tri[fan[hint]];
+    if (orient2d(c, q, mesh.points[s.v[0]]) < 0 && orient2d(c, q, mesh.points[s.v[1]]) > 0)
+      return fan[hint];
+  }
+  // Consecutive fan triangles share a ray, so each ray is tested once: about
+  // one orientation per triangle instead of three.
   int previousB = -1;
   double previousSide = 0;
-  for (int u : fan)
+  for (std::size_t k = 0; k < fan.size(); ++k)
   {
+    const int u = fan[k];
     const int a = mesh.tri[u].v[0], b = mesh.tri[u].v[1];
     const double sideA = a == previousB ? previousSide : orient2d(c, q, mesh.points[a]);
     previousB = -1;
@@ -566,7 +578,10 @@ int Refiner::findInFan(const Point& q, int v, const Array<int>& fan) const
       continue;
     const double sideB = orient2d(c, q, mesh.points[b]);
     if (sideB >= 0)
+    {
+      hint = k;
       return u;
+    }
     previousB = b;
     previousSide = sideB;
   }
@@ -576,10 +591,11 @@ int Refiner::findInFan(const Point& q, int v, const Array<int>& fan) const
 void Refiner::distribute(int v, const Array<int>& fan)
 {
   // Reverse order keeps each bucket in increasing point order: deterministic.
+  std::size_t hint = 0;
   for (auto it = waiting.rbegin(); it != waiting.rend(); ++it)
   {
     const int i = *it;
-    int u = findInFan(input[i], v, fan);
+    int u = findInFan(input[i], v, fan, hint);
     if (u < 0)
       throw Stop{ "internal error: lost input point " + std::to_string(original[i]) +
         " during refinement" };
