@@ -24,6 +24,26 @@ bool OverlayStitchIsMarker(vtkAbstractArray* array, const char* name)
     !OverlayStitchIsFloating(array);
 }
 
+bool OverlayStitchIsBlockIdArray(const char* name)
+{
+  return name &&
+    (std::strcmp(name, OverlayStitchBlockIdName) == 0 ||
+      std::strcmp(name, OverlayStitchBlockCellIdName) == 0 ||
+      std::strcmp(name, OverlayStitchBlockPointIdName) == 0);
+}
+
+bool OverlayStitchHasUserArrays(vtkDataSetAttributes* in)
+{
+  for (int i = 0; in && i < in->GetNumberOfArrays(); ++i)
+  {
+    if (!OverlayStitchIsBlockIdArray(in->GetArrayName(i)))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
 std::vector<vtkAbstractArray*> OverlayStitchCarriedArrays(vtkDataSetAttributes* in, vtkIdType items,
   const char* kind, const char* output, const std::vector<std::string>& reserved,
   std::vector<std::string>& warnings)
@@ -35,10 +55,8 @@ std::vector<vtkAbstractArray*> OverlayStitchCarriedArrays(vtkDataSetAttributes* 
     const char* name = source->GetName();
     const std::string array = std::string("The input's ") + kind + " data array " +
       (name ? name : "(unnamed)") + " is not carried";
-    if (name &&
-      (std::strcmp(name, vtkDataSetAttributes::GhostArrayName()) == 0 ||
-        std::strcmp(name, OverlayStitchBlockIdName) == 0 ||
-        std::strcmp(name, OverlayStitchBlockCellIdName) == 0))
+    if ((name && std::strcmp(name, vtkDataSetAttributes::GhostArrayName()) == 0) ||
+      OverlayStitchIsBlockIdArray(name))
     {
       continue;
     }

@@ -21,10 +21,17 @@ bool OverlayStitchIsFloating(vtkAbstractArray* array);
 /// Whether an array is Triangle's markers by that name: one integer per tuple.
 bool OverlayStitchIsMarker(vtkAbstractArray* array, const char* name);
 
+/// Whether an array is one of the block ids a composite input's cells and
+/// points are given (OverlayStitchGather.h), never the user's.
+bool OverlayStitchIsBlockIdArray(const char* name);
+
+/// Whether in has arrays of the user's: any but the block ids.
+bool OverlayStitchHasUserArrays(vtkDataSetAttributes* in);
+
 /// The arrays of in (data on `items` points or cells: kind "point" or
 /// "cell") that may go to an output (named for the warnings, "Mesh" or
 /// "Edges"): not the ghost array, since the outputs are one piece, nor the
-/// block ids a composite input's cells are given (OverlayStitchGather.h); not one
+/// block ids a composite input's cells and points are given; not one
 /// named like one of reserved, the output's own, nor one with fewer tuples
 /// than items, each of those two with a warning.
 std::vector<vtkAbstractArray*> OverlayStitchCarriedArrays(vtkDataSetAttributes* in, vtkIdType items,

@@ -226,28 +226,42 @@ void NoteArraysLeftOut(
   }
 }
 
-/// A shallow copy of block whose cells carry its flat index and their ids.
+/// An id array: value everywhere, or (value < 0) each tuple's own index.
+vtkSmartPointer<vtkIdTypeArray> IdArray(const char* name, vtkIdType n, vtkIdType value)
+{
+  auto ids = vtkSmartPointer<vtkIdTypeArray>::New();
+  ids->SetName(name);
+  ids->SetNumberOfTuples(n);
+  if (value >= 0)
+  {
+    ids->FillValue(value);
+  }
+  else
+  {
+    std::iota(ids->GetPointer(0), ids->GetPointer(0) + n, vtkIdType(0));
+  }
+  return ids;
+}
+
+/// A shallow copy of block whose cells and points carry its flat index and
+/// their ids in it.
 vtkSmartPointer<vtkPolyData> WithBlockIds(vtkPolyData* block, unsigned int flatIndex)
 {
   auto copy = vtkSmartPointer<vtkPolyData>::New();
   copy->ShallowCopy(block);
-  const vtkIdType n = block->GetNumberOfCells();
-  vtkNew<vtkIdTypeArray> blockIds;
-  blockIds->SetName(OverlayStitchBlockIdName);
-  blockIds->SetNumberOfTuples(n);
-  blockIds->FillValue(static_cast<vtkIdType>(flatIndex));
-  vtkNew<vtkIdTypeArray> cellIds;
-  cellIds->SetName(OverlayStitchBlockCellIdName);
-  cellIds->SetNumberOfTuples(n);
-  std::iota(cellIds->GetPointer(0), cellIds->GetPointer(0) + n, vtkIdType(0));
-  copy->GetCellData()->AddArray(blockIds);
-  copy->GetCellData()->AddArray(cellIds);
+  const auto index = static_cast<vtkIdType>(flatIndex);
+  const vtkIdType cells = block->GetNumberOfCells(), points = block->GetNumberOfPoints();
+  copy->GetCellData()->AddArray(IdArray(OverlayStitchBlockIdName, cells, index));
+  copy->GetCellData()->AddArray(IdArray(OverlayStitchBlockCellIdName, cells, -1));
+  copy->GetPointData()->AddArray(IdArray(OverlayStitchBlockIdName, points, index));
+  copy->GetPointData()->AddArray(IdArray(OverlayStitchBlockPointIdName, points, -1));
   return copy;
 }
 } // namespace
 
 const char* const OverlayStitchBlockIdName = "vtkOverlayStitchBlockId";
 const char* const OverlayStitchBlockCellIdName = "vtkOverlayStitchBlockCellId";
+const char* const OverlayStitchBlockPointIdName = "vtkOverlayStitchBlockPointId";
 
 //------------------------------------------------------------------------------
 vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(

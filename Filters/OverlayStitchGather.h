@@ -78,20 +78,22 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
   const std::vector<vtkSmartPointer<vtkDataObject>>& pieces,
   OverlayStitchGatherSummary* summary = nullptr, const char* pieceName = "piece");
 
-/// The cell arrays OverlayStitchCombineBlocks gives every block's cells: the
-/// block's flat index in the composite, and the cell's id in its block. They
-/// pass through the combination and the gather as any cell array, so that the
-/// outputs can name the user's cells (InputBlockId, InputCellId); the filter
-/// does not carry them as input arrays.
+/// The arrays OverlayStitchCombineBlocks gives every block's cells and points:
+/// the block's flat index in the composite (cell and point data), and the
+/// cell's or point's id in its block. They pass through the combination and
+/// the gather as any array (a point shared by blocks keeps the first block's),
+/// so that the outputs and the messages can name the user's cells and points
+/// (InputBlockId, InputCellId); the filter does not carry them as input arrays.
 extern const char* const OverlayStitchBlockIdName;
 extern const char* const OverlayStitchBlockCellIdName;
+extern const char* const OverlayStitchBlockPointIdName;
 
 /// A composite input (multiblock, partitioned) is one graph: its polydata
 /// leaves are combined as the ranks' pieces are (in the iteration order of the
 /// blocks; points equal to a point of an earlier block are that point, cells
 /// equal to one of an earlier block are dropped). A single polydata leaf is
 /// returned as a shallow copy, so that it meshes as it would on its own. Each
-/// block's cells get the two arrays above.
+/// block's cells and points get the arrays above.
 /// `ignored` receives the class names of non-empty leaves that are not
 /// polydata, one entry per leaf; `summary`, if given, what the combination did.
 vtkSmartPointer<vtkPolyData> OverlayStitchCombineBlocks(vtkCompositeDataSet* input,

@@ -32,6 +32,7 @@
 #include "Geometry.h"
 #include "HugePages.h"
 #include "Mesher.h"
+#include "OverlayStitchArrays.h"
 #include "OverlayStitchCellData.h"
 #include "OverlayStitchGather.h"
 #include "OverlayStitchPointData.h"
@@ -277,11 +278,50 @@ std::string ExplainHoles(const std::string& text, std::size_t propertySeeds, std
   return out.str();
 }
 
+/// The block id and the id in the block of item i (a cell or point of a
+/// combined composite input), from the arrays OverlayStitchCombineBlocks gave
+/// them; false without those arrays (a single dataset, or the pieces of a
+/// parallel run) or for an item of no block.
+bool InBlock(
+  vtkDataSetAttributes* data, const char* idName, vtkIdType i, vtkIdType& block, vtkIdType& id)
+{
+  auto* blocks = vtkIdTypeArray::SafeDownCast(data->GetAbstractArray(OverlayStitchBlockIdName));
+  auto* ids = vtkIdTypeArray::SafeDownCast(data->GetAbstractArray(idName));
+  if (!blocks || !ids || i < 0 || i >= blocks->GetNumberOfTuples() || i >= ids->GetNumberOfTuples())
+  {
+    return false;
+  }
+  block = blocks->GetValue(i);
+  id = ids->GetValue(i);
+  return block >= 0 && id >= 0;
+}
+
+/// In a combined composite input, append which block and point each point
+/// the text names ("point 7") is.
+std::string ExplainPoints(const std::string& text, vtkPolyData* input)
+{
+  std::ostringstream out;
+  bool any = false;
+  vtkIdType block = 0, id = 0;
+  for (std::size_t point : NamedNumbers(text, "point ", input->GetNumberOfPoints()))
+  {
+    if (InBlock(input->GetPointData(), OverlayStitchBlockPointIdName, static_cast<vtkIdType>(point),
+          block, id))
+    {
+      out << (any ? "; " : " [") << "point " << point << " is point " << id << " of block "
+          << block;
+      any = true;
+    }
+  }
+  return any ? text + out.str() + "]" : text;
+}
+
 /// The core names segments by their index in the PSLG ("input segment 7"):
 /// append which cell and points each named segment is. In a combined input
 /// (the blocks of a composite, the pieces of a parallel run) cell and point
 /// ids count through the combination, not through any block the user sees:
-/// there the segment's ends are given by their coordinates instead.
+/// there the segment's ends are given by their coordinates instead, after
+/// its cell's block and id in it where the input is a composite.
 std::string ExplainSegments(const std::string& text, const osm::Array<SegmentSource>& sources,
   vtkPolyData* input, bool combined)
 {
@@ -301,6 +341,11 @@ std::string ExplainSegments(const std::string& text, const osm::Array<SegmentSou
       double a[3], b[3];
       input->GetPoint(source.A, a);
       input->GetPoint(source.B, b);
+      vtkIdType block = 0, cell = 0;
+      if (InBlock(input->GetCellData(), OverlayStitchBlockCellIdName, source.Cell, block, cell))
+      {
+        out << " is cell " << cell << " of block " << block << ",";
+      }
       out << " runs from " << osm::formatPoint3({ a[0], a[1], a[2] }) << " to "
           << osm::formatPoint3({ b[0], b[1], b[2] });
     }
@@ -899,14 +944,20 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   }
   // Composite blocks and the pieces of a parallel run are meshed as one
   // combined input, whose numbers are not any single block's.
-  const bool combined = vtkCompositeDataSet::SafeDownCast(inputObject) || gather.Ranks > 1;
-  const std::string numbering = combined
+  // A composite's cells and points carry their blocks' ids: messages add them.
+  const bool composite = vtkCompositeDataSet::SafeDownCast(inputObject) != nullptr;
+  const bool combined = composite || gather.Ranks > 1;
+  const std::string numbering = !combined ? NumberingNote(input)
+    : composite
     ? " (numbers of points, segments and cells in this message count through the combined "
-      "input: every polydata block, or every rank's piece, in turn)"
-    : NumberingNote(input);
+      "input: every polydata block, or every rank's piece, in turn; blocks are named by their "
+      "flat index, as InputBlockId does)"
+    : " (numbers of points, segments and cells in this message count through the combined "
+      "input: every rank's piece in turn)";
   if (!inputError.empty())
   {
-    vtkErrorMacro("Cannot mesh the input: " << Numbered(inputError, numbering));
+    vtkErrorMacro(
+      "Cannot mesh the input: " << Numbered(ExplainPoints(inputError, input), numbering));
     return 1;
   }
   osm::Pslg pslg;
@@ -994,7 +1045,7 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   this->UpdateProgress(0.05);
 
   const bool interpolate =
-    this->InterpolatePointData && input->GetPointData()->GetNumberOfArrays() > 0;
+    this->InterpolatePointData && OverlayStitchHasUserArrays(input->GetPointData());
   osm::Options options;
   options.minAngleDeg = this->MinimumAngle;
   options.maxEdgeLength = this->MaximumEdgeLength;
@@ -1054,7 +1105,8 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   const std::size_t propertySeeds = this->HolePoints.size() / 2;
   auto explain = [&](const std::string& text) {
     return ExplainHoles(
-      ExplainSegments(text, segmentSources, input, combined), propertySeeds, pslg.holes.size());
+      ExplainSegments(ExplainPoints(text, input), segmentSources, input, combined), propertySeeds,
+      pslg.holes.size());
   };
   for (const std::string& warning : result.warnings)
   {

@@ -758,9 +758,9 @@ int TestComposite()
       osmtest::AllOutputsEmpty(invalid.Mesher),
     "a block's cell naming a point it lacks: an error with the block's ids, empty outputs");
 
-  // Segments of a combined input are named by their ends, not by cell ids
-  // that count through the combination (found by a review: "cell 2" was
-  // another block's vertex).
+  // Segments of a combined input are named by their block, their cell id in
+  // it and their ends, not by cell ids that count through the combination
+  // (found by a review: "cell 2" was another block's vertex).
   auto crossing = MakeLines({ { 5, -1, 0 }, { 5, 11, 0 } }, { { 0, 1 } });
   vtkNew<vtkMultiBlockDataSet> crossed;
   crossed->SetNumberOfBlocks(2);
@@ -771,10 +771,44 @@ int TestComposite()
   named.Mesher->SetInputData(crossed);
   named.Mesher->Update();
   named.Messages->Print("crossing blocks");
-  Check(named.Messages->HasError(
-          { "segment 4 runs from (5, -1, 0) to (5, 11, 0)", "count through the combined input" }) &&
-      !named.Messages->HasError({ "is cell" }),
-    "a crossing in a multiblock names the segments by their ends");
+  Check(named.Messages->HasError({ "segment 4 is cell 0 of block 2, runs from (5, -1, 0) to (5, "
+                                   "11, 0)",
+          "segment 0 is cell 0 of block 1, runs from (0, 0, 0) to (10, 0, 0)",
+          "count through the combined input", "flat index" }),
+    "a crossing in a multiblock names the segments by block, cell in it and ends");
+
+  // Points, too: a non-finite coordinate in the second block, and a point
+  // given twice in it, are named by block and id in the block.
+  auto faulty = MakeLines({ { 1, 1, 0 }, { 2, 2, 0 }, { 0, 0, 0 } }, { { 0, 1 } });
+  vtkNew<vtkMultiBlockDataSet> withFaulty;
+  withFaulty->SetNumberOfBlocks(2);
+  withFaulty->SetBlock(0, outer);
+  withFaulty->SetBlock(1, faulty);
+  faulty->GetPoints()->SetPoint(1, std::nan(""), 2, 0);
+  Harness nan;
+  nan.Mesher->SetInputData(withFaulty);
+  nan.Mesher->Update();
+  nan.Messages->Print("a NaN in a block");
+  Check(nan.Messages->HasError({ "input point 5 has a non-finite coordinate",
+          "[point 5 is point 1 of block 2]", "count through the combined input" }) &&
+      osmtest::AllOutputsEmpty(nan.Mesher),
+    "a non-finite coordinate in a block names its block and its id there");
+  faulty->GetPoints()->SetPoint(1, 1, 1, 0); // now point 0 again
+  faulty->Modified();
+  Harness twice;
+  twice.Mesher->SetInputData(withFaulty);
+  twice.Mesher->Update();
+  twice.Messages->Print("a point twice in a block");
+  Check(twice.NoError() &&
+      twice.Messages->HasWarning({ "duplicate point(s), e.g. point 5 with point 4",
+        "[point 5 is point 1 of block 2; point 4 is point 0 of block 2]" }),
+    "a duplicate point in a block is named by its block and its ids there");
+  // The ids are internal: no array of theirs reaches an output, and a
+  // composite input without point arrays carries none.
+  auto* twiceMesh = vtkPolyData::SafeDownCast(twice.Mesher->GetOutputDataObject(0));
+  Check(twiceMesh && twiceMesh->GetPointData()->GetNumberOfArrays() == 1 &&
+      twiceMesh->GetPointData()->GetArray("VertexOrigin"),
+    "the mesh's point data is VertexOrigin alone");
   return 0;
 }
 

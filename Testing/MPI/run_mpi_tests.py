@@ -221,6 +221,7 @@ def bundled(runner):
             (3, name + "-3.vtm", "none", False),
         ])
     invalid_block(runner)
+    block_named_points(runner)
     unreadable_poly(runner)
 
 
@@ -256,6 +257,37 @@ def write_lines_vtp(path, points, lines):
                     len(points), len(lines), coords, ids, offsets))
 
 
+def write_vtm(runner, name, blocks):
+    """A .vtm of .vtp blocks, each (points, lines); returns its path."""
+    vtm = os.path.join(runner.out, name + ".vtm")
+    with open(vtm, "w") as f:
+        f.write('<?xml version="1.0"?>\n<VTKFile type="vtkMultiBlockDataSet" version="1.0">\n'
+                ' <vtkMultiBlockDataSet>\n')
+        for k, (points, lines) in enumerate(blocks):
+            write_lines_vtp(os.path.join(runner.out, "%s_%d.vtp" % (name, k)), points, lines)
+            f.write('  <DataSet index="%d" file="%s_%d.vtp"/>\n' % (k, name, k))
+        f.write(" </vtkMultiBlockDataSet>\n</VTKFile>\n")
+    return vtm
+
+
+def block_named_points(runner):
+    """A multiblock whose last block gives a point twice: on every number of
+    ranks the warning names both points by their block (flat index 3) and their
+    ids there, whatever the combined numbering."""
+    print("== block-named-points", flush=True)
+    vtm = write_vtm(runner, "twice", [
+        ([(0, 0), (10, 0), (10, 10)], [(0, 1), (1, 2)]),
+        ([(10, 10), (0, 10), (0, 0)], [(0, 1), (1, 2)]),
+        ([(2, 1), (2, 1), (3, 3)], [(0, 2)])])
+    text = "is point 1 of block 3; point"
+    for ranks in (1, 2, 3):
+        result = runner.mesh("twice-np%d" % ranks, ranks, vtm)
+        check("merged 1 duplicate point(s)" in result["log"] and text in result["log"] and
+              "is point 0 of block 3]" in result["log"],
+              "a point twice in a block -np %d: the warning names it by block and id" % ranks)
+        check(result["outputs"][0]["cells"] > 0, "a point twice in a block -np %d: meshed" % ranks)
+
+
 def invalid_block(runner):
     """A multiblock whose last block has a line naming a point it does not have:
     every run ends (no rank waits for another), with empty outputs and an error
@@ -264,14 +296,7 @@ def invalid_block(runner):
     blocks = [([(0, 0), (10, 0), (10, 10)], [(0, 1), (1, 2)]),
               ([(10, 10), (0, 10), (0, 0)], [(0, 1), (1, 2)]),
               ([(2, 1), (3, 3)], [(0, 1), (1, 9)])]
-    vtm = os.path.join(runner.out, "invalid-ids.vtm")
-    with open(vtm, "w") as f:
-        f.write('<?xml version="1.0"?>\n<VTKFile type="vtkMultiBlockDataSet" version="1.0">\n'
-                ' <vtkMultiBlockDataSet>\n')
-        for k, (points, lines) in enumerate(blocks):
-            write_lines_vtp(os.path.join(runner.out, "invalid-ids_%d.vtp" % k), points, lines)
-            f.write('  <DataSet index="%d" file="invalid-ids_%d.vtp"/>\n' % (k, k))
-        f.write(" </vtkMultiBlockDataSet>\n</VTKFile>\n")
+    vtm = write_vtm(runner, "invalid-ids", blocks)
     # Serial: block 2's own ids. -np 2: rank 1 holds block 2 alone; -np 3: rank 2 does.
     expected = {1: "cell 1 of polydata block 2 refers to point 9, but that polydata block has 2",
                 2: "cell 1 of rank 1 refers to point 9, but that rank has 2",
