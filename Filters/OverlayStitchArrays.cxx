@@ -29,14 +29,17 @@ bool OverlayStitchIsBlockIdArray(const char* name)
   return name &&
     (std::strcmp(name, OverlayStitchBlockIdName) == 0 ||
       std::strcmp(name, OverlayStitchBlockCellIdName) == 0 ||
-      std::strcmp(name, OverlayStitchBlockPointIdName) == 0);
+      std::strcmp(name, OverlayStitchBlockPointIdName) == 0 ||
+      std::strcmp(name, OverlayStitchRankName) == 0);
 }
 
 bool OverlayStitchHasUserArrays(vtkDataSetAttributes* in)
 {
   for (int i = 0; in && i < in->GetNumberOfArrays(); ++i)
   {
-    if (!OverlayStitchIsBlockIdArray(in->GetArrayName(i)))
+    const char* name = in->GetArrayName(i);
+    if (!OverlayStitchIsBlockIdArray(name) &&
+      !(name && std::strcmp(name, vtkDataSetAttributes::GhostArrayName()) == 0))
     {
       return true;
     }

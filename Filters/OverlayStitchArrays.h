@@ -25,7 +25,7 @@ bool OverlayStitchIsMarker(vtkAbstractArray* array, const char* name);
 /// points are given (OverlayStitchGather.h), never the user's.
 bool OverlayStitchIsBlockIdArray(const char* name);
 
-/// Whether in has arrays of the user's: any but the block ids.
+/// Whether in has arrays to carry: any but the block ids and the ghost array.
 bool OverlayStitchHasUserArrays(vtkDataSetAttributes* in);
 
 /// The arrays of in (data on `items` points or cells: kind "point" or

@@ -98,6 +98,8 @@ vtkCellArray* CellsOfKind(vtkPolyData* polyData, int kind)
 struct InvalidCells
 {
   const char* PieceName;
+  /// The number each piece goes by in the message (default: its index).
+  const std::vector<std::size_t>* PieceNumbers = nullptr;
   vtkIdType Count = 0;
   std::string First;
   std::pair<std::size_t, vtkIdType> FirstAt;
@@ -117,7 +119,9 @@ struct InvalidCells
       FirstAt = { piece, cellId };
       // A single input (PieceName null) is not named as a piece.
       First = "cell " + std::to_string(cellId) +
-        (PieceName ? std::string(" of ") + PieceName + " " + std::to_string(piece) : "") +
+        (PieceName ? std::string(" of ") + PieceName + " " +
+              std::to_string(PieceNumbers ? (*PieceNumbers)[piece] : piece)
+                   : "") +
         " refers to point " + std::to_string(*bad) + ", but " +
         (PieceName ? std::string("that ") + PieceName : std::string("the input")) + " has " +
         std::to_string(points) + " point(s)";
@@ -226,6 +230,23 @@ void NoteArraysLeftOut(
   }
 }
 
+/// A shallow copy of piece without the cells that are ghost copies of another
+/// piece's (piece itself when it has none), its arrays and field data kept.
+vtkSmartPointer<vtkPolyData> WithoutGhostCells(vtkPolyData* piece)
+{
+  if (!piece->GetCellData()->GetArray(vtkDataSetAttributes::GhostArrayName()))
+  {
+    return piece;
+  }
+  auto local = vtkSmartPointer<vtkPolyData>::New();
+  local->ShallowCopy(piece);
+  local->RemoveGhostCells();
+  // RemoveGhostCells() may drop the field data (ParaView 5.11's VTK does): keep
+  // the hole seeds.
+  local->GetFieldData()->ShallowCopy(piece->GetFieldData());
+  return local;
+}
+
 /// An id array: value everywhere, or (value < 0) each tuple's own index.
 vtkSmartPointer<vtkIdTypeArray> IdArray(const char* name, vtkIdType n, vtkIdType value)
 {
@@ -244,7 +265,8 @@ vtkSmartPointer<vtkIdTypeArray> IdArray(const char* name, vtkIdType n, vtkIdType
 }
 
 /// A shallow copy of block whose cells and points carry its flat index and
-/// their ids in it.
+/// their ids in it, without its ghost cells: combined with the other blocks,
+/// a ghost copy of a later block's cell would take the place of that cell.
 vtkSmartPointer<vtkPolyData> WithBlockIds(vtkPolyData* block, unsigned int flatIndex)
 {
   auto copy = vtkSmartPointer<vtkPolyData>::New();
@@ -255,6 +277,26 @@ vtkSmartPointer<vtkPolyData> WithBlockIds(vtkPolyData* block, unsigned int flatI
   copy->GetCellData()->AddArray(IdArray(OverlayStitchBlockCellIdName, cells, -1));
   copy->GetPointData()->AddArray(IdArray(OverlayStitchBlockIdName, points, index));
   copy->GetPointData()->AddArray(IdArray(OverlayStitchBlockPointIdName, points, -1));
+  return WithoutGhostCells(copy);
+}
+
+/// In a parallel run, a shallow copy of a composite input's piece (one that
+/// carries block ids) whose cells and points also carry the rank it came
+/// from: a rank may hold only part of a block, and the ids in the block are
+/// then those of its part. Other pieces are returned as they are.
+vtkSmartPointer<vtkDataObject> WithRank(vtkDataObject* piece, int rank)
+{
+  vtkPolyData* polyData = vtkPolyData::SafeDownCast(piece);
+  if (!polyData || !polyData->GetCellData()->GetArray(OverlayStitchBlockIdName))
+  {
+    return piece;
+  }
+  auto copy = vtkSmartPointer<vtkPolyData>::New();
+  copy->ShallowCopy(polyData);
+  copy->GetCellData()->AddArray(
+    IdArray(OverlayStitchRankName, polyData->GetNumberOfCells(), static_cast<vtkIdType>(rank)));
+  copy->GetPointData()->AddArray(
+    IdArray(OverlayStitchRankName, polyData->GetNumberOfPoints(), static_cast<vtkIdType>(rank)));
   return copy;
 }
 } // namespace
@@ -262,14 +304,15 @@ vtkSmartPointer<vtkPolyData> WithBlockIds(vtkPolyData* block, unsigned int flatI
 const char* const OverlayStitchBlockIdName = "vtkOverlayStitchBlockId";
 const char* const OverlayStitchBlockCellIdName = "vtkOverlayStitchBlockCellId";
 const char* const OverlayStitchBlockPointIdName = "vtkOverlayStitchBlockPointId";
+const char* const OverlayStitchRankName = "vtkOverlayStitchRank";
 
 //------------------------------------------------------------------------------
 vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
   const std::vector<vtkSmartPointer<vtkDataObject>>& pieces, OverlayStitchGatherSummary* summary,
-  const char* pieceName)
+  const char* pieceName, const std::vector<std::size_t>* pieceNumbers)
 {
   auto combined = vtkSmartPointer<vtkPolyData>::New();
-  InvalidCells invalid{ pieceName };
+  InvalidCells invalid{ pieceName, pieceNumbers };
 
   // The pieces with points; point and cell arrays are those common to all of them.
   // A piece without points has no valid cell (its cells are reported, not lost).
@@ -374,7 +417,10 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
     vtkNew<vtkPoints> points;
     points->SetDataTypeToDouble();
     points->SetNumberOfPoints(static_cast<vtkIdType>(sources.size()));
+    // Each point and cell is copied once, so global ids keep their meaning
+    // (vtkDataSetAttributes leaves them out by default).
     vtkPointData* outPointData = combined->GetPointData();
+    outPointData->CopyGlobalIdsOn();
     outPointData->CopyAllocate(pointFields, static_cast<vtkIdType>(sources.size()));
     for (std::size_t k = 0; k < order.size(); ++k)
     {
@@ -398,6 +444,7 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
     // Cells, kind by kind (verts, lines, polys, strips: vtkPolyData's cell id order),
     // each piece in turn; a cell equal to one of an earlier piece is that cell.
     vtkCellData* outCellData = combined->GetCellData();
+    outCellData->CopyGlobalIdsOn();
     outCellData->CopyAllocate(cellFields, totalCells);
     vtkIdType nextCellId = 0;
     for (int kind = 0; kind < 4; ++kind)
@@ -542,20 +589,8 @@ bool OverlayStitchGatherInput(vtkMultiProcessController* controller, vtkPolyData
   const int ranks = controller ? controller->GetNumberOfProcesses() : 1;
   // This rank's piece, without the cells that are ghost copies of another
   // piece's: in a serial run too, so that it meshes what a parallel one does.
-  vtkSmartPointer<vtkPolyData> local = input;
-  if (!input)
-  {
-    local = vtkSmartPointer<vtkPolyData>::New();
-  }
-  else if (input->GetCellData()->GetArray(vtkDataSetAttributes::GhostArrayName()))
-  {
-    local = vtkSmartPointer<vtkPolyData>::New();
-    local->ShallowCopy(input);
-    local->RemoveGhostCells();
-    // RemoveGhostCells() may drop the field data (ParaView 5.11's VTK does): keep
-    // the hole seeds.
-    local->GetFieldData()->ShallowCopy(input->GetFieldData());
-  }
+  vtkSmartPointer<vtkPolyData> local =
+    input ? WithoutGhostCells(input) : vtkSmartPointer<vtkPolyData>::New();
   if (ranks <= 1)
   {
     gathered = input ? local : nullptr;
@@ -596,6 +631,10 @@ bool OverlayStitchGatherInput(vtkMultiProcessController* controller, vtkPolyData
     gathered = nullptr;
     return true;
   }
+  for (std::size_t rank = 0; rank < pieces.size(); ++rank)
+  {
+    pieces[rank] = WithRank(pieces[rank], static_cast<int>(rank));
+  }
   gathered = OverlayStitchCombinePieces(pieces, summary, "rank");
   return true;
 }
@@ -610,6 +649,7 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombineBlocks(vtkCompositeDataSet* inp
   }
   ignored.clear();
   std::vector<vtkSmartPointer<vtkDataObject>> blocks;
+  std::vector<std::size_t> flatIndices;
   auto it = vtkSmartPointer<vtkCompositeDataIterator>::Take(input->NewIterator());
   for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
   {
@@ -617,6 +657,7 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombineBlocks(vtkCompositeDataSet* inp
     if (auto* polyData = vtkPolyData::SafeDownCast(leaf))
     {
       blocks.emplace_back(WithBlockIds(polyData, it->GetCurrentFlatIndex()));
+      flatIndices.push_back(it->GetCurrentFlatIndex());
     }
     else if (vtkDataSet* other = vtkDataSet::SafeDownCast(leaf))
     {
@@ -630,5 +671,5 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombineBlocks(vtkCompositeDataSet* inp
   {
     return vtkPolyData::SafeDownCast(blocks.front()); // already a copy
   }
-  return OverlayStitchCombinePieces(blocks, summary, "polydata block");
+  return OverlayStitchCombinePieces(blocks, summary, "block", &flatIndices);
 }

@@ -73,10 +73,12 @@ bool OverlayStitchGatherInput(vtkMultiProcessController* controller, vtkPolyData
 
 /// The combination done on rank 0, exposed for tests: `pieces` in rank order
 /// (null or non-polydata entries count as empty pieces). `pieceName` names a
-/// piece in the summary's FirstInvalidCell ("rank", "polydata block").
+/// piece in the summary's FirstInvalidCell ("rank", "block"), with its index
+/// in pieces or, if given, its entry of pieceNumbers (a block's flat index).
 vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
   const std::vector<vtkSmartPointer<vtkDataObject>>& pieces,
-  OverlayStitchGatherSummary* summary = nullptr, const char* pieceName = "piece");
+  OverlayStitchGatherSummary* summary = nullptr, const char* pieceName = "piece",
+  const std::vector<std::size_t>* pieceNumbers = nullptr);
 
 /// The arrays OverlayStitchCombineBlocks gives every block's cells and points:
 /// the block's flat index in the composite (cell and point data), and the
@@ -87,11 +89,17 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
 extern const char* const OverlayStitchBlockIdName;
 extern const char* const OverlayStitchBlockCellIdName;
 extern const char* const OverlayStitchBlockPointIdName;
+/// In a parallel run, the rank each such cell and point came from (on the
+/// pieces that carry block ids): the ids in a block are those of the rank's
+/// part of it.
+extern const char* const OverlayStitchRankName;
 
 /// A composite input (multiblock, partitioned) is one graph: its polydata
 /// leaves are combined as the ranks' pieces are (in the iteration order of the
 /// blocks; points equal to a point of an earlier block are that point, cells
-/// equal to one of an earlier block are dropped). A single polydata leaf is
+/// equal to one of an earlier block are dropped; each block's ghost cells are
+/// removed first, so that a ghost copy never stands in for the cell it
+/// copies). A single polydata leaf is
 /// returned as a shallow copy, so that it meshes as it would on its own. Each
 /// block's cells and points get the arrays above.
 /// `ignored` receives the class names of non-empty leaves that are not

@@ -278,22 +278,26 @@ std::string ExplainHoles(const std::string& text, std::size_t propertySeeds, std
   return out.str();
 }
 
-/// The block id and the id in the block of item i (a cell or point of a
-/// combined composite input), from the arrays OverlayStitchCombineBlocks gave
-/// them; false without those arrays (a single dataset, or the pieces of a
-/// parallel run) or for an item of no block.
-bool InBlock(
-  vtkDataSetAttributes* data, const char* idName, vtkIdType i, vtkIdType& block, vtkIdType& id)
+/// Where item i (a cell or point of a combined composite input) comes from,
+/// as "point 3 of block 2" (kind "point"), from the arrays
+/// OverlayStitchCombineBlocks gave it, with " on rank 1" in a parallel run,
+/// where a rank may hold part of a block only and the id is in that part.
+/// Empty without those arrays (a single dataset, or the pieces of a parallel
+/// run) or for an item of no block.
+std::string InBlock(vtkDataSetAttributes* data, const char* idName, vtkIdType i, const char* kind)
 {
-  auto* blocks = vtkIdTypeArray::SafeDownCast(data->GetAbstractArray(OverlayStitchBlockIdName));
-  auto* ids = vtkIdTypeArray::SafeDownCast(data->GetAbstractArray(idName));
-  if (!blocks || !ids || i < 0 || i >= blocks->GetNumberOfTuples() || i >= ids->GetNumberOfTuples())
+  auto value = [&](const char* name) {
+    auto* ids = vtkIdTypeArray::SafeDownCast(data->GetAbstractArray(name));
+    return ids && i >= 0 && i < ids->GetNumberOfTuples() ? ids->GetValue(i) : vtkIdType(-1);
+  };
+  const vtkIdType block = value(OverlayStitchBlockIdName), id = value(idName);
+  if (block < 0 || id < 0)
   {
-    return false;
+    return std::string();
   }
-  block = blocks->GetValue(i);
-  id = ids->GetValue(i);
-  return block >= 0 && id >= 0;
+  const vtkIdType rank = value(OverlayStitchRankName);
+  return std::string(kind) + " " + std::to_string(id) + " of block " + std::to_string(block) +
+    (rank >= 0 ? " on rank " + std::to_string(rank) : std::string());
 }
 
 /// In a combined composite input, append which block and point each point
@@ -302,14 +306,13 @@ std::string ExplainPoints(const std::string& text, vtkPolyData* input)
 {
   std::ostringstream out;
   bool any = false;
-  vtkIdType block = 0, id = 0;
   for (std::size_t point : NamedNumbers(text, "point ", input->GetNumberOfPoints()))
   {
-    if (InBlock(input->GetPointData(), OverlayStitchBlockPointIdName, static_cast<vtkIdType>(point),
-          block, id))
+    const std::string source = InBlock(
+      input->GetPointData(), OverlayStitchBlockPointIdName, static_cast<vtkIdType>(point), "point");
+    if (!source.empty())
     {
-      out << (any ? "; " : " [") << "point " << point << " is point " << id << " of block "
-          << block;
+      out << (any ? "; " : " [") << "point " << point << " is " << source;
       any = true;
     }
   }
@@ -341,10 +344,11 @@ std::string ExplainSegments(const std::string& text, const osm::Array<SegmentSou
       double a[3], b[3];
       input->GetPoint(source.A, a);
       input->GetPoint(source.B, b);
-      vtkIdType block = 0, cell = 0;
-      if (InBlock(input->GetCellData(), OverlayStitchBlockCellIdName, source.Cell, block, cell))
+      const std::string cell =
+        InBlock(input->GetCellData(), OverlayStitchBlockCellIdName, source.Cell, "cell");
+      if (!cell.empty())
       {
-        out << " is cell " << cell << " of block " << block << ",";
+        out << " is " << cell << ",";
       }
       out << " runs from " << osm::formatPoint3({ a[0], a[1], a[2] }) << " to "
           << osm::formatPoint3({ b[0], b[1], b[2] });

@@ -235,7 +235,9 @@ public:
    * (holes' included), else 0.
    * Where segments of several cells overlap, a subsegment takes the first
    * cell's. For a composite input, InputCellId is the cell's id in its block
-   * and "InputBlockId" the block's flat index (-1 where no cell is named).
+   * and "InputBlockId" the block's flat index (-1 where no cell is named);
+   * in a parallel run where a rank holds only part of a block, the id in
+   * that part.
    */
   vtkSetMacro(PassCellData, vtkTypeBool);
   vtkGetMacro(PassCellData, vtkTypeBool);

@@ -235,9 +235,9 @@ int main()
     summary.FirstInvalidCell == "cell 1 of rank 1 refers to point 7, but that rank has 2 point(s)",
     "the first described with the piece's own ids: '" + summary.FirstInvalidCell + "'");
   std::vector<vtkSmartPointer<vtkDataObject>> onlyPointless = { pointless };
-  OverlayStitchCombinePieces(onlyPointless, &summary, "polydata block");
+  OverlayStitchCombinePieces(onlyPointless, &summary, "block");
   Check(summary.FirstInvalidCell ==
-      "cell 0 of polydata block 0 refers to point 0, but that polydata block has 0 point(s)",
+      "cell 0 of block 0 refers to point 0, but that block has 0 point(s)",
     "a piece without points: '" + summary.FirstInvalidCell + "'");
 
   std::cout << "one process\n";

@@ -273,18 +273,21 @@ def write_vtm(runner, name, blocks):
 def block_named_points(runner):
     """A multiblock whose last block gives a point twice: on every number of
     ranks the warning names both points by their block (flat index 3) and their
-    ids there, whatever the combined numbering."""
+    ids there, whatever the combined numbering, and in a parallel run by the
+    rank that holds the block (a rank may hold only part of a block)."""
     print("== block-named-points", flush=True)
     vtm = write_vtm(runner, "twice", [
         ([(0, 0), (10, 0), (10, 10)], [(0, 1), (1, 2)]),
         ([(10, 10), (0, 10), (0, 0)], [(0, 1), (1, 2)]),
         ([(2, 1), (2, 1), (3, 3)], [(0, 2)])])
-    text = "is point 1 of block 3; point"
-    for ranks in (1, 2, 3):
+    # -np 2: rank 1 holds the third block alone; -np 3: rank 2 does.
+    for ranks, on in ((1, ""), (2, " on rank 1"), (3, " on rank 2")):
         result = runner.mesh("twice-np%d" % ranks, ranks, vtm)
-        check("merged 1 duplicate point(s)" in result["log"] and text in result["log"] and
-              "is point 0 of block 3]" in result["log"],
-              "a point twice in a block -np %d: the warning names it by block and id" % ranks)
+        texts = ("merged 1 duplicate point(s)", "is point 1 of block 3%s; point" % on,
+                 "is point 0 of block 3%s]" % on)
+        check(all(t in result["log"] for t in texts),
+              "a point twice in a block -np %d: the warning names it by block and id%s" % (
+                  ranks, on))
         check(result["outputs"][0]["cells"] > 0, "a point twice in a block -np %d: meshed" % ranks)
 
 
@@ -297,8 +300,9 @@ def invalid_block(runner):
               ([(10, 10), (0, 10), (0, 0)], [(0, 1), (1, 2)]),
               ([(2, 1), (3, 3)], [(0, 1), (1, 9)])]
     vtm = write_vtm(runner, "invalid-ids", blocks)
-    # Serial: block 2's own ids. -np 2: rank 1 holds block 2 alone; -np 3: rank 2 does.
-    expected = {1: "cell 1 of polydata block 2 refers to point 9, but that polydata block has 2",
+    # Serial: the block's own ids, by its flat index (3). -np 2: rank 1 holds the
+    # third block alone; -np 3: rank 2 does.
+    expected = {1: "cell 1 of block 3 refers to point 9, but that block has 2",
                 2: "cell 1 of rank 1 refers to point 9, but that rank has 2",
                 3: "cell 1 of rank 2 refers to point 9, but that rank has 2"}
     for ranks, text in sorted(expected.items()):
