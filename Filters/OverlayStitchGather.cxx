@@ -2,6 +2,7 @@
 // Copyright (c) 2026, the Overlay Stitch Meshing authors
 #include "OverlayStitchGather.h"
 
+#include "vtkAbstractArray.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
@@ -11,6 +12,7 @@
 #include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
+#include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
@@ -93,8 +95,62 @@ vtkCellArray* CellsOfKind(vtkPolyData* polyData, int kind)
   }
 }
 
+void SetCellsOfKind(vtkPolyData* polyData, int kind, vtkCellArray* cells)
+{
+  switch (kind)
+  {
+    case 0:
+      polyData->SetVerts(cells);
+      break;
+    case 1:
+      polyData->SetLines(cells);
+      break;
+    case 2:
+      polyData->SetPolys(cells);
+      break;
+    default:
+      polyData->SetStrips(cells);
+      break;
+  }
+}
+
+/// Whether cell c is a ghost copy of another piece's cell (flagged duplicate or
+/// hidden in ghosts, the piece's ghost array, if any).
+bool IsGhostCell(vtkDataArray* ghosts, vtkIdType c)
+{
+  return ghosts && c < ghosts->GetNumberOfTuples() &&
+    (static_cast<int>(ghosts->GetComponent(c, 0)) &
+      (vtkDataSetAttributes::DUPLICATECELL | vtkDataSetAttributes::HIDDENCELL)) != 0;
+}
+
+vtkDataArray* GhostsOf(vtkPolyData* piece)
+{
+  return piece->GetCellData()->GetArray(vtkDataSetAttributes::GhostArrayName());
+}
+
+/// "cell 3 of block 2" (and " on rank 1" in a parallel run) for cell c of a
+/// piece whose cells carry the block ids OverlayStitchCombineBlocks gives
+/// them; empty for other pieces.
+std::string CellOfBlock(vtkPolyData* piece, vtkIdType c)
+{
+  auto value = [&](const char* name) {
+    auto* ids = vtkIdTypeArray::SafeDownCast(piece->GetCellData()->GetAbstractArray(name));
+    return ids && c < ids->GetNumberOfTuples() ? ids->GetValue(c) : vtkIdType(-1);
+  };
+  const vtkIdType block = value(OverlayStitchBlockIdName),
+                  cell = value(OverlayStitchBlockCellIdName);
+  if (block < 0 || cell < 0)
+  {
+    return std::string();
+  }
+  const vtkIdType rank = value(OverlayStitchRankName);
+  return "cell " + std::to_string(cell) + " of block " + std::to_string(block) +
+    (rank >= 0 ? " on rank " + std::to_string(rank) : std::string());
+}
+
 /// Cells naming a point their piece does not have: counted, and the first (in
-/// piece, then cell id order, whatever order they are seen in) described.
+/// piece, then cell id order, whatever order they are seen in) described, by
+/// its block and its id there where the piece comes from a composite input.
 struct InvalidCells
 {
   const char* PieceName;
@@ -104,9 +160,10 @@ struct InvalidCells
   std::string First;
   std::pair<std::size_t, vtkIdType> FirstAt;
 
-  /// Notes cell `cellId` (ids `ids[0..n)`) of piece `piece`, which has `points` points.
-  void Note(
-    vtkIdType n, const vtkIdType* ids, vtkIdType points, vtkIdType cellId, std::size_t piece)
+  /// Notes cell `cellId` (ids `ids[0..n)`) of piece `piece` (`source`), which
+  /// has `points` points.
+  void Note(vtkIdType n, const vtkIdType* ids, vtkIdType points, vtkIdType cellId,
+    std::size_t piece, vtkPolyData* source)
   {
     const vtkIdType* bad =
       std::find_if(ids, ids + n, [points](vtkIdType id) { return id < 0 || id >= points; });
@@ -118,55 +175,52 @@ struct InvalidCells
     {
       FirstAt = { piece, cellId };
       // A single input (PieceName null) is not named as a piece.
-      First = "cell " + std::to_string(cellId) +
-        (PieceName ? std::string(" of ") + PieceName + " " +
-              std::to_string(PieceNumbers ? (*PieceNumbers)[piece] : piece)
-                   : "") +
-        " refers to point " + std::to_string(*bad) + ", but " +
-        (PieceName ? std::string("that ") + PieceName : std::string("the input")) + " has " +
-        std::to_string(points) + " point(s)";
+      const std::string inBlock = CellOfBlock(source, cellId);
+      const std::string cell = !inBlock.empty() ? inBlock
+        : PieceName ? "cell " + std::to_string(cellId) + " of " + PieceName + " " +
+          std::to_string(PieceNumbers ? (*PieceNumbers)[piece] : piece)
+                    : "cell " + std::to_string(cellId);
+      // A -1 is what combining a rank's blocks left of an invalid id (said on that rank).
+      First = cell + " refers to " +
+        (*bad >= 0 ? "point " + std::to_string(*bad) : std::string("a point that does not exist")) +
+        ", but " +
+        (PieceName ? std::string("that ") + PieceName
+                   : std::string(!inBlock.empty() ? "that block" : "the input")) +
+        " has " + std::to_string(points) + " point(s)";
     }
   }
 
-  /// Notes every cell of a piece naming a point it does not have.
+  /// Notes every cell of a piece naming a point it does not have, but for its
+  /// ghost cells (cell ids count them). (Not from the connectivity's range:
+  /// VTK caches it, and cells inserted in place do not renew it.)
   void NoteCells(vtkPolyData* piece, std::size_t index)
   {
-    const vtkIdType points = piece->GetNumberOfPoints();
-    // Most inputs are valid: the ids' range says so without visiting cells.
-    bool inRange = true;
-    for (int kind = 0; kind < 4 && inRange; ++kind)
-    {
-      vtkDataArray* ids = CellsOfKind(piece, kind)->GetConnectivityArray();
-      double range[2] = { 0.0, 0.0 };
-      if (ids->GetNumberOfTuples() > 0)
-      {
-        ids->GetRange(range, 0);
-      }
-      inRange = range[0] >= 0 && range[1] < static_cast<double>(points);
-    }
-    if (!inRange)
-    {
-      NoteAgainst(piece, points, index);
-    }
+    NoteAgainst(piece, piece->GetNumberOfPoints(), index);
   }
 
   /// Notes every cell of a piece that has no points.
   void NotePiecesCells(vtkPolyData* piece, std::size_t index) { NoteAgainst(piece, 0, index); }
 
 private:
-  /// Notes each cell of piece, in cell id order, as if it had `points` points.
+  /// Notes each cell of piece but its ghost cells, in cell id order, as if it
+  /// had `points` points.
   void NoteAgainst(vtkPolyData* piece, vtkIdType points, std::size_t index)
   {
+    vtkDataArray* ghosts = GhostsOf(piece);
     vtkIdType cellId = 0;
     for (int kind = 0; kind < 4; ++kind)
     {
       auto it = vtk::TakeSmartPointer(CellsOfKind(piece, kind)->NewIterator());
       for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cellId)
       {
+        if (IsGhostCell(ghosts, cellId))
+        {
+          continue;
+        }
         vtkIdType n;
         const vtkIdType* ids;
         it->GetCurrentCell(n, ids);
-        Note(n, ids, points, cellId, index);
+        Note(n, ids, points, cellId, index, piece);
       }
     }
   }
@@ -230,20 +284,75 @@ void NoteArraysLeftOut(
   }
 }
 
-/// A shallow copy of piece without the cells that are ghost copies of another
-/// piece's (piece itself when it has none), its arrays and field data kept.
+/// A copy of piece without the cells that are ghost copies of another piece's
+/// (flagged duplicate or hidden), or piece itself when it has none. Unlike
+/// vtkPolyData::RemoveGhostCells(), which in ParaView 5.11's VTK drops the
+/// points no cell uses (every input point is meshed), renumbers the rest and
+/// reads past its tables for a cell naming a point that does not exist, the
+/// points, their ids and data stay as they are; the kept cells keep their
+/// data (arrays shorter than the cells stay as they are, for the carriers to
+/// warn about), and the field data is kept.
 vtkSmartPointer<vtkPolyData> WithoutGhostCells(vtkPolyData* piece)
 {
-  if (!piece->GetCellData()->GetArray(vtkDataSetAttributes::GhostArrayName()))
+  vtkDataArray* ghosts = GhostsOf(piece);
+  const vtkIdType cellCount = piece->GetNumberOfCells();
+  vtkNew<vtkIdList> kept;
+  for (vtkIdType c = 0; ghosts && c < cellCount; ++c)
+  {
+    if (!IsGhostCell(ghosts, c))
+    {
+      kept->InsertNextId(c);
+    }
+  }
+  if (!ghosts || kept->GetNumberOfIds() == cellCount)
   {
     return piece;
   }
   auto local = vtkSmartPointer<vtkPolyData>::New();
-  local->ShallowCopy(piece);
-  local->RemoveGhostCells();
-  // RemoveGhostCells() may drop the field data (ParaView 5.11's VTK does): keep
-  // the hole seeds.
+  local->SetPoints(piece->GetPoints());
+  local->GetPointData()->ShallowCopy(piece->GetPointData());
   local->GetFieldData()->ShallowCopy(piece->GetFieldData());
+  vtkIdType cellId = 0;
+  for (int kind = 0; kind < 4; ++kind)
+  {
+    vtkNew<vtkCellArray> cells;
+    auto it = vtk::TakeSmartPointer(CellsOfKind(piece, kind)->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cellId)
+    {
+      if (!IsGhostCell(ghosts, cellId))
+      {
+        vtkIdType n;
+        const vtkIdType* ids;
+        it->GetCurrentCell(n, ids);
+        cells->InsertNextCell(n, ids);
+      }
+    }
+    SetCellsOfKind(local, kind, cells);
+  }
+  vtkCellData* in = piece->GetCellData();
+  vtkCellData* out = local->GetCellData();
+  for (int a = 0; a < in->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* array = in->GetAbstractArray(a);
+    if (array->GetNumberOfTuples() < cellCount)
+    {
+      out->AddArray(array);
+      continue;
+    }
+    auto copy = vtk::TakeSmartPointer(array->NewInstance());
+    copy->SetName(array->GetName());
+    copy->SetNumberOfComponents(array->GetNumberOfComponents());
+    copy->SetNumberOfTuples(kept->GetNumberOfIds());
+    array->GetTuples(kept, copy);
+    out->AddArray(copy);
+    for (int attribute = 0; attribute < vtkDataSetAttributes::NUM_ATTRIBUTES; ++attribute)
+    {
+      if (in->GetAbstractAttribute(attribute) == array && array->GetName())
+      {
+        out->SetActiveAttribute(array->GetName(), attribute);
+      }
+    }
+  }
   return local;
 }
 
@@ -479,7 +588,7 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
               (id >= 0 && id < pointsInPiece) ? newId[u][static_cast<std::size_t>(id)] : -1;
           }
           // An invalid id stays invalid (-1); which one it was is said here.
-          invalid.Note(n, pieceIds, pointsInPiece, pieceCellId, usedIndex[u]);
+          invalid.Note(n, pieceIds, pointsInPiece, pieceCellId, usedIndex[u], piece);
           key.assign(ids.begin(), ids.end());
           reversed.assign(ids.rbegin(), ids.rend());
           if (reversed < key)
@@ -510,21 +619,7 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
         {
           cells->ConvertTo32BitStorage();
         }
-        switch (kind)
-        {
-          case 0:
-            combined->SetVerts(cells);
-            break;
-          case 1:
-            combined->SetLines(cells);
-            break;
-          case 2:
-            combined->SetPolys(cells);
-            break;
-          default:
-            combined->SetStrips(cells);
-            break;
-        }
+        SetCellsOfKind(combined, kind, cells);
       }
     }
   }
@@ -600,8 +695,9 @@ bool OverlayStitchGatherInput(vtkMultiProcessController* controller, vtkPolyData
       summary->CellsPerRank.assign(1, local->GetNumberOfCells());
       // Combining pieces finds cells naming missing points; a single input is
       // checked here, so that such a cell is refused in every case alike.
+      // The input's own cell ids, ghost cells skipped.
       InvalidCells invalid{ nullptr };
-      invalid.NoteCells(local, 0);
+      invalid.NoteCells(input ? input : local.Get(), 0);
       summary->InvalidCells = invalid.Count;
       summary->FirstInvalidCell = invalid.First;
     }

@@ -874,6 +874,47 @@ int TestComposite()
     "global ids of every block: no warning, and the cells' reach the Edges (largest " +
       Num(idRange[1]) + ")");
 
+  // In a block with ghost cells, too, a free point is meshed and a cell naming
+  // a missing point is refused by its block and its id in it; so it is in a
+  // composite with a single polydata block.
+  auto ghostBlock = MakeLines({ { 2, 1, 0 }, { 3, 3, 0 }, { 5, 4, 0 } }, { { 0, 1 }, { 0, 1 } });
+  vtkNew<vtkUnsignedCharArray> blockGhosts;
+  blockGhosts->SetName(vtkDataSetAttributes::GhostArrayName());
+  blockGhosts->SetNumberOfTuples(2);
+  blockGhosts->SetValue(0, vtkDataSetAttributes::DUPLICATECELL);
+  blockGhosts->SetValue(1, 0);
+  ghostBlock->GetCellData()->AddArray(blockGhosts);
+  vtkNew<vtkMultiBlockDataSet> withGhostBlock;
+  withGhostBlock->SetNumberOfBlocks(2);
+  withGhostBlock->SetBlock(0, outer);
+  withGhostBlock->SetBlock(1, ghostBlock);
+  Harness freePoint;
+  vtkPolyData* freeMesh =
+    freePoint.Run(withGhostBlock, "a block with a ghost cell and a free point");
+  Check(freePoint.NoError() && HasVertex(freeMesh, 5, 4) && HasVertex(freeMesh, 3, 3) &&
+      Statistic(freeMesh, "InputPoints") == 7,
+    "a block's free point is meshed beside its ghost cell (" +
+      Num(Statistic(freeMesh, "InputPoints")) + " input points)");
+  const vtkIdType toNine[] = { 2, 9 };
+  ghostBlock->GetLines()->InsertNextCell(2, toNine);
+  blockGhosts->InsertNextValue(0);
+  ghostBlock->Modified();
+  Harness danglingBlock;
+  danglingBlock.Run(withGhostBlock, "a block with a ghost cell and a line naming point 9");
+  Check(danglingBlock.Messages->HasError(
+          { "cell 2 of block 2 refers to point 9, but that block has 3 point(s)" }) &&
+      osmtest::AllOutputsEmpty(danglingBlock.Mesher),
+    "beside a ghost cell, a block's line naming a missing point is refused by its ids");
+  vtkNew<vtkMultiBlockDataSet> oneLeaf;
+  oneLeaf->SetNumberOfBlocks(3);
+  oneLeaf->SetBlock(2, ghostBlock);
+  Harness leaf;
+  leaf.Run(oneLeaf, "a single polydata block naming point 9");
+  Check(leaf.Messages->HasError(
+          { "cell 2 of block 3 refers to point 9, but that block has 3 point(s)" }) &&
+      osmtest::AllOutputsEmpty(leaf.Mesher),
+    "the only polydata block of a composite is named by its flat index too");
+
   // The ids are internal: no array of theirs reaches an output, and a
   // composite input without point arrays carries none.
   auto* twiceMesh = vtkPolyData::SafeDownCast(twice.Mesher->GetOutputDataObject(0));
@@ -955,6 +996,25 @@ int TestSerialAsParallel()
   Check(h.NoError(), "no error");
   Check(Statistic(mesh, "InputSegments") == 4,
     "the ghost diagonal is not a segment (" + Num(Statistic(mesh, "InputSegments")) + " segments)");
+
+  // Leaving ghost cells out keeps every point, a free one too, and a cell
+  // naming a missing point is still refused by its own id (found by a
+  // review: VTK's RemoveGhostCells dropped the points no cell used, and read
+  // past its tables for the missing one, naming point 870550016).
+  input->GetPoints()->InsertNextPoint(5, 4, 0); // point 4: free, in no cell
+  input->Modified();
+  mesh = h.Run(input, "a ghost diagonal and a free point");
+  Check(h.NoError() && Statistic(mesh, "InputPoints") == 5 && HasVertex(mesh, 5, 4),
+    "the free point is meshed beside the ghost cell (" + Num(Statistic(mesh, "InputPoints")) +
+      " input points)");
+  const vtkIdType dangling[] = { 1, 9 };
+  input->GetLines()->InsertNextCell(2, dangling); // cell 2, after the ghost cell 1
+  ghosts->InsertNextValue(0);
+  input->Modified();
+  mesh = h.Run(input, "a ghost cell, then a line naming point 9");
+  Check(h.Messages->HasError({ "cell 2 refers to point 9, but the input has 5 point(s)" }) &&
+      mesh->GetNumberOfCells() == 0,
+    "the line naming a missing point is refused by its own id, beside a ghost cell");
   return 0;
 }
 

@@ -303,8 +303,8 @@ def invalid_block(runner):
     # Serial: the block's own ids, by its flat index (3). -np 2: rank 1 holds the
     # third block alone; -np 3: rank 2 does.
     expected = {1: "cell 1 of block 3 refers to point 9, but that block has 2",
-                2: "cell 1 of rank 1 refers to point 9, but that rank has 2",
-                3: "cell 1 of rank 2 refers to point 9, but that rank has 2"}
+                2: "cell 1 of block 3 on rank 1 refers to point 9, but that rank has 2",
+                3: "cell 1 of block 3 on rank 2 refers to point 9, but that rank has 2"}
     for ranks, text in sorted(expected.items()):
         result = runner.mesh("invalid-ids-np%d" % ranks, ranks, vtm)
         check(text in result["log"] and "1 cell(s) refer to points that do not exist" in
