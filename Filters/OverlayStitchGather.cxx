@@ -12,7 +12,6 @@
 #include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
-#include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
@@ -114,13 +113,14 @@ void SetCellsOfKind(vtkPolyData* polyData, int kind, vtkCellArray* cells)
   }
 }
 
-/// Whether cell c is a ghost copy of another piece's cell (flagged duplicate or
-/// hidden in ghosts, the piece's ghost array, if any).
+/// Whether cell c is one that vtkPolyData::RemoveGhostCells() removes (flagged
+/// duplicate, refined or hidden in ghosts, the piece's ghost array, if any).
 bool IsGhostCell(vtkDataArray* ghosts, vtkIdType c)
 {
   return ghosts && c < ghosts->GetNumberOfTuples() &&
     (static_cast<int>(ghosts->GetComponent(c, 0)) &
-      (vtkDataSetAttributes::DUPLICATECELL | vtkDataSetAttributes::HIDDENCELL)) != 0;
+      (vtkDataSetAttributes::DUPLICATECELL | vtkDataSetAttributes::REFINEDCELL |
+        vtkDataSetAttributes::HIDDENCELL)) != 0;
 }
 
 vtkDataArray* GhostsOf(vtkPolyData* piece)
@@ -284,75 +284,47 @@ void NoteArraysLeftOut(
   }
 }
 
-/// A copy of piece without the cells that are ghost copies of another piece's
-/// (flagged duplicate or hidden), or piece itself when it has none. Unlike
-/// vtkPolyData::RemoveGhostCells(), which in ParaView 5.11's VTK drops the
-/// points no cell uses (every input point is meshed), renumbers the rest and
-/// reads past its tables for a cell naming a point that does not exist, the
-/// points, their ids and data stay as they are; the kept cells keep their
-/// data (arrays shorter than the cells stay as they are, for the carriers to
-/// warn about), and the field data is kept.
-vtkSmartPointer<vtkPolyData> WithoutGhostCells(vtkPolyData* piece)
+/// Whether a cell of piece (a ghost cell too) names a point the piece does
+/// not have. (Not from the connectivity's range: VTK caches it, and cells
+/// inserted in place do not renew it.)
+bool NamesMissingPoints(vtkPolyData* piece)
 {
-  vtkDataArray* ghosts = GhostsOf(piece);
-  const vtkIdType cellCount = piece->GetNumberOfCells();
-  vtkNew<vtkIdList> kept;
-  for (vtkIdType c = 0; ghosts && c < cellCount; ++c)
+  const vtkIdType points = piece->GetNumberOfPoints();
+  for (int kind = 0; kind < 4; ++kind)
   {
-    if (!IsGhostCell(ghosts, c))
+    auto it = vtk::TakeSmartPointer(CellsOfKind(piece, kind)->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
     {
-      kept->InsertNextId(c);
+      vtkIdType n;
+      const vtkIdType* ids;
+      it->GetCurrentCell(n, ids);
+      if (std::any_of(ids, ids + n, [points](vtkIdType id) { return id < 0 || id >= points; }))
+      {
+        return true;
+      }
     }
   }
-  if (!ghosts || kept->GetNumberOfIds() == cellCount)
+  return false;
+}
+
+/// A shallow copy of piece without the cells that are ghost copies of another
+/// piece's (piece itself when it has none), its arrays and field data kept.
+/// A piece with a cell naming a missing point keeps its ghost cells: VTK's
+/// RemoveGhostCells() reads past its tables for such a cell, and the input is
+/// refused anyway, naming the cell by its own id.
+vtkSmartPointer<vtkPolyData> WithoutGhostCells(vtkPolyData* piece)
+{
+  if (!piece->GetCellData()->GetArray(vtkDataSetAttributes::GhostArrayName()) ||
+    NamesMissingPoints(piece))
   {
     return piece;
   }
   auto local = vtkSmartPointer<vtkPolyData>::New();
-  local->SetPoints(piece->GetPoints());
-  local->GetPointData()->ShallowCopy(piece->GetPointData());
+  local->ShallowCopy(piece);
+  local->RemoveGhostCells();
+  // RemoveGhostCells() may drop the field data (ParaView 5.11's VTK does): keep
+  // the hole seeds.
   local->GetFieldData()->ShallowCopy(piece->GetFieldData());
-  vtkIdType cellId = 0;
-  for (int kind = 0; kind < 4; ++kind)
-  {
-    vtkNew<vtkCellArray> cells;
-    auto it = vtk::TakeSmartPointer(CellsOfKind(piece, kind)->NewIterator());
-    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cellId)
-    {
-      if (!IsGhostCell(ghosts, cellId))
-      {
-        vtkIdType n;
-        const vtkIdType* ids;
-        it->GetCurrentCell(n, ids);
-        cells->InsertNextCell(n, ids);
-      }
-    }
-    SetCellsOfKind(local, kind, cells);
-  }
-  vtkCellData* in = piece->GetCellData();
-  vtkCellData* out = local->GetCellData();
-  for (int a = 0; a < in->GetNumberOfArrays(); ++a)
-  {
-    vtkAbstractArray* array = in->GetAbstractArray(a);
-    if (array->GetNumberOfTuples() < cellCount)
-    {
-      out->AddArray(array);
-      continue;
-    }
-    auto copy = vtk::TakeSmartPointer(array->NewInstance());
-    copy->SetName(array->GetName());
-    copy->SetNumberOfComponents(array->GetNumberOfComponents());
-    copy->SetNumberOfTuples(kept->GetNumberOfIds());
-    array->GetTuples(kept, copy);
-    out->AddArray(copy);
-    for (int attribute = 0; attribute < vtkDataSetAttributes::NUM_ATTRIBUTES; ++attribute)
-    {
-      if (in->GetAbstractAttribute(attribute) == array && array->GetName())
-      {
-        out->SetActiveAttribute(array->GetName(), attribute);
-      }
-    }
-  }
   return local;
 }
 

@@ -16,8 +16,8 @@
 // kind, same merged point ids, either direction) is the same cell (a ghost
 // copy, or a piece read by every rank). Duplicates inside one piece are kept:
 // they are the user's, and the core merges and reports them as in a serial
-// run. Cells flagged as duplicate (or hidden) ghosts are removed before
-// gathering, each piece keeping every point, one no cell uses too. Point
+// run. Cells flagged as ghosts are removed before gathering (with VTK's
+// RemoveGhostCells, which also drops the points no remaining cell uses). Point
 // and cell arrays common to all non-empty pieces are kept; field data arrays
 // are taken from the first piece that has each name, except "HolePoints"
 // (3-component doubles), whose tuples are collected from every piece and
