@@ -24,22 +24,27 @@ bool OverlayStitchIsMarker(vtkAbstractArray* array, const char* name)
     !OverlayStitchIsFloating(array);
 }
 
-bool OverlayStitchIsBlockIdArray(const char* name)
+namespace
+{
+/// Whether an array is never carried: the ghost array (the outputs are one
+/// piece) or one of the block ids a composite input's cells and points are
+/// given (OverlayStitchGather.h).
+bool IsInternal(const char* name)
 {
   return name &&
-    (std::strcmp(name, OverlayStitchBlockIdName) == 0 ||
+    (std::strcmp(name, vtkDataSetAttributes::GhostArrayName()) == 0 ||
+      std::strcmp(name, OverlayStitchBlockIdName) == 0 ||
       std::strcmp(name, OverlayStitchBlockCellIdName) == 0 ||
       std::strcmp(name, OverlayStitchBlockPointIdName) == 0 ||
       std::strcmp(name, OverlayStitchRankName) == 0);
 }
+} // namespace
 
 bool OverlayStitchHasUserArrays(vtkDataSetAttributes* in)
 {
   for (int i = 0; in && i < in->GetNumberOfArrays(); ++i)
   {
-    const char* name = in->GetArrayName(i);
-    if (!OverlayStitchIsBlockIdArray(name) &&
-      !(name && std::strcmp(name, vtkDataSetAttributes::GhostArrayName()) == 0))
+    if (!IsInternal(in->GetArrayName(i)))
     {
       return true;
     }
@@ -58,8 +63,7 @@ std::vector<vtkAbstractArray*> OverlayStitchCarriedArrays(vtkDataSetAttributes* 
     const char* name = source->GetName();
     const std::string array = std::string("The input's ") + kind + " data array " +
       (name ? name : "(unnamed)") + " is not carried";
-    if ((name && std::strcmp(name, vtkDataSetAttributes::GhostArrayName()) == 0) ||
-      OverlayStitchIsBlockIdArray(name))
+    if (IsInternal(name))
     {
       continue;
     }

@@ -21,10 +21,6 @@ bool OverlayStitchIsFloating(vtkAbstractArray* array);
 /// Whether an array is Triangle's markers by that name: one integer per tuple.
 bool OverlayStitchIsMarker(vtkAbstractArray* array, const char* name);
 
-/// Whether an array is one of the block ids a composite input's cells and
-/// points are given (OverlayStitchGather.h), never the user's.
-bool OverlayStitchIsBlockIdArray(const char* name);
-
 /// Whether in has arrays to carry: any but the block ids and the ghost array.
 bool OverlayStitchHasUserArrays(vtkDataSetAttributes* in);
 

@@ -128,24 +128,11 @@ vtkDataArray* GhostsOf(vtkPolyData* piece)
   return piece->GetCellData()->GetArray(vtkDataSetAttributes::GhostArrayName());
 }
 
-/// "cell 3 of block 2" (and " on rank 1" in a parallel run) for cell c of a
-/// piece whose cells carry the block ids OverlayStitchCombineBlocks gives
-/// them; empty for other pieces.
-std::string CellOfBlock(vtkPolyData* piece, vtkIdType c)
+/// The first of ids[0..n) that names no point of a piece with `points`
+/// points, or ids + n.
+const vtkIdType* FirstMissing(vtkIdType n, const vtkIdType* ids, vtkIdType points)
 {
-  auto value = [&](const char* name) {
-    auto* ids = vtkIdTypeArray::SafeDownCast(piece->GetCellData()->GetAbstractArray(name));
-    return ids && c < ids->GetNumberOfTuples() ? ids->GetValue(c) : vtkIdType(-1);
-  };
-  const vtkIdType block = value(OverlayStitchBlockIdName),
-                  cell = value(OverlayStitchBlockCellIdName);
-  if (block < 0 || cell < 0)
-  {
-    return std::string();
-  }
-  const vtkIdType rank = value(OverlayStitchRankName);
-  return "cell " + std::to_string(cell) + " of block " + std::to_string(block) +
-    (rank >= 0 ? " on rank " + std::to_string(rank) : std::string());
+  return std::find_if(ids, ids + n, [points](vtkIdType id) { return id < 0 || id >= points; });
 }
 
 /// Cells naming a point their piece does not have: counted, and the first (in
@@ -154,8 +141,6 @@ std::string CellOfBlock(vtkPolyData* piece, vtkIdType c)
 struct InvalidCells
 {
   const char* PieceName;
-  /// The number each piece goes by in the message (default: its index).
-  const std::vector<std::size_t>* PieceNumbers = nullptr;
   vtkIdType Count = 0;
   std::string First;
   std::pair<std::size_t, vtkIdType> FirstAt;
@@ -165,8 +150,7 @@ struct InvalidCells
   void Note(vtkIdType n, const vtkIdType* ids, vtkIdType points, vtkIdType cellId,
     std::size_t piece, vtkPolyData* source)
   {
-    const vtkIdType* bad =
-      std::find_if(ids, ids + n, [points](vtkIdType id) { return id < 0 || id >= points; });
+    const vtkIdType* bad = FirstMissing(n, ids, points);
     if (bad == ids + n)
     {
       return;
@@ -175,11 +159,12 @@ struct InvalidCells
     {
       FirstAt = { piece, cellId };
       // A single input (PieceName null) is not named as a piece.
-      const std::string inBlock = CellOfBlock(source, cellId);
+      const std::string inBlock = OverlayStitchBlockSource(
+        source->GetCellData(), OverlayStitchBlockCellIdName, cellId, "cell");
       const std::string cell = !inBlock.empty() ? inBlock
-        : PieceName ? "cell " + std::to_string(cellId) + " of " + PieceName + " " +
-          std::to_string(PieceNumbers ? (*PieceNumbers)[piece] : piece)
-                    : "cell " + std::to_string(cellId);
+        : PieceName
+        ? "cell " + std::to_string(cellId) + " of " + PieceName + " " + std::to_string(piece)
+        : "cell " + std::to_string(cellId);
       // A -1 is what combining a rank's blocks left of an invalid id (said on that rank).
       First = cell + " refers to " +
         (*bad >= 0 ? "point " + std::to_string(*bad) : std::string("a point that does not exist")) +
@@ -298,7 +283,7 @@ bool NamesMissingPoints(vtkPolyData* piece)
       vtkIdType n;
       const vtkIdType* ids;
       it->GetCurrentCell(n, ids);
-      if (std::any_of(ids, ids + n, [points](vtkIdType id) { return id < 0 || id >= points; }))
+      if (FirstMissing(n, ids, points) != ids + n)
       {
         return true;
       }
@@ -388,12 +373,30 @@ const char* const OverlayStitchBlockPointIdName = "vtkOverlayStitchBlockPointId"
 const char* const OverlayStitchRankName = "vtkOverlayStitchRank";
 
 //------------------------------------------------------------------------------
+std::string OverlayStitchBlockSource(
+  vtkDataSetAttributes* data, const char* idName, vtkIdType i, const char* kind)
+{
+  auto value = [&](const char* name) {
+    auto* ids = vtkIdTypeArray::SafeDownCast(data->GetAbstractArray(name));
+    return ids && i >= 0 && i < ids->GetNumberOfTuples() ? ids->GetValue(i) : vtkIdType(-1);
+  };
+  const vtkIdType block = value(OverlayStitchBlockIdName), id = value(idName);
+  if (block < 0 || id < 0)
+  {
+    return std::string();
+  }
+  const vtkIdType rank = value(OverlayStitchRankName);
+  return std::string(kind) + " " + std::to_string(id) + " of block " + std::to_string(block) +
+    (rank >= 0 ? " on rank " + std::to_string(rank) : std::string());
+}
+
+//------------------------------------------------------------------------------
 vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
   const std::vector<vtkSmartPointer<vtkDataObject>>& pieces, OverlayStitchGatherSummary* summary,
-  const char* pieceName, const std::vector<std::size_t>* pieceNumbers)
+  const char* pieceName)
 {
   auto combined = vtkSmartPointer<vtkPolyData>::New();
-  InvalidCells invalid{ pieceName, pieceNumbers };
+  InvalidCells invalid{ pieceName };
 
   // The pieces with points; point and cell arrays are those common to all of them.
   // A piece without points has no valid cell (its cells are reported, not lost).
@@ -717,7 +720,6 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombineBlocks(vtkCompositeDataSet* inp
   }
   ignored.clear();
   std::vector<vtkSmartPointer<vtkDataObject>> blocks;
-  std::vector<std::size_t> flatIndices;
   auto it = vtkSmartPointer<vtkCompositeDataIterator>::Take(input->NewIterator());
   for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
   {
@@ -725,7 +727,6 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombineBlocks(vtkCompositeDataSet* inp
     if (auto* polyData = vtkPolyData::SafeDownCast(leaf))
     {
       blocks.emplace_back(WithBlockIds(polyData, it->GetCurrentFlatIndex()));
-      flatIndices.push_back(it->GetCurrentFlatIndex());
     }
     else if (vtkDataSet* other = vtkDataSet::SafeDownCast(leaf))
     {
@@ -739,5 +740,5 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombineBlocks(vtkCompositeDataSet* inp
   {
     return vtkPolyData::SafeDownCast(blocks.front()); // already a copy
   }
-  return OverlayStitchCombinePieces(blocks, summary, "block", &flatIndices);
+  return OverlayStitchCombinePieces(blocks, summary, "block");
 }

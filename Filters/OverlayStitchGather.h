@@ -40,6 +40,7 @@
 
 class vtkCompositeDataSet;
 class vtkDataObject;
+class vtkDataSetAttributes;
 class vtkMultiProcessController;
 class vtkPolyData;
 
@@ -74,12 +75,12 @@ bool OverlayStitchGatherInput(vtkMultiProcessController* controller, vtkPolyData
 
 /// The combination done on rank 0, exposed for tests: `pieces` in rank order
 /// (null or non-polydata entries count as empty pieces). `pieceName` names a
-/// piece in the summary's FirstInvalidCell ("rank", "block"), with its index
-/// in pieces or, if given, its entry of pieceNumbers (a block's flat index).
+/// piece in the summary's FirstInvalidCell ("rank", "block") with its index in
+/// pieces, unless the piece's cells carry block ids (below): then a cell is
+/// named by its block and its id there.
 vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
   const std::vector<vtkSmartPointer<vtkDataObject>>& pieces,
-  OverlayStitchGatherSummary* summary = nullptr, const char* pieceName = "piece",
-  const std::vector<std::size_t>* pieceNumbers = nullptr);
+  OverlayStitchGatherSummary* summary = nullptr, const char* pieceName = "piece");
 
 /// The arrays OverlayStitchCombineBlocks gives every block's cells and points:
 /// the block's flat index in the composite (cell and point data), and the
@@ -94,6 +95,13 @@ extern const char* const OverlayStitchBlockPointIdName;
 /// pieces that carry block ids): the ids in a block are those of the rank's
 /// part of it.
 extern const char* const OverlayStitchRankName;
+
+/// Where item i (a cell or point of data, the combined input's cell or point
+/// data) comes from, as "point 3 of block 2" (kind "point", idName the id
+/// array of that kind), with " on rank 1" in a parallel run; empty for an
+/// item without block ids (a single dataset, or a rank's piece of one).
+std::string OverlayStitchBlockSource(
+  vtkDataSetAttributes* data, const char* idName, vtkIdType i, const char* kind);
 
 /// A composite input (multiblock, partitioned) is one graph: its polydata
 /// leaves are combined as the ranks' pieces are (in the iteration order of the

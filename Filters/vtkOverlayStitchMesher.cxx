@@ -278,28 +278,6 @@ std::string ExplainHoles(const std::string& text, std::size_t propertySeeds, std
   return out.str();
 }
 
-/// Where item i (a cell or point of a combined composite input) comes from,
-/// as "point 3 of block 2" (kind "point"), from the arrays
-/// OverlayStitchCombineBlocks gave it, with " on rank 1" in a parallel run,
-/// where a rank may hold part of a block only and the id is in that part.
-/// Empty without those arrays (a single dataset, or the pieces of a parallel
-/// run) or for an item of no block.
-std::string InBlock(vtkDataSetAttributes* data, const char* idName, vtkIdType i, const char* kind)
-{
-  auto value = [&](const char* name) {
-    auto* ids = vtkIdTypeArray::SafeDownCast(data->GetAbstractArray(name));
-    return ids && i >= 0 && i < ids->GetNumberOfTuples() ? ids->GetValue(i) : vtkIdType(-1);
-  };
-  const vtkIdType block = value(OverlayStitchBlockIdName), id = value(idName);
-  if (block < 0 || id < 0)
-  {
-    return std::string();
-  }
-  const vtkIdType rank = value(OverlayStitchRankName);
-  return std::string(kind) + " " + std::to_string(id) + " of block " + std::to_string(block) +
-    (rank >= 0 ? " on rank " + std::to_string(rank) : std::string());
-}
-
 /// In a combined composite input, append which block and point each point
 /// the text names ("point 7") is.
 std::string ExplainPoints(const std::string& text, vtkPolyData* input)
@@ -308,7 +286,7 @@ std::string ExplainPoints(const std::string& text, vtkPolyData* input)
   bool any = false;
   for (std::size_t point : NamedNumbers(text, "point ", input->GetNumberOfPoints()))
   {
-    const std::string source = InBlock(
+    const std::string source = OverlayStitchBlockSource(
       input->GetPointData(), OverlayStitchBlockPointIdName, static_cast<vtkIdType>(point), "point");
     if (!source.empty())
     {
@@ -344,8 +322,8 @@ std::string ExplainSegments(const std::string& text, const osm::Array<SegmentSou
       double a[3], b[3];
       input->GetPoint(source.A, a);
       input->GetPoint(source.B, b);
-      const std::string cell =
-        InBlock(input->GetCellData(), OverlayStitchBlockCellIdName, source.Cell, "cell");
+      const std::string cell = OverlayStitchBlockSource(
+        input->GetCellData(), OverlayStitchBlockCellIdName, source.Cell, "cell");
       if (!cell.empty())
       {
         out << " is " << cell << ",";
