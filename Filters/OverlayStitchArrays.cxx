@@ -34,8 +34,8 @@ bool IsInternal(const char* name)
   return name &&
     (std::strcmp(name, vtkDataSetAttributes::GhostArrayName()) == 0 ||
       std::strcmp(name, OverlayStitchBlockIdName) == 0 ||
-      std::strcmp(name, OverlayStitchBlockCellIdName) == 0 ||
-      std::strcmp(name, OverlayStitchBlockPointIdName) == 0 ||
+      std::strcmp(name, OverlayStitchSourceCellIdName) == 0 ||
+      std::strcmp(name, OverlayStitchSourcePointIdName) == 0 ||
       std::strcmp(name, OverlayStitchRankName) == 0);
 }
 } // namespace

@@ -48,30 +48,35 @@ vtkSmartPointer<vtkAbstractArray> NewTarget(vtkAbstractArray* source, vtkIdType 
   return target;
 }
 
-/// For a composite input, whose cells carry their block and their id in it
-/// (OverlayStitchGather.h): cellIds, the combined input's cells, become ids in
-/// their blocks, and out gets "InputBlockId" (the flat index, -1 where no
-/// cell is named).
-void InBlocks(vtkCellData* in, vtkIdTypeArray* cellIds, vtkCellData* out)
+/// For an input whose cells carry their ids in the dataset the user gave
+/// (OverlayStitchGather.h: a composite's blocks, a dataset without its ghost
+/// cells): cellIds, the meshed input's cells, become those ids, and for a
+/// composite out gets "InputBlockId" (the flat index, -1 where no cell is named).
+void ToSourceIds(vtkCellData* in, vtkIdTypeArray* cellIds, vtkCellData* out)
 {
   auto* block = vtkIdTypeArray::SafeDownCast(in->GetAbstractArray(OverlayStitchBlockIdName));
-  auto* inBlock = vtkIdTypeArray::SafeDownCast(in->GetAbstractArray(OverlayStitchBlockCellIdName));
-  if (!block || !inBlock)
+  auto* source = vtkIdTypeArray::SafeDownCast(in->GetAbstractArray(OverlayStitchSourceCellIdName));
+  if (!source)
   {
     return;
   }
   const vtkIdType n = cellIds->GetNumberOfTuples();
-  vtkNew<vtkIdTypeArray> blockIds;
-  blockIds->SetName("InputBlockId");
-  blockIds->SetNumberOfTuples(n);
   vtkIdType* cellOf = cellIds->GetPointer(0);
+  if (block)
+  {
+    vtkNew<vtkIdTypeArray> blockIds;
+    blockIds->SetName("InputBlockId");
+    blockIds->SetNumberOfTuples(n);
+    for (vtkIdType c = 0; c < n; ++c)
+    {
+      blockIds->SetValue(c, cellOf[c] >= 0 ? block->GetValue(cellOf[c]) : -1);
+    }
+    out->AddArray(blockIds);
+  }
   for (vtkIdType c = 0; c < n; ++c)
   {
-    const vtkIdType cell = cellOf[c];
-    blockIds->SetValue(c, cell >= 0 ? block->GetValue(cell) : -1);
-    cellOf[c] = cell >= 0 ? inBlock->GetValue(cell) : -1;
+    cellOf[c] = cellOf[c] >= 0 ? source->GetValue(cellOf[c]) : -1;
   }
-  out->AddArray(blockIds);
 }
 
 /// Adds cellIds ("InputCellId": per output cell its input cell, or -1) to out,
@@ -103,7 +108,7 @@ bool Carry(vtkCellData* in, vtkIdType inputCells, vtkIdTypeArray* cellIds,
       target->SetTuple(c, cellOf[c], source);
     }
   }
-  InBlocks(in, cellIds, out);
+  ToSourceIds(in, cellIds, out);
   out->AddArray(cellIds);
   for (auto& carriedArray : carried)
   {

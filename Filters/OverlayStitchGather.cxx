@@ -159,8 +159,8 @@ struct InvalidCells
     {
       FirstAt = { piece, cellId };
       // A single input (PieceName null) is not named as a piece.
-      const std::string inBlock = OverlayStitchBlockSource(
-        source->GetCellData(), OverlayStitchBlockCellIdName, cellId, "cell");
+      const std::string inBlock =
+        OverlayStitchSource(source->GetCellData(), OverlayStitchSourceCellIdName, cellId, "cell");
       const std::string cell = !inBlock.empty() ? inBlock
         : PieceName
         ? "cell " + std::to_string(cellId) + " of " + PieceName + " " + std::to_string(piece)
@@ -292,27 +292,6 @@ bool NamesMissingPoints(vtkPolyData* piece)
   return false;
 }
 
-/// A shallow copy of piece without the cells that are ghost copies of another
-/// piece's (piece itself when it has none), its arrays and field data kept.
-/// A piece with a cell naming a missing point keeps its ghost cells: VTK's
-/// RemoveGhostCells() reads past its tables for such a cell, and the input is
-/// refused anyway, naming the cell by its own id.
-vtkSmartPointer<vtkPolyData> WithoutGhostCells(vtkPolyData* piece)
-{
-  if (!piece->GetCellData()->GetArray(vtkDataSetAttributes::GhostArrayName()) ||
-    NamesMissingPoints(piece))
-  {
-    return piece;
-  }
-  auto local = vtkSmartPointer<vtkPolyData>::New();
-  local->ShallowCopy(piece);
-  local->RemoveGhostCells();
-  // RemoveGhostCells() may drop the field data (ParaView 5.11's VTK does): keep
-  // the hole seeds.
-  local->GetFieldData()->ShallowCopy(piece->GetFieldData());
-  return local;
-}
-
 /// An id array: value everywhere, or (value < 0) each tuple's own index.
 vtkSmartPointer<vtkIdTypeArray> IdArray(const char* name, vtkIdType n, vtkIdType value)
 {
@@ -330,6 +309,125 @@ vtkSmartPointer<vtkIdTypeArray> IdArray(const char* name, vtkIdType n, vtkIdType
   return ids;
 }
 
+/// The points of piece that no cell uses, ghost cells included (every cell
+/// names points the piece has), and that `kept` (ids of piece's points) lacks.
+std::vector<vtkIdType> PointsInNoCell(vtkPolyData* piece, vtkIdTypeArray* kept)
+{
+  std::vector<char> used(static_cast<std::size_t>(piece->GetNumberOfPoints()), 0);
+  for (vtkIdType i = 0; i < kept->GetNumberOfTuples(); ++i)
+  {
+    used[static_cast<std::size_t>(kept->GetValue(i))] = 1;
+  }
+  for (int kind = 0; kind < 4; ++kind)
+  {
+    auto it = vtk::TakeSmartPointer(CellsOfKind(piece, kind)->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+    {
+      vtkIdType n;
+      const vtkIdType* ids;
+      it->GetCurrentCell(n, ids);
+      for (vtkIdType k = 0; k < n; ++k)
+      {
+        used[static_cast<std::size_t>(ids[k])] = 1;
+      }
+    }
+  }
+  std::vector<vtkIdType> free;
+  for (std::size_t i = 0; i < used.size(); ++i)
+  {
+    if (!used[i])
+    {
+      free.push_back(static_cast<vtkIdType>(i));
+    }
+  }
+  return free;
+}
+
+/// Appends points `ids` of source, with their point data, to local (made
+/// from source by RemoveGhostCells(), so with the same point arrays).
+void AppendPoints(vtkPolyData* local, vtkPolyData* source, const std::vector<vtkIdType>& ids)
+{
+  const vtkIdType kept = local->GetNumberOfPoints();
+  const vtkIdType total = kept + static_cast<vtkIdType>(ids.size());
+  vtkDataSetAttributes::FieldList fields(2);
+  fields.InitializeFieldList(local->GetPointData());
+  fields.IntersectFieldList(source->GetPointData());
+  vtkNew<vtkPoints> points;
+  points->SetDataType(source->GetPoints()->GetDataType());
+  points->SetNumberOfPoints(total);
+  vtkNew<vtkPointData> data;
+  data->CopyGlobalIdsOn();
+  data->CopyAllocate(fields, total);
+  double x[3];
+  for (vtkIdType i = 0; i < kept; ++i)
+  {
+    local->GetPoint(i, x);
+    points->SetPoint(i, x);
+    data->CopyData(fields, local->GetPointData(), 0, i, i);
+  }
+  for (std::size_t k = 0; k < ids.size(); ++k)
+  {
+    const vtkIdType to = kept + static_cast<vtkIdType>(k);
+    source->GetPoint(ids[k], x);
+    points->SetPoint(to, x);
+    data->CopyData(fields, source->GetPointData(), 1, ids[k], to);
+  }
+  local->SetPoints(points);
+  local->GetPointData()->ShallowCopy(data);
+}
+
+/// A shallow copy of piece without the cells that are ghost copies of another
+/// piece's (piece itself when it has none), its arrays and field data kept.
+/// VTK's RemoveGhostCells() renumbers the points and cells and drops every
+/// point no remaining cell uses: the points that no cell used at all, input
+/// vertices of the graph, are put back (after the others). With sourceIds,
+/// the copy's cells and points carry their ids in piece (unless they already
+/// carry ids in a block), so that outputs and messages can name them.
+/// A piece with a cell naming a missing point keeps its ghost cells: VTK's
+/// RemoveGhostCells() reads past its tables for such a cell, and the input is
+/// refused anyway, naming the cell by its own id.
+vtkSmartPointer<vtkPolyData> WithoutGhostCells(vtkPolyData* piece, bool sourceIds)
+{
+  if (!GhostsOf(piece) || NamesMissingPoints(piece))
+  {
+    return piece;
+  }
+  // The point ids tell which points the removal kept.
+  auto source = vtkSmartPointer<vtkPolyData>::New();
+  source->ShallowCopy(piece);
+  const bool hadIds = piece->GetPointData()->GetArray(OverlayStitchSourcePointIdName);
+  if (!hadIds)
+  {
+    source->GetCellData()->AddArray(
+      IdArray(OverlayStitchSourceCellIdName, piece->GetNumberOfCells(), -1));
+    source->GetPointData()->AddArray(
+      IdArray(OverlayStitchSourcePointIdName, piece->GetNumberOfPoints(), -1));
+  }
+  auto local = vtkSmartPointer<vtkPolyData>::New();
+  local->ShallowCopy(source);
+  local->RemoveGhostCells();
+  if (local->GetNumberOfCells() == piece->GetNumberOfCells())
+  {
+    return piece; // no ghost cell, or a ghost array VTK does not accept
+  }
+  // RemoveGhostCells() may drop the field data (ParaView 5.11's VTK does): keep
+  // the hole seeds.
+  local->GetFieldData()->ShallowCopy(piece->GetFieldData());
+  auto* kept =
+    vtkIdTypeArray::SafeDownCast(local->GetPointData()->GetArray(OverlayStitchSourcePointIdName));
+  const std::vector<vtkIdType> free = kept ? PointsInNoCell(piece, kept) : std::vector<vtkIdType>();
+  if (!free.empty())
+  {
+    AppendPoints(local, source, free);
+  }
+  if (!hadIds && !sourceIds)
+  {
+    local->GetCellData()->RemoveArray(OverlayStitchSourceCellIdName);
+    local->GetPointData()->RemoveArray(OverlayStitchSourcePointIdName);
+  }
+  return local;
+}
+
 /// A shallow copy of block whose cells and points carry its flat index and
 /// their ids in it, without its ghost cells: combined with the other blocks,
 /// a ghost copy of a later block's cell would take the place of that cell.
@@ -340,10 +438,10 @@ vtkSmartPointer<vtkPolyData> WithBlockIds(vtkPolyData* block, unsigned int flatI
   const auto index = static_cast<vtkIdType>(flatIndex);
   const vtkIdType cells = block->GetNumberOfCells(), points = block->GetNumberOfPoints();
   copy->GetCellData()->AddArray(IdArray(OverlayStitchBlockIdName, cells, index));
-  copy->GetCellData()->AddArray(IdArray(OverlayStitchBlockCellIdName, cells, -1));
+  copy->GetCellData()->AddArray(IdArray(OverlayStitchSourceCellIdName, cells, -1));
   copy->GetPointData()->AddArray(IdArray(OverlayStitchBlockIdName, points, index));
-  copy->GetPointData()->AddArray(IdArray(OverlayStitchBlockPointIdName, points, -1));
-  return WithoutGhostCells(copy);
+  copy->GetPointData()->AddArray(IdArray(OverlayStitchSourcePointIdName, points, -1));
+  return WithoutGhostCells(copy, true);
 }
 
 /// In a parallel run, a shallow copy of a composite input's piece (one that
@@ -368,12 +466,12 @@ vtkSmartPointer<vtkDataObject> WithRank(vtkDataObject* piece, int rank)
 } // namespace
 
 const char* const OverlayStitchBlockIdName = "vtkOverlayStitchBlockId";
-const char* const OverlayStitchBlockCellIdName = "vtkOverlayStitchBlockCellId";
-const char* const OverlayStitchBlockPointIdName = "vtkOverlayStitchBlockPointId";
+const char* const OverlayStitchSourceCellIdName = "vtkOverlayStitchSourceCellId";
+const char* const OverlayStitchSourcePointIdName = "vtkOverlayStitchSourcePointId";
 const char* const OverlayStitchRankName = "vtkOverlayStitchRank";
 
 //------------------------------------------------------------------------------
-std::string OverlayStitchBlockSource(
+std::string OverlayStitchSource(
   vtkDataSetAttributes* data, const char* idName, vtkIdType i, const char* kind)
 {
   auto value = [&](const char* name) {
@@ -381,12 +479,13 @@ std::string OverlayStitchBlockSource(
     return ids && i >= 0 && i < ids->GetNumberOfTuples() ? ids->GetValue(i) : vtkIdType(-1);
   };
   const vtkIdType block = value(OverlayStitchBlockIdName), id = value(idName);
-  if (block < 0 || id < 0)
+  if (id < 0)
   {
     return std::string();
   }
   const vtkIdType rank = value(OverlayStitchRankName);
-  return std::string(kind) + " " + std::to_string(id) + " of block " + std::to_string(block) +
+  return std::string(kind) + " " + std::to_string(id) +
+    (block >= 0 ? " of block " + std::to_string(block) : std::string(" of the input")) +
     (rank >= 0 ? " on rank " + std::to_string(rank) : std::string());
 }
 
@@ -660,7 +759,7 @@ bool OverlayStitchGatherInput(vtkMultiProcessController* controller, vtkPolyData
   // This rank's piece, without the cells that are ghost copies of another
   // piece's: in a serial run too, so that it meshes what a parallel one does.
   vtkSmartPointer<vtkPolyData> local =
-    input ? WithoutGhostCells(input) : vtkSmartPointer<vtkPolyData>::New();
+    input ? WithoutGhostCells(input, ranks <= 1) : vtkSmartPointer<vtkPolyData>::New();
   if (ranks <= 1)
   {
     gathered = input ? local : nullptr;

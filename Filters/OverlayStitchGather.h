@@ -17,7 +17,7 @@
 // copy, or a piece read by every rank). Duplicates inside one piece are kept:
 // they are the user's, and the core merges and reports them as in a serial
 // run. Cells flagged as ghosts are removed before gathering (with VTK's
-// RemoveGhostCells, which also drops the points no remaining cell uses). Point
+// RemoveGhostCells; the points that no cell used, ghost or not, are kept). Point
 // and cell arrays common to all non-empty pieces are kept; field data arrays
 // are taken from the first piece that has each name, except "HolePoints"
 // (3-component doubles), whose tuples are collected from every piece and
@@ -88,9 +88,11 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
 /// the gather as any array (a point shared by blocks keeps the first block's),
 /// so that the outputs and the messages can name the user's cells and points
 /// (InputBlockId, InputCellId); the filter does not carry them as input arrays.
+/// A single dataset meshed in a serial run gets the id arrays (not the block
+/// index) when its ghost cells are removed, which renumbers its cells and points.
 extern const char* const OverlayStitchBlockIdName;
-extern const char* const OverlayStitchBlockCellIdName;
-extern const char* const OverlayStitchBlockPointIdName;
+extern const char* const OverlayStitchSourceCellIdName;
+extern const char* const OverlayStitchSourcePointIdName;
 /// In a parallel run, the rank each such cell and point came from (on the
 /// pieces that carry block ids): the ids in a block are those of the rank's
 /// part of it.
@@ -98,9 +100,10 @@ extern const char* const OverlayStitchRankName;
 
 /// Where item i (a cell or point of data, the combined input's cell or point
 /// data) comes from, as "point 3 of block 2" (kind "point", idName the id
-/// array of that kind), with " on rank 1" in a parallel run; empty for an
-/// item without block ids (a single dataset, or a rank's piece of one).
-std::string OverlayStitchBlockSource(
+/// array of that kind), with " on rank 1" in a parallel run, or "point 3 of
+/// the input" for a single dataset that carries ids; empty for an item
+/// without ids (a single dataset without ghost cells, or a rank's piece of one).
+std::string OverlayStitchSource(
   vtkDataSetAttributes* data, const char* idName, vtkIdType i, const char* kind);
 
 /// A composite input (multiblock, partitioned) is one graph: its polydata

@@ -220,6 +220,15 @@ std::string NumberingNote(vtkPolyData* input)
     : "";
 }
 
+/// A dataset meshed without its ghost cells has its points renumbered: say so
+/// (ExplainPoints gives each named point's id in the input).
+std::string WithoutGhostsNote(vtkPolyData* input)
+{
+  return input->GetPointData()->GetAbstractArray(OverlayStitchSourcePointIdName)
+    ? " (point numbers in this message count the input's points without its ghost cells)"
+    : "";
+}
+
 std::string Numbered(const std::string& message, const std::string& note)
 {
   return NamesNumberedItems(message) ? message + note : message;
@@ -278,16 +287,16 @@ std::string ExplainHoles(const std::string& text, std::size_t propertySeeds, std
   return out.str();
 }
 
-/// In a combined composite input, append which block and point each point
-/// the text names ("point 7") is.
+/// In a combined composite input, or a dataset without its ghost cells,
+/// append which block and point each point the text names ("point 7") is.
 std::string ExplainPoints(const std::string& text, vtkPolyData* input)
 {
   std::ostringstream out;
   bool any = false;
   for (std::size_t point : NamedNumbers(text, "point ", input->GetNumberOfPoints()))
   {
-    const std::string source = OverlayStitchBlockSource(
-      input->GetPointData(), OverlayStitchBlockPointIdName, static_cast<vtkIdType>(point), "point");
+    const std::string source = OverlayStitchSource(input->GetPointData(),
+      OverlayStitchSourcePointIdName, static_cast<vtkIdType>(point), "point");
     if (!source.empty())
     {
       out << (any ? "; " : " [") << "point " << point << " is " << source;
@@ -322,8 +331,8 @@ std::string ExplainSegments(const std::string& text, const osm::Array<SegmentSou
       double a[3], b[3];
       input->GetPoint(source.A, a);
       input->GetPoint(source.B, b);
-      const std::string cell = OverlayStitchBlockSource(
-        input->GetCellData(), OverlayStitchBlockCellIdName, source.Cell, "cell");
+      const std::string cell = OverlayStitchSource(
+        input->GetCellData(), OverlayStitchSourceCellIdName, source.Cell, "cell");
       if (!cell.empty())
       {
         out << " is " << cell << ",";
@@ -333,7 +342,14 @@ std::string ExplainSegments(const std::string& text, const osm::Array<SegmentSou
     }
     else
     {
-      out << " is cell " << source.Cell << " from point " << source.A << " to point " << source.B;
+      // A dataset without its ghost cells carries its own ids (OverlayStitchGather.h).
+      auto own = [](vtkDataSetAttributes* data, const char* name, vtkIdType i) {
+        auto* ids = vtkIdTypeArray::SafeDownCast(data->GetAbstractArray(name));
+        return ids ? ids->GetValue(i) : i;
+      };
+      out << " is cell " << own(input->GetCellData(), OverlayStitchSourceCellIdName, source.Cell)
+          << " from point " << own(input->GetPointData(), OverlayStitchSourcePointIdName, source.A)
+          << " to point " << own(input->GetPointData(), OverlayStitchSourcePointIdName, source.B);
     }
   }
   out << "]";
@@ -929,7 +945,7 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   // A composite's cells and points carry their blocks' ids: messages add them.
   const bool composite = vtkCompositeDataSet::SafeDownCast(inputObject) != nullptr;
   const bool combined = composite || gather.Ranks > 1;
-  const std::string numbering = !combined ? NumberingNote(input)
+  const std::string numbering = !combined ? NumberingNote(input) + WithoutGhostsNote(input)
     : composite
     ? " (numbers of points, segments and cells in this message count through the combined "
       "input: every polydata block, or every rank's piece, in turn; blocks are named by their "

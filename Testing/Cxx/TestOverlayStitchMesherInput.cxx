@@ -807,9 +807,11 @@ int TestComposite()
   // loses its ghost cells before the blocks are combined, so the copy does
   // not take the real cell's place and then vanish with the ghosts (found by
   // a review: the slit was not meshed when the ghost's block came first).
-  auto withGhost =
-    MakeLines({ { 0, 0, 0 }, { 10, 0, 0 }, { 10, 10, 0 }, { 0, 10, 0 }, { 2, 1, 0 }, { 3, 3, 0 } },
-      { { 0, 1, 2, 3, 0 }, { 4, 5 } });
+  // Its point (7, 7), in no cell, is meshed (VTK's removal of ghost cells
+  // drops it: found by a review).
+  auto withGhost = MakeLines({ { 0, 0, 0 }, { 10, 0, 0 }, { 10, 10, 0 }, { 0, 10, 0 }, { 2, 1, 0 },
+                               { 3, 3, 0 }, { 7, 7, 0 } },
+    { { 0, 1, 2, 3, 0 }, { 4, 5 } });
   vtkNew<vtkUnsignedCharArray> ghostFlags;
   ghostFlags->SetName(vtkDataSetAttributes::GhostArrayName());
   ghostFlags->SetNumberOfTuples(2);
@@ -830,10 +832,12 @@ int TestComposite()
     ghostBlocks->SetBlock(ghostFirst ? 1 : 0, realSlit);
     Harness g;
     vtkPolyData* ghostMesh = g.Run(ghostBlocks, "a ghost copy of another block's line");
-    Check(g.NoError() && Statistic(ghostMesh, "InputSegments") == 5 && HasVertex(ghostMesh, 3, 3),
-      std::string("the real line is meshed, its ghost copy left out, with the ghost's block ") +
+    Check(g.NoError() && Statistic(ghostMesh, "InputSegments") == 5 && HasVertex(ghostMesh, 3, 3) &&
+        HasVertex(ghostMesh, 7, 7) && Statistic(ghostMesh, "InputPoints") == 7,
+      std::string("the real line is meshed, its ghost copy left out, the free point kept, with "
+                  "the ghost's block ") +
         (ghostFirst ? "first" : "second") + " (" + Num(Statistic(ghostMesh, "InputSegments")) +
-        " input segments)");
+        " input segments, " + Num(Statistic(ghostMesh, "InputPoints")) + " input points)");
   }
 
   // Global ids in every block are combined as any common array: no warning
@@ -990,9 +994,7 @@ int TestSerialAsParallel()
 
   // A cell naming a missing point is refused by its own id beside a ghost
   // cell (found by a review: VTK's RemoveGhostCells read past its tables for
-  // it, and the error named point 870550016). (A point no cell uses, here
-  // point 4, is dropped with the ghost cells by VTK's removal: the README
-  // says so.)
+  // it, and the error named point 870550016).
   input->GetPoints()->InsertNextPoint(5, 4, 0);
   input->Modified();
   const vtkIdType dangling[] = { 1, 9 };
@@ -1419,11 +1421,20 @@ int TestMatrix()
 
 /// The square [0, 10]^2 (cell 0, a polyline) split by the segment x = 5
 /// (cell 1), with two lone points; every point carries data.
-vtkSmartPointer<vtkPolyData> SquareWithPointData()
+/// With ghostLine, points 8 and 9 and a diagonal line between them, cell 0,
+/// flagged a ghost cell, come first.
+vtkSmartPointer<vtkPolyData> SquareWithPointData(bool ghostLine = false)
 {
-  auto input = MakeLines({ { 0, 0, 0 }, { 10, 0, 0 }, { 10, 10, 0 }, { 0, 10, 0 }, { 5, 0, 0 },
-                           { 5, 10, 0 }, { 2, 7, 0 }, { 8, 3, 0 } },
-    { { 0, 4, 1, 2, 5, 3, 0 }, { 4, 5 } });
+  std::vector<Xyz> xyz = { { 0, 0, 0 }, { 10, 0, 0 }, { 10, 10, 0 }, { 0, 10, 0 }, { 5, 0, 0 },
+    { 5, 10, 0 }, { 2, 7, 0 }, { 8, 3, 0 } };
+  std::vector<std::vector<vtkIdType>> lines = { { 0, 4, 1, 2, 5, 3, 0 }, { 4, 5 } };
+  if (ghostLine)
+  {
+    xyz.push_back({ 1, 1, 0 });
+    xyz.push_back({ 9, 9, 0 });
+    lines.insert(lines.begin(), { 8, 9 });
+  }
+  auto input = MakeLines(xyz, lines);
   const vtkIdType n = input->GetNumberOfPoints();
   vtkNew<vtkDoubleArray> elevation;
   elevation->SetName("Elevation");
@@ -1454,10 +1465,126 @@ vtkSmartPointer<vtkPolyData> SquareWithPointData()
   input->GetPointData()->SetActiveScalars("Elevation");
   vtkNew<vtkIntArray> segmentMarker;
   segmentMarker->SetName("SegmentMarker");
+  if (ghostLine)
+  {
+    segmentMarker->InsertNextValue(7);
+    vtkNew<vtkUnsignedCharArray> ghosts;
+    ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
+    ghosts->InsertNextValue(vtkDataSetAttributes::DUPLICATECELL);
+    ghosts->InsertNextValue(0);
+    ghosts->InsertNextValue(0);
+    input->GetCellData()->AddArray(ghosts);
+  }
   segmentMarker->InsertNextValue(1);
   segmentMarker->InsertNextValue(2);
   input->GetCellData()->AddArray(segmentMarker);
   return input;
+}
+
+/// Appends a copy of point `from` (its coordinates moved to p) with its tuples.
+vtkIdType AppendPointLike(vtkPolyData* input, vtkIdType from, const Xyz& p)
+{
+  vtkPointData* pd = input->GetPointData();
+  for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
+  {
+    pd->GetAbstractArray(a)->InsertNextTuple(from, pd->GetAbstractArray(a));
+  }
+  const vtkIdType id = input->GetPoints()->InsertNextPoint(p[0], p[1], p[2]);
+  input->Modified();
+  return id;
+}
+
+/// Found by a review of the ghost cells' removal: VTK renumbers the points and
+/// cells that stay, and drops every point no remaining cell uses. A dataset
+/// with a ghost cell first: its free points are meshed with their own data,
+/// the ghost line's points are not, InputCellId names the input's own cells,
+/// and messages give a renumbered point's id in the input.
+int TestGhostCells()
+{
+  Harness h;
+  h.Mesher->SetMaximumEdgeLength(1.0);
+  auto input = SquareWithPointData(true);
+  vtkPolyData* mesh = h.Run(input, "ghost cell first");
+  Check(h.NoError() && h.Messages->Warnings.empty(), "ghost cell first: no message");
+  Check(Statistic(mesh, "InputPoints") == 8 && Statistic(mesh, "InputSegments") == 7,
+    "ghost cell first: 8 input points (the free points 6 and 7, not the ghost line's 8 and 9) "
+    "and 7 segments (" +
+      Num(Statistic(mesh, "InputPoints")) + " and " + Num(Statistic(mesh, "InputSegments")) + ")");
+  vtkPointData* pd = mesh->GetPointData();
+  auto* label = vtkIntArray::SafeDownCast(pd->GetArray("Label"));
+  auto* name = vtkStringArray::SafeDownCast(pd->GetAbstractArray("Name"));
+  auto* elevation = vtkDoubleArray::SafeDownCast(pd->GetArray("Elevation"));
+  auto* origin = vtkUnsignedCharArray::SafeDownCast(pd->GetArray("VertexOrigin"));
+  if (!Check(label && name && elevation && origin && pd->GetScalars() == elevation &&
+          !pd->GetAbstractArray("vtkOverlayStitchSourcePointId"),
+        "ghost cell first: the input's point arrays, no internal one"))
+  {
+    return 1;
+  }
+  std::set<vtkIdType> inputVertices;
+  int wrong = 0;
+  for (vtkIdType v = 0; v < mesh->GetNumberOfPoints(); ++v)
+  {
+    double p[3], q[3];
+    mesh->GetPoint(v, p);
+    wrong += std::fabs(elevation->GetValue(v) - (2 * p[0] - 3 * p[1] + 1)) > 1e-12;
+    if (origin->GetValue(v) == 0)
+    {
+      const vtkIdType i = label->GetValue(v) / 10;
+      input->GetPoint(i, q);
+      wrong += q[0] != p[0] || q[1] != p[1] || name->GetValue(v) != "point " + std::to_string(i);
+      inputVertices.insert(i);
+    }
+  }
+  Check(wrong == 0 && inputVertices == std::set<vtkIdType>{ 0, 1, 2, 3, 4, 5, 6, 7 },
+    "ghost cell first: the input vertices are points 0 to 7, each with its own tuples (" +
+      std::to_string(inputVertices.size()) + " input vertices, " + std::to_string(wrong) +
+      " wrong values)");
+  vtkPolyData* edges = h.Mesher->GetEdgesOutput();
+  auto* cellIds = vtkIdTypeArray::SafeDownCast(edges->GetCellData()->GetArray("InputCellId"));
+  auto* marker = vtkIntArray::SafeDownCast(edges->GetCellData()->GetArray("SegmentMarker"));
+  vtkDataArray* isInput = edges->GetCellData()->GetArray("Input");
+  wrong = 0;
+  vtkIdType inner = 0;
+  for (vtkIdType e = 0; cellIds && marker && isInput && e < edges->GetNumberOfCells(); ++e)
+  {
+    double a[3], b[3];
+    vtkIdList* ids = edges->GetCell(e)->GetPointIds();
+    edges->GetPoint(ids->GetId(0), a);
+    edges->GetPoint(ids->GetId(1), b);
+    const bool onInner = a[0] == 5 && b[0] == 5;
+    inner += onInner;
+    const vtkIdType cell = isInput->GetComponent(e, 0) == 0 ? -1 : onInner ? 2 : 1;
+    wrong += cellIds->GetValue(e) != cell || marker->GetValue(e) != std::max<vtkIdType>(cell, 0);
+  }
+  Check(cellIds && marker && isInput && inner > 0 && wrong == 0,
+    "ghost cell first: the Edges' InputCellId is the input's own cell id, 2 along the inner "
+    "segment and 1 along the boundary, with that cell's SegmentMarker (" +
+      std::to_string(wrong) + " wrong)");
+
+  // A free point given twice, and a crossing: messages give the input's ids.
+  AppendPointLike(input, 7, { 8, 3, 0 }); // point 10
+  mesh = h.Run(input, "ghost cell first, point 7 twice");
+  Check(h.Messages->HasWarning({ "merged 1 duplicate point(s)", "is point 10 of the input",
+          "is point 7 of the input", "count the input's points without its ghost cells" }),
+    "ghost cell first, point 7 twice: the warning names both points by their ids in the input");
+  const vtkIdType from = AppendPointLike(input, 6, { 3, 5, 0 });
+  const vtkIdType to = AppendPointLike(input, 6, { 7, 5, 0 });
+  const vtkIdType crossing[] = { from, to };
+  input->GetLines()->InsertNextCell(2, crossing); // cell 3
+  vtkUnsignedCharArray::SafeDownCast(
+    input->GetCellData()->GetArray(vtkDataSetAttributes::GhostArrayName()))
+    ->InsertNextValue(0);
+  vtkIntArray::SafeDownCast(input->GetCellData()->GetArray("SegmentMarker"))->InsertNextValue(0);
+  input->Modified();
+  h.Mesher->ResolveIntersectionsOff();
+  h.Run(input, "ghost cell first, a crossing line");
+  h.Mesher->ResolveIntersectionsOn();
+  Check(h.Messages->HasError(
+          { "cross", "is cell 2 from point 4 to point 5", "is cell 3 from point 11 to point 12" }),
+    "ghost cell first, a crossing line: the error names both cells and their points by their "
+    "ids in the input");
+  return 0;
 }
 
 int TestPointData()
@@ -1961,7 +2088,7 @@ int TestPolygonData()
     }
     Check(wrong == 0 && named >= (port ? 6 : 2) &&
         !out->GetCellData()->GetArray("vtkOverlayStitchBlockId") &&
-        !out->GetCellData()->GetArray("vtkOverlayStitchBlockCellId"),
+        !out->GetCellData()->GetArray("vtkOverlayStitchSourceCellId"),
       std::string("polygon data: a composite input's ") + (port ? "Edges" : "Mesh") +
         " name each cell's block (InputBlockId) and its cell there (InputCellId); " +
         std::to_string(named) + " named, " + std::to_string(wrong) + " wrong");
@@ -2051,6 +2178,7 @@ int main(int argc, char* argv[])
     { "numbering", TestNumbering },
     { "ignored-cells", TestIgnoredCells },
     { "serial-as-parallel", TestSerialAsParallel },
+    { "ghost-cells", TestGhostCells },
     { "progress", TestProgress },
     { "abort", [points] { return TestAbort(points); } },
     { "measure-big", [points] { return MeasureBig(points); } },
