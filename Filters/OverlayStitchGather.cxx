@@ -135,6 +135,28 @@ const vtkIdType* FirstMissing(vtkIdType n, const vtkIdType* ids, vtkIdType point
   return std::find_if(ids, ids + n, [points](vtkIdType id) { return id < 0 || id >= points; });
 }
 
+/// Calls visit(cellId, n, ids) on every cell of piece in cell id order
+/// (verts, lines, polys, strips) until it returns false.
+template <typename Visit>
+void VisitCells(vtkPolyData* piece, Visit visit)
+{
+  vtkIdType cellId = 0;
+  for (int kind = 0; kind < 4; ++kind)
+  {
+    auto it = vtk::TakeSmartPointer(CellsOfKind(piece, kind)->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cellId)
+    {
+      vtkIdType n;
+      const vtkIdType* ids;
+      it->GetCurrentCell(n, ids);
+      if (!visit(cellId, n, ids))
+      {
+        return;
+      }
+    }
+  }
+}
+
 /// Cells naming a point their piece does not have: counted, and the first (in
 /// piece, then cell id order, whatever order they are seen in) described, by
 /// its block and its id there where the piece comes from a composite input.
@@ -192,22 +214,13 @@ private:
   void NoteAgainst(vtkPolyData* piece, vtkIdType points, std::size_t index)
   {
     vtkDataArray* ghosts = GhostsOf(piece);
-    vtkIdType cellId = 0;
-    for (int kind = 0; kind < 4; ++kind)
-    {
-      auto it = vtk::TakeSmartPointer(CellsOfKind(piece, kind)->NewIterator());
-      for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cellId)
+    VisitCells(piece, [&](vtkIdType cellId, vtkIdType n, const vtkIdType* ids) {
+      if (!IsGhostCell(ghosts, cellId))
       {
-        if (IsGhostCell(ghosts, cellId))
-        {
-          continue;
-        }
-        vtkIdType n;
-        const vtkIdType* ids;
-        it->GetCurrentCell(n, ids);
         Note(n, ids, points, cellId, index, piece);
       }
-    }
+      return true;
+    });
   }
 };
 
@@ -275,21 +288,12 @@ void NoteArraysLeftOut(
 bool NamesMissingPoints(vtkPolyData* piece)
 {
   const vtkIdType points = piece->GetNumberOfPoints();
-  for (int kind = 0; kind < 4; ++kind)
-  {
-    auto it = vtk::TakeSmartPointer(CellsOfKind(piece, kind)->NewIterator());
-    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
-    {
-      vtkIdType n;
-      const vtkIdType* ids;
-      it->GetCurrentCell(n, ids);
-      if (FirstMissing(n, ids, points) != ids + n)
-      {
-        return true;
-      }
-    }
-  }
-  return false;
+  bool missing = false;
+  VisitCells(piece, [&](vtkIdType, vtkIdType n, const vtkIdType* ids) {
+    missing = FirstMissing(n, ids, points) != ids + n;
+    return !missing;
+  });
+  return missing;
 }
 
 /// An id array: value everywhere, or (value < 0) each tuple's own index.
@@ -318,20 +322,13 @@ std::vector<vtkIdType> PointsInNoCell(vtkPolyData* piece, vtkIdTypeArray* kept)
   {
     used[static_cast<std::size_t>(kept->GetValue(i))] = 1;
   }
-  for (int kind = 0; kind < 4; ++kind)
-  {
-    auto it = vtk::TakeSmartPointer(CellsOfKind(piece, kind)->NewIterator());
-    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  VisitCells(piece, [&used](vtkIdType, vtkIdType n, const vtkIdType* ids) {
+    for (vtkIdType k = 0; k < n; ++k)
     {
-      vtkIdType n;
-      const vtkIdType* ids;
-      it->GetCurrentCell(n, ids);
-      for (vtkIdType k = 0; k < n; ++k)
-      {
-        used[static_cast<std::size_t>(ids[k])] = 1;
-      }
+      used[static_cast<std::size_t>(ids[k])] = 1;
     }
-  }
+    return true;
+  });
   std::vector<vtkIdType> free;
   for (std::size_t i = 0; i < used.size(); ++i)
   {
