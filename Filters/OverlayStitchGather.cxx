@@ -12,6 +12,7 @@
 #include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
+#include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
@@ -282,15 +283,16 @@ void NoteArraysLeftOut(
   }
 }
 
-/// Whether a cell of piece (a ghost cell too) names a point the piece does
+/// Whether a cell of piece, not a ghost cell, names a point the piece does
 /// not have. (Not from the connectivity's range: VTK caches it, and cells
 /// inserted in place do not renew it.)
 bool NamesMissingPoints(vtkPolyData* piece)
 {
   const vtkIdType points = piece->GetNumberOfPoints();
+  vtkDataArray* ghosts = GhostsOf(piece);
   bool missing = false;
-  VisitCells(piece, [&](vtkIdType, vtkIdType n, const vtkIdType* ids) {
-    missing = FirstMissing(n, ids, points) != ids + n;
+  VisitCells(piece, [&](vtkIdType cellId, vtkIdType n, const vtkIdType* ids) {
+    missing = !IsGhostCell(ghosts, cellId) && FirstMissing(n, ids, points) != ids + n;
     return !missing;
   });
   return missing;
@@ -313,115 +315,176 @@ vtkSmartPointer<vtkIdTypeArray> IdArray(const char* name, vtkIdType n, vtkIdType
   return ids;
 }
 
-/// The points of piece that no cell uses, ghost cells included (every cell
-/// names points the piece has), and that `kept` (ids of piece's points) lacks.
-std::vector<vtkIdType> PointsInNoCell(vtkPolyData* piece, vtkIdTypeArray* kept)
+/// The arrays of data with fewer tuples than `n` items, removed from it (VTK's
+/// copies read past their end) and returned, to be put back as they are.
+std::vector<vtkSmartPointer<vtkAbstractArray>> TakeShortArrays(
+  vtkDataSetAttributes* data, vtkIdType n)
 {
-  std::vector<char> used(static_cast<std::size_t>(piece->GetNumberOfPoints()), 0);
-  for (vtkIdType i = 0; i < kept->GetNumberOfTuples(); ++i)
+  std::vector<vtkSmartPointer<vtkAbstractArray>> taken;
+  for (int a = data->GetNumberOfArrays() - 1; a >= 0; --a)
   {
-    used[static_cast<std::size_t>(kept->GetValue(i))] = 1;
+    vtkAbstractArray* array = data->GetAbstractArray(a);
+    if (array->GetNumberOfTuples() < n)
+    {
+      taken.emplace_back(array);
+      data->RemoveArray(a);
+    }
   }
-  VisitCells(piece, [&used](vtkIdType, vtkIdType n, const vtkIdType* ids) {
+  return taken;
+}
+
+/// Which points of piece a copy without its ghost cells keeps, in their order
+/// in piece: those the remaining cells use (`kept`, ids in piece) and those
+/// no cell uses at all, input vertices of the graph. (A ghost cell may name
+/// points piece does not have: it is dropped whatever it names.)
+std::vector<vtkIdType> PointsKept(vtkPolyData* piece, vtkIdTypeArray* kept)
+{
+  const vtkIdType points = piece->GetNumberOfPoints();
+  std::vector<char> state(static_cast<std::size_t>(points), 0); // 1 used, 2 kept
+  VisitCells(piece, [&](vtkIdType, vtkIdType n, const vtkIdType* ids) {
     for (vtkIdType k = 0; k < n; ++k)
     {
-      used[static_cast<std::size_t>(ids[k])] = 1;
+      if (ids[k] >= 0 && ids[k] < points)
+      {
+        state[static_cast<std::size_t>(ids[k])] = 1;
+      }
     }
     return true;
   });
-  std::vector<vtkIdType> free;
-  for (std::size_t i = 0; i < used.size(); ++i)
+  for (vtkIdType i = 0; i < kept->GetNumberOfTuples(); ++i)
   {
-    if (!used[i])
+    state[static_cast<std::size_t>(kept->GetValue(i))] = 2;
+  }
+  std::vector<vtkIdType> order;
+  for (std::size_t i = 0; i < state.size(); ++i)
+  {
+    if (state[i] != 1)
     {
-      free.push_back(static_cast<vtkIdType>(i));
+      order.push_back(static_cast<vtkIdType>(i));
     }
   }
-  return free;
+  return order;
 }
 
-/// Appends points `ids` of source, with their point data, to local (made
-/// from source by RemoveGhostCells(), so with the same point arrays).
-void AppendPoints(vtkPolyData* local, vtkPolyData* source, const std::vector<vtkIdType>& ids)
+/// A copy of cells (of local, whose point p is point kept[p] of its source)
+/// naming each point by its index in `order` (ids in the source).
+vtkSmartPointer<vtkCellArray> Renumbered(
+  vtkCellArray* cells, vtkIdTypeArray* kept, const std::vector<vtkIdType>& newId)
 {
-  const vtkIdType kept = local->GetNumberOfPoints();
-  const vtkIdType total = kept + static_cast<vtkIdType>(ids.size());
-  vtkDataSetAttributes::FieldList fields(2);
-  fields.InitializeFieldList(local->GetPointData());
-  fields.IntersectFieldList(source->GetPointData());
-  vtkNew<vtkPoints> points;
-  points->SetDataType(source->GetPoints()->GetDataType());
-  points->SetNumberOfPoints(total);
-  vtkNew<vtkPointData> data;
-  data->CopyGlobalIdsOn();
-  data->CopyAllocate(fields, total);
-  double x[3];
-  for (vtkIdType i = 0; i < kept; ++i)
+  auto out = vtkSmartPointer<vtkCellArray>::New();
+  out->AllocateExact(cells->GetNumberOfCells(), cells->GetNumberOfConnectivityIds());
+  std::vector<vtkIdType> renamed;
+  auto it = vtk::TakeSmartPointer(cells->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
   {
-    local->GetPoint(i, x);
-    points->SetPoint(i, x);
-    data->CopyData(fields, local->GetPointData(), 0, i, i);
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    renamed.resize(static_cast<std::size_t>(n));
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      renamed[static_cast<std::size_t>(k)] =
+        newId[static_cast<std::size_t>(kept->GetValue(ids[k]))];
+    }
+    out->InsertNextCell(n, renamed.data());
   }
-  for (std::size_t k = 0; k < ids.size(); ++k)
-  {
-    const vtkIdType to = kept + static_cast<vtkIdType>(k);
-    source->GetPoint(ids[k], x);
-    points->SetPoint(to, x);
-    data->CopyData(fields, source->GetPointData(), 1, ids[k], to);
-  }
-  local->SetPoints(points);
-  local->GetPointData()->ShallowCopy(data);
+  return out;
 }
 
 /// A shallow copy of piece without the cells that are ghost copies of another
 /// piece's (piece itself when it has none), its arrays and field data kept.
-/// VTK's RemoveGhostCells() renumbers the points and cells and drops every
-/// point no remaining cell uses: the points that no cell used at all, input
-/// vertices of the graph, are put back (after the others). With sourceIds,
-/// the copy's cells and points carry their ids in piece (unless they already
-/// carry ids in a block), so that outputs and messages can name them.
-/// A piece with a cell naming a missing point keeps its ghost cells: VTK's
-/// RemoveGhostCells() reads past its tables for such a cell, and the input is
-/// refused anyway, naming the cell by its own id.
+/// VTK's RemoveGhostCells() removes the cells (its semantics: flagged
+/// duplicate, refined or hidden), but it renumbers the points in the order
+/// the remaining cells use them and drops every point they do not use. The
+/// points are taken here instead: those of the remaining cells and those no
+/// cell used at all (input vertices of the graph), in their order in piece,
+/// so that the mesh is the one of the same data without ghost cells. With
+/// sourceIds, the copy's cells and points carry their ids in piece (unless
+/// they already carry ids in a block), so that outputs and messages can name
+/// them. Arrays too short for their points or cells are left as they are,
+/// for the filter to report. A piece with a cell (not a ghost cell) naming a
+/// missing point is returned as it is, to be refused by that cell's id.
 vtkSmartPointer<vtkPolyData> WithoutGhostCells(vtkPolyData* piece, bool sourceIds)
 {
   if (!GhostsOf(piece) || NamesMissingPoints(piece))
   {
     return piece;
   }
-  // The point ids tell which points the removal kept.
-  auto source = vtkSmartPointer<vtkPolyData>::New();
-  source->ShallowCopy(piece);
+  // The cells without ghosts, each point carrying its id in piece; VTK copies
+  // only that point array.
+  auto local = vtkSmartPointer<vtkPolyData>::New();
+  local->ShallowCopy(piece);
   const bool hadIds = piece->GetPointData()->GetArray(OverlayStitchSourcePointIdName);
+  const auto shortCells = TakeShortArrays(local->GetCellData(), piece->GetNumberOfCells());
   if (!hadIds)
   {
-    source->GetCellData()->AddArray(
+    local->GetCellData()->AddArray(
       IdArray(OverlayStitchSourceCellIdName, piece->GetNumberOfCells(), -1));
-    source->GetPointData()->AddArray(
-      IdArray(OverlayStitchSourcePointIdName, piece->GetNumberOfPoints(), -1));
   }
-  auto local = vtkSmartPointer<vtkPolyData>::New();
-  local->ShallowCopy(source);
+  local->GetPointData()->Initialize();
+  local->GetPointData()->AddArray(IdArray("kept", piece->GetNumberOfPoints(), -1));
   local->RemoveGhostCells();
-  if (local->GetNumberOfCells() == piece->GetNumberOfCells())
+  vtkSmartPointer<vtkIdTypeArray> kept =
+    vtkIdTypeArray::SafeDownCast(local->GetPointData()->GetArray("kept"));
+  if (!kept || local->GetNumberOfCells() == piece->GetNumberOfCells())
   {
     return piece; // no ghost cell, or a ghost array VTK does not accept
+  }
+
+  const std::vector<vtkIdType> order = PointsKept(piece, kept);
+  std::vector<vtkIdType> newId(static_cast<std::size_t>(piece->GetNumberOfPoints()), -1);
+  for (std::size_t k = 0; k < order.size(); ++k)
+  {
+    newId[static_cast<std::size_t>(order[k])] = static_cast<vtkIdType>(k);
+  }
+  for (int kind = 0; kind < 4; ++kind)
+  {
+    SetCellsOfKind(local, kind, Renumbered(CellsOfKind(local, kind), kept, newId));
+  }
+  const auto n = static_cast<vtkIdType>(order.size());
+  vtkNew<vtkPoints> points;
+  points->SetDataType(piece->GetPoints()->GetDataType());
+  points->SetNumberOfPoints(n);
+  for (vtkIdType k = 0; k < n; ++k)
+  {
+    points->SetPoint(k, piece->GetPoint(order[static_cast<std::size_t>(k)]));
+  }
+  local->SetPoints(points);
+  vtkNew<vtkPointData> from;
+  from->ShallowCopy(piece->GetPointData());
+  from->RemoveArray(vtkDataSetAttributes::GhostArrayName()); // as VTK's removal does
+  const auto shortPoints = TakeShortArrays(from, piece->GetNumberOfPoints());
+  vtkNew<vtkIdList> fromIds;
+  fromIds->SetNumberOfIds(n);
+  std::copy(order.begin(), order.end(), fromIds->begin());
+  vtkPointData* to = local->GetPointData();
+  to->Initialize();
+  to->CopyGlobalIdsOn();
+  to->CopyAllocate(from, n);
+  to->CopyData(from.Get(), fromIds.Get(), vtkIdType(0));
+  for (const auto* taken : { &shortPoints, &shortCells })
+  {
+    for (const auto& array : *taken)
+    {
+      (taken == &shortPoints ? static_cast<vtkDataSetAttributes*>(to) : local->GetCellData())
+        ->AddArray(array);
+    }
+  }
+  if (sourceIds && !hadIds)
+  {
+    auto ids = vtkSmartPointer<vtkIdTypeArray>::New();
+    ids->SetName(OverlayStitchSourcePointIdName);
+    ids->SetNumberOfTuples(n);
+    std::copy(order.begin(), order.end(), ids->GetPointer(0));
+    to->AddArray(ids);
+  }
+  else if (!hadIds)
+  {
+    local->GetCellData()->RemoveArray(OverlayStitchSourceCellIdName);
   }
   // RemoveGhostCells() may drop the field data (ParaView 5.11's VTK does): keep
   // the hole seeds.
   local->GetFieldData()->ShallowCopy(piece->GetFieldData());
-  auto* kept =
-    vtkIdTypeArray::SafeDownCast(local->GetPointData()->GetArray(OverlayStitchSourcePointIdName));
-  const std::vector<vtkIdType> free = kept ? PointsInNoCell(piece, kept) : std::vector<vtkIdType>();
-  if (!free.empty())
-  {
-    AppendPoints(local, source, free);
-  }
-  if (!hadIds && !sourceIds)
-  {
-    local->GetCellData()->RemoveArray(OverlayStitchSourceCellIdName);
-    local->GetPointData()->RemoveArray(OverlayStitchSourcePointIdName);
-  }
   return local;
 }
 

@@ -17,7 +17,8 @@
 // copy, or a piece read by every rank). Duplicates inside one piece are kept:
 // they are the user's, and the core merges and reports them as in a serial
 // run. Cells flagged as ghosts are removed before gathering (with VTK's
-// RemoveGhostCells; the points that no cell used, ghost or not, are kept). Point
+// RemoveGhostCells choosing the cells; the points that no cell used are kept,
+// and every point kept keeps its order). Point
 // and cell arrays common to all non-empty pieces are kept; field data arrays
 // are taken from the first piece that has each name, except "HolePoints"
 // (3-component doubles), whose tuples are collected from every piece and

@@ -220,15 +220,6 @@ std::string NumberingNote(vtkPolyData* input)
     : "";
 }
 
-/// A dataset meshed without its ghost cells has its points renumbered: say so
-/// (ExplainPoints gives each named point's id in the input).
-std::string WithoutGhostsNote(vtkPolyData* input)
-{
-  return input->GetPointData()->GetAbstractArray(OverlayStitchSourcePointIdName)
-    ? " (point numbers in this message count the input's points without its ghost cells)"
-    : "";
-}
-
 std::string Numbered(const std::string& message, const std::string& note)
 {
   return NamesNumberedItems(message) ? message + note : message;
@@ -297,7 +288,8 @@ std::string ExplainPoints(const std::string& text, vtkPolyData* input)
   {
     const std::string source = OverlayStitchSource(input->GetPointData(),
       OverlayStitchSourcePointIdName, static_cast<vtkIdType>(point), "point");
-    if (!source.empty())
+    // A dataset's point that kept its id needs no note.
+    if (!source.empty() && source != "point " + std::to_string(point) + " of the input")
     {
       out << (any ? "; " : " [") << "point " << point << " is " << source;
       any = true;
@@ -945,7 +937,7 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   // A composite's cells and points carry their blocks' ids: messages add them.
   const bool composite = vtkCompositeDataSet::SafeDownCast(inputObject) != nullptr;
   const bool combined = composite || gather.Ranks > 1;
-  const std::string numbering = !combined ? NumberingNote(input) + WithoutGhostsNote(input)
+  const std::string numbering = !combined ? NumberingNote(input)
     : composite
     ? " (numbers of points, segments and cells in this message count through the combined "
       "input: every polydata block, or every rank's piece, in turn; blocks are named by their "

@@ -24,6 +24,7 @@
 #include "MesherTestUtils.h"
 
 #include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
 #include "vtkCommand.h"
 #include "vtkDataSetAttributes.h"
@@ -1565,9 +1566,9 @@ int TestGhostCells()
   // A free point given twice, and a crossing: messages give the input's ids.
   AppendPointLike(input, 7, { 8, 3, 0 }); // point 10
   mesh = h.Run(input, "ghost cell first, point 7 twice");
-  Check(h.Messages->HasWarning({ "merged 1 duplicate point(s)", "is point 10 of the input",
-          "is point 7 of the input", "count the input's points without its ghost cells" }),
-    "ghost cell first, point 7 twice: the warning names both points by their ids in the input");
+  Check(h.Messages->HasWarning({ "merged 1 duplicate point(s), e.g. point 8 with point 7 at (8, 3) "
+                                 "[point 8 is point 10 of the input]" }),
+    "ghost cell first, point 7 twice: the warning gives the renumbered point's id in the input");
   const vtkIdType from = AppendPointLike(input, 6, { 3, 5, 0 });
   const vtkIdType to = AppendPointLike(input, 6, { 7, 5, 0 });
   const vtkIdType crossing[] = { from, to };
@@ -1584,6 +1585,71 @@ int TestGhostCells()
           { "cross", "is cell 2 from point 4 to point 5", "is cell 3 from point 11 to point 12" }),
     "ghost cell first, a crossing line: the error names both cells and their points by their "
     "ids in the input");
+
+  // (Found by a second review.) The points keep the input's order, so the mesh
+  // is the one of the same data without ghost cells (VTK's removal numbers
+  // them in the order cells use them), whatever the ghost cells name;
+  // arrays too short for the points or cells are reported, not read past.
+  auto plain = SquareWithPointData();
+  Harness ref;
+  ref.Mesher->SetMaximumEdgeLength(1.0);
+  vtkPolyData* expected = ref.Run(plain, "no ghost cell");
+  auto ghosted = SquareWithPointData();
+  const vtkIdType first[] = { 5, 4 }, nowhere[] = { 4, 99 };
+  vtkNew<vtkCellArray> lines;
+  lines->InsertNextCell(2, first); // a ghost copy of the inner line
+  lines->InsertNextCell(2, nowhere);
+  auto it = vtk::TakeSmartPointer(plain->GetLines()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    lines->InsertNextCell(it->GetCurrentCell());
+  }
+  ghosted->SetLines(lines);
+  vtkNew<vtkUnsignedCharArray> flags;
+  flags->SetName(vtkDataSetAttributes::GhostArrayName());
+  for (const int flag : { 1, 1, 0, 0 })
+  {
+    flags->InsertNextValue(flag ? vtkDataSetAttributes::DUPLICATECELL : 0);
+  }
+  ghosted->GetCellData()->AddArray(flags);
+  vtkNew<vtkIntArray> segmentMarker;
+  segmentMarker->SetName("SegmentMarker");
+  for (const int marker : { 9, 9, 1, 2 })
+  {
+    segmentMarker->InsertNextValue(marker);
+  }
+  ghosted->GetCellData()->AddArray(segmentMarker);
+  mesh = h.Run(ghosted, "ghost copies first, one naming point 99");
+  bool same = h.NoError() && h.Messages->Warnings.empty() &&
+    mesh->GetNumberOfPoints() == expected->GetNumberOfPoints() &&
+    mesh->GetNumberOfCells() == expected->GetNumberOfCells();
+  for (vtkIdType v = 0; same && v < mesh->GetNumberOfPoints(); ++v)
+  {
+    double p[3], q[3];
+    mesh->GetPoint(v, p);
+    expected->GetPoint(v, q);
+    same = p[0] == q[0] && p[1] == q[1];
+  }
+  Check(same,
+    "ghost copies first, one naming point 99: no message, and the mesh of the same data "
+    "without them, point by point");
+  vtkNew<vtkDoubleArray> shortPoints;
+  shortPoints->SetName("Short");
+  shortPoints->SetNumberOfTuples(2);
+  shortPoints->FillValue(1.0);
+  ghosted->GetPointData()->AddArray(shortPoints);
+  vtkNew<vtkDoubleArray> shortCells;
+  shortCells->SetName("ShortCell");
+  shortCells->SetNumberOfTuples(1);
+  shortCells->FillValue(1.0);
+  ghosted->GetCellData()->AddArray(shortCells);
+  h.Mesher->PassCellDataOn();
+  mesh = h.Run(ghosted, "ghost copies first, short arrays");
+  h.Mesher->PassCellDataOff();
+  Check(h.NoError() && !mesh->GetPointData()->GetArray("Short") &&
+      h.Messages->HasWarning({ "point data array Short is not carried", "2 tuples" }) &&
+      h.Messages->HasWarning({ "cell data array ShortCell is not carried", "1 tuples" }),
+    "ghost copies first, short arrays: both are reported as not carried");
   return 0;
 }
 
