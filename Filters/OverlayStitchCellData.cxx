@@ -48,37 +48,6 @@ vtkSmartPointer<vtkAbstractArray> NewTarget(vtkAbstractArray* source, vtkIdType 
   return target;
 }
 
-/// For an input whose cells carry their ids in the dataset the user gave
-/// (OverlayStitchGather.h: a composite's blocks, a dataset without its ghost
-/// cells): cellIds, the meshed input's cells, become those ids, and for a
-/// composite out gets "InputBlockId" (the flat index, -1 where no cell is named).
-void ToSourceIds(vtkCellData* in, vtkIdTypeArray* cellIds, vtkCellData* out)
-{
-  auto* block = vtkIdTypeArray::SafeDownCast(in->GetAbstractArray(OverlayStitchBlockIdName));
-  auto* source = vtkIdTypeArray::SafeDownCast(in->GetAbstractArray(OverlayStitchSourceCellIdName));
-  if (!source)
-  {
-    return;
-  }
-  const vtkIdType n = cellIds->GetNumberOfTuples();
-  vtkIdType* cellOf = cellIds->GetPointer(0);
-  if (block)
-  {
-    vtkNew<vtkIdTypeArray> blockIds;
-    blockIds->SetName("InputBlockId");
-    blockIds->SetNumberOfTuples(n);
-    for (vtkIdType c = 0; c < n; ++c)
-    {
-      blockIds->SetValue(c, cellOf[c] >= 0 ? block->GetValue(cellOf[c]) : -1);
-    }
-    out->AddArray(blockIds);
-  }
-  for (vtkIdType c = 0; c < n; ++c)
-  {
-    cellOf[c] = cellOf[c] >= 0 ? source->GetValue(cellOf[c]) : -1;
-  }
-}
-
 /// Adds cellIds ("InputCellId": per output cell its input cell, or -1) to out,
 /// and a copy of each input array along it: the output cells listed in taking
 /// (those with an input cell) take their cell's tuple. carried lists the
@@ -108,7 +77,7 @@ bool Carry(vtkCellData* in, vtkIdType inputCells, vtkIdTypeArray* cellIds,
       target->SetTuple(c, cellOf[c], source);
     }
   }
-  ToSourceIds(in, cellIds, out);
+  OverlayStitchToSourceIds(in, OverlayStitchSourceCellIdName, cellIds, out);
   out->AddArray(cellIds);
   for (auto& carriedArray : carried)
   {

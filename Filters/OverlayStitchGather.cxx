@@ -550,6 +550,35 @@ std::string OverlayStitchSource(
 }
 
 //------------------------------------------------------------------------------
+void OverlayStitchToSourceIds(vtkDataSetAttributes* in, const char* sourceIdName,
+  vtkIdTypeArray* ids, vtkDataSetAttributes* out)
+{
+  auto* block = vtkIdTypeArray::SafeDownCast(in->GetAbstractArray(OverlayStitchBlockIdName));
+  auto* source = vtkIdTypeArray::SafeDownCast(in->GetAbstractArray(sourceIdName));
+  if (!source)
+  {
+    return;
+  }
+  const vtkIdType n = ids->GetNumberOfTuples();
+  vtkIdType* of = ids->GetPointer(0);
+  if (block)
+  {
+    vtkNew<vtkIdTypeArray> blockIds;
+    blockIds->SetName("InputBlockId");
+    blockIds->SetNumberOfTuples(n);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      blockIds->SetValue(i, of[i] >= 0 ? block->GetValue(of[i]) : -1);
+    }
+    out->AddArray(blockIds);
+  }
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    of[i] = of[i] >= 0 ? source->GetValue(of[i]) : -1;
+  }
+}
+
+//------------------------------------------------------------------------------
 vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
   const std::vector<vtkSmartPointer<vtkDataObject>>& pieces, OverlayStitchGatherSummary* summary,
   const char* pieceName)

@@ -42,6 +42,7 @@
 class vtkCompositeDataSet;
 class vtkDataObject;
 class vtkDataSetAttributes;
+class vtkIdTypeArray;
 class vtkMultiProcessController;
 class vtkPolyData;
 
@@ -106,6 +107,14 @@ extern const char* const OverlayStitchRankName;
 /// without ids (a single dataset without ghost cells, or a rank's piece of one).
 std::string OverlayStitchSource(
   vtkDataSetAttributes* data, const char* idName, vtkIdType i, const char* kind);
+
+/// For an input whose cells or points carry their ids in the dataset the user
+/// gave (the arrays above, `sourceIdName` of in): ids, per output cell or
+/// point the meshed input's item (or -1), become those ids, and for a
+/// composite out gets "InputBlockId" (the flat index, -1 where ids has -1).
+/// Without such ids, nothing changes.
+void OverlayStitchToSourceIds(vtkDataSetAttributes* in, const char* sourceIdName,
+  vtkIdTypeArray* ids, vtkDataSetAttributes* out);
 
 /// A composite input (multiblock, partitioned) is one graph: its polydata
 /// leaves are combined as the ranks' pieces are (in the iteration order of the

@@ -654,6 +654,9 @@ void FillMesh(
     origin->SetValue(i, static_cast<unsigned char>(value));
   }
   output->GetPointData()->AddArray(origin);
+  auto inputPoint = MakeArray<vtkIdTypeArray>("InputPointId", numberOfVertices);
+  std::copy(inputOf.begin(), inputOf.end(), inputPoint->GetPointer(0));
+  output->GetPointData()->AddArray(inputPoint);
 
   const auto numberOfTriangles = static_cast<vtkIdType>(result.mesh.triangles.size());
   auto minAngle = MakeArray<vtkDoubleArray>("MinAngle", numberOfTriangles);
@@ -1154,7 +1157,8 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   if (interpolate)
   {
     OverlayStitchInterpolatePointData(input->GetPointData(), input->GetCellData(), pslg, result,
-      segmentCells, { "VertexOrigin" }, carried, outputSteps(0.9, 0.93), warnings);
+      segmentCells, { "VertexOrigin", "InputPointId", "InputBlockId" }, carried,
+      outputSteps(0.9, 0.93), warnings);
     warn();
     reuse.reset();
   }
@@ -1167,6 +1171,9 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   {
     return 1;
   }
+  OverlayStitchToSourceIds(input->GetPointData(), OverlayStitchSourcePointIdName,
+    vtkIdTypeArray::SafeDownCast(mesh->GetPointData()->GetArray("InputPointId")),
+    mesh->GetPointData());
   if (this->PassCellData)
   {
     OverlayStitchPassPolygonData(input, pslg, result,

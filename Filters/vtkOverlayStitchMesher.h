@@ -42,7 +42,9 @@
  * - port 0 (Mesh): the conforming triangulation. Point data `VertexOrigin`
  *   (0 input vertex, 1 overlay Steiner point, 2 stitch point on a segment,
  *   3 other: a crossing of input segments, or a point splitting a
- *   completed edge longer than MaximumEdgeLength); cell data `MinAngle`, `MaxAngle` (degrees) and
+ *   completed edge longer than MaximumEdgeLength) and `InputPointId` (an
+ *   input vertex's id in the input, -1 for the others; with `InputBlockId`
+ *   for a composite input); cell data `MinAngle`, `MaxAngle` (degrees) and
  * `RegionId`; field data: one single-value array per run statistic.
  * - port 1 (Edges): every overlay edge and every input subsegment as line
  *   cells, with cell data `Overlay`, `Kept`, `Discarded`, `Input` (0/1) and

@@ -12,6 +12,7 @@
 #include "vtkDataArray.h"
 #include "vtkDataObject.h"
 #include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
 #include "vtkLogger.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -31,6 +32,7 @@
 
 #include "MeshWriter.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -340,6 +342,24 @@ std::string Number(double value)
 }
 
 /// Parses the command line; returns false when --help or --version was answered.
+/// Whether a .poly file's first line (after comments) lists 0 vertices, which
+/// it then reads from the .node file beside it.
+bool ListsNoVertices(const std::string& path)
+{
+  std::ifstream file(path);
+  std::string line;
+  while (std::getline(file, line))
+  {
+    const std::size_t start = line.find_first_not_of(" \t\r");
+    if (start == std::string::npos || line[start] == '#')
+    {
+      continue;
+    }
+    return std::strtoll(line.c_str() + start, nullptr, 10) == 0;
+  }
+  return false;
+}
+
 bool ParseArguments(int argc, char* argv[], Arguments& args)
 {
   bool inputGiven = false;
@@ -543,13 +563,37 @@ bool ParseArguments(int argc, char* argv[], Arguments& args)
   {
     written.push_back(args.svg);
   }
+  // A .poly file without vertices reads them from the .node beside it.
+  std::vector<std::string> read = { args.input };
+  if (Extension(args.input) == ".poly" && ListsNoVertices(args.input))
+  {
+    read.push_back(args.input.substr(0, args.input.size() - 5) + ".node");
+  }
+  std::vector<std::filesystem::path> targets;
   for (const std::string& path : written)
   {
-    std::error_code ec;
-    if (std::filesystem::equivalent(path, args.input, ec) && !ec)
+    for (const std::string& input : read)
     {
-      Fail("'" + path + "' is the input file: choose another output name", 2);
+      std::error_code ec;
+      if (std::filesystem::equivalent(path, input, ec) && !ec)
+      {
+        Fail("'" + path + "' is " +
+            (input == args.input ? "the input file"
+                                 : "the .node file the input reads its vertices from") +
+            ": choose another output name",
+          2);
+      }
     }
+    std::error_code ec;
+    // (weakly_canonical leaves a relative path to a new file relative.)
+    std::filesystem::path target =
+      std::filesystem::weakly_canonical(std::filesystem::absolute(path, ec), ec);
+    target = ec ? std::filesystem::path(path).lexically_normal() : target;
+    if (std::find(targets.begin(), targets.end(), target) != targets.end())
+    {
+      Fail("'" + path + "' would be written twice (-o and --svg): choose another name", 2);
+    }
+    targets.push_back(target);
   }
 
   const std::string in = Extension(args.input);
@@ -776,16 +820,136 @@ osm::NodeData NodeDataOf(vtkPolyData* mesh, vtkPolyData* edges)
   return data;
 }
 
-void WriteMesh(
-  const std::string& path, vtkPolyData* mesh, vtkPolyData* edges, OsmOutputWindow* window)
+/// Renumbers r and data as Triangle numbers its output: node i is input point
+/// i (by the mesh's InputPointId), those no triangle uses written too, with
+/// their own coordinates, attributes and markers (merged duplicates, points
+/// in holes: Triangle writes them unless -j), then the other vertices in the
+/// mesh's order; numbers from the input file's first index.
+void ToTriangleNumbering(osm::Result& r, osm::NodeData& data, vtkPolyData* mesh, vtkPolyData* input)
+{
+  vtkDataArray* first = input->GetFieldData()->GetArray("FileFirstIndex");
+  data.firstIndex =
+    first && first->GetNumberOfTuples() == 1 && first->GetComponent(0, 0) == 0 ? 0 : 1;
+  auto* inputIds = vtkIdTypeArray::SafeDownCast(mesh->GetPointData()->GetArray("InputPointId"));
+  const std::size_t inputs = static_cast<std::size_t>(input->GetNumberOfPoints());
+  const std::size_t vertices = r.mesh.vertices.size();
+  if (!inputIds || static_cast<std::size_t>(inputIds->GetNumberOfTuples()) != vertices)
+  {
+    return;
+  }
+  std::vector<int> node(vertices, -1);
+  std::vector<int> meshVertex(inputs, -1);
+  int next = static_cast<int>(inputs);
+  for (std::size_t v = 0; v < vertices; ++v)
+  {
+    const vtkIdType i = inputIds->GetValue(static_cast<vtkIdType>(v));
+    if (i >= 0 && static_cast<std::size_t>(i) < inputs && meshVertex[i] < 0)
+    {
+      meshVertex[i] = static_cast<int>(v);
+      node[v] = static_cast<int>(i);
+    }
+    else
+    {
+      node[v] = next++;
+    }
+  }
+  const std::size_t nodes = static_cast<std::size_t>(next);
+  osm::Array<osm::Point> points(nodes);
+  const std::size_t k = data.attributeCount;
+  std::vector<double> attributes(nodes * k, 0.0);
+  std::vector<int> markers(data.markers.empty() ? 0 : nodes, 0);
+  vtkPointData* in = input->GetPointData();
+  vtkDataArray* inMarkers = in->GetArray("PointMarker");
+  for (std::size_t i = 0; i < inputs; ++i)
+  {
+    if (meshVertex[i] >= 0)
+    {
+      continue;
+    }
+    double p[3];
+    input->GetPoint(static_cast<vtkIdType>(i), p);
+    points[i] = osm::Point{ p[0], p[1] };
+    for (std::size_t a = 0; a < k; ++a)
+    {
+      vtkDataArray* attribute = in->GetArray(("Attribute" + std::to_string(a)).c_str());
+      attributes[i * k + a] =
+        attribute ? attribute->GetComponent(static_cast<vtkIdType>(i), 0) : 0.0;
+    }
+    if (!markers.empty() && inMarkers)
+    {
+      markers[i] = static_cast<int>(inMarkers->GetComponent(static_cast<vtkIdType>(i), 0));
+    }
+  }
+  for (std::size_t v = 0; v < vertices; ++v)
+  {
+    const auto to = static_cast<std::size_t>(node[v]);
+    points[to] = r.mesh.vertices[v];
+    std::copy_n(data.attributes.begin() + static_cast<std::ptrdiff_t>(v * k), k,
+      attributes.begin() + static_cast<std::ptrdiff_t>(to * k));
+    if (!markers.empty())
+    {
+      markers[to] = data.markers[v];
+    }
+  }
+  for (osm::Triangle& t : r.mesh.triangles)
+  {
+    t = { node[static_cast<std::size_t>(t[0])], node[static_cast<std::size_t>(t[1])],
+      node[static_cast<std::size_t>(t[2])] };
+  }
+  r.mesh.vertices = std::move(points);
+  data.attributes = std::move(attributes);
+  data.markers = std::move(markers);
+}
+
+/// A .node file holds a .poly's numbered vertex attributes and markers, and
+/// an .ele file region ids: say which of the mesh's arrays (a .vtp input's
+/// point data, polygon cell data) it leaves out.
+void WarnNotInNodeFiles(vtkPolyData* mesh, OsmOutputWindow* window)
+{
+  std::string left;
+  auto note = [&left](vtkFieldData* data, const char* kind, std::vector<std::string> written) {
+    for (int a = 0; a < data->GetNumberOfArrays(); ++a)
+    {
+      const char* name = data->GetAbstractArray(a)->GetName();
+      const std::string text = name ? name : "(unnamed)";
+      const bool attribute = text.rfind("Attribute", 0) == 0 && text.size() > 9 &&
+        std::all_of(text.begin() + 9, text.end(), [](char c) { return std::isdigit(c) != 0; });
+      if (!attribute && std::find(written.begin(), written.end(), text) == written.end())
+      {
+        left += (left.empty() ? "" : ", ") + std::string(kind) + " " + text;
+      }
+    }
+  };
+  note(mesh->GetPointData(), "point data",
+    { "VertexOrigin", "InputPointId", "InputBlockId", "PointMarker" });
+  note(mesh->GetCellData(), "cell data",
+    { "MinAngle", "MaxAngle", "RegionId", "RegionAttribute", "InputCellId", "InputBlockId" });
+  if (!left.empty())
+  {
+    window->DisplayWarningText(
+      ("not written to the .node/.ele files, which hold a .poly's numbered vertex "
+       "attributes and markers and the region ids only: " +
+        left + " (write .vtp, .vtu or .vtk to keep them)")
+        .c_str());
+  }
+}
+
+void WriteMesh(const std::string& path, vtkPolyData* mesh, vtkPolyData* edges, vtkPolyData* input,
+  OsmOutputWindow* window)
 {
   const std::string ext = Extension(path);
   int ok = 1;
   if (ext == ".node")
   {
     const std::string base = path.substr(0, path.size() - 5);
-    const std::string error =
-      osm::writeTriangleFiles(base, ToResult(mesh, edges), NodeDataOf(mesh, edges));
+    osm::Result result = ToResult(mesh, edges);
+    osm::NodeData data = NodeDataOf(mesh, edges);
+    if (input)
+    {
+      ToTriangleNumbering(result, data, mesh, input);
+    }
+    WarnNotInNodeFiles(mesh, window);
+    const std::string error = osm::writeTriangleFiles(base, result, data);
     if (!error.empty())
     {
       Fail(error);
@@ -936,7 +1100,8 @@ int Run(int argc, char* argv[], OsmOutputWindow* window)
 
   if (!args.output.empty())
   {
-    WriteMesh(args.output, mesh, edges, window);
+    WriteMesh(
+      args.output, mesh, edges, vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0)), window);
   }
   if (!args.svg.empty())
   {

@@ -20,10 +20,15 @@ namespace
 std::vector<int> inputMarkers(
   const Result& r, const MeshEdges& edges, const std::vector<int>& markers, int inputMarker)
 {
-  // Input subsegments are recorded against the edge vertices: map by coordinates.
+  // Input subsegments are recorded against the edge vertices: map by
+  // coordinates, to vertices of triangles (an unused one may share them).
+  std::vector<char> used(r.mesh.vertices.size(), 0);
+  for (const Triangle& t : r.mesh.triangles)
+    used[t[0]] = used[t[1]] = used[t[2]] = 1;
   std::vector<std::pair<Point, int>> byPoint;
   for (std::size_t v = 0; v < r.mesh.vertices.size(); ++v)
-    byPoint.push_back({ r.mesh.vertices[v], static_cast<int>(v) });
+    if (used[v])
+      byPoint.push_back({ r.mesh.vertices[v], static_cast<int>(v) });
   std::sort(
     byPoint.begin(), byPoint.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   auto find = [&](const Point& p) {
@@ -59,13 +64,14 @@ std::string writeTriangleFiles(const std::string& base, const Result& r, const N
     return "cannot write " + base + ".node/.ele/.edge";
   const MeshEdges edges(r.mesh);
   const std::vector<int> marker = inputMarkers(r, edges, data.edgeMarkers, 0);
+  const std::size_t first = data.firstIndex == 0 ? 0 : 1;
   char buf[128];
   node << n << " 2 " << data.attributeCount << " 1\n";
   for (std::size_t v = 0; v < n; ++v)
   {
     // %.17g round-trips every double exactly.
     std::snprintf(
-      buf, sizeof buf, "%zu %.17g %.17g", v + 1, r.mesh.vertices[v].x, r.mesh.vertices[v].y);
+      buf, sizeof buf, "%zu %.17g %.17g", v + first, r.mesh.vertices[v].x, r.mesh.vertices[v].y);
     node << buf;
     for (std::size_t k = 0; k < data.attributeCount; ++k)
     {
@@ -84,8 +90,8 @@ std::string writeTriangleFiles(const std::string& base, const Result& r, const N
   ele << r.mesh.triangles.size() << (attributes ? " 3 2\n" : " 3 1\n");
   for (std::size_t t = 0; t < r.mesh.triangles.size(); ++t)
   {
-    ele << t + 1 << ' ' << r.mesh.triangles[t][0] + 1 << ' ' << r.mesh.triangles[t][1] + 1 << ' '
-        << r.mesh.triangles[t][2] + 1 << ' ';
+    ele << t + first << ' ' << r.mesh.triangles[t][0] + first << ' '
+        << r.mesh.triangles[t][1] + first << ' ' << r.mesh.triangles[t][2] + first << ' ';
     if (attributes)
     {
       std::snprintf(buf, sizeof buf, "%.17g ", r.regionAttribute[t]);
@@ -95,7 +101,7 @@ std::string writeTriangleFiles(const std::string& base, const Result& r, const N
   }
   edge << edges.size() << " 1\n";
   for (std::size_t e = 0; e < edges.size(); ++e)
-    edge << e + 1 << ' ' << edges.lower(e) + 1 << ' ' << edges.higher(e) + 1 << ' '
+    edge << e + first << ' ' << edges.lower(e) + first << ' ' << edges.higher(e) + first << ' '
          << boundaryMarker(marker[e], edges.onBoundary(e)) << '\n';
   return node && ele && edge ? std::string() : "error while writing " + base + ".node/.ele/.edge";
 }

@@ -25,9 +25,14 @@ struct NodeData
   /// Per entry of Result::edges: the .edge marker of the mesh edge it is
   /// when an input subsegment; empty: 0 (then boundary edges 1).
   std::vector<int> edgeMarkers;
+  /// The number of the first node, element and edge: 1, or 0 as in an input
+  /// file that counts from 0 (Triangle numbers its output as its input).
+  int firstIndex = 1;
 };
 
-/// Write base.node, base.ele and base.edge (1-based, as Triangle writes them).
+/// Write base.node, base.ele and base.edge (numbered from data.firstIndex).
+/// Vertices no triangle uses are written too (Triangle writes duplicate input
+/// vertices and those in holes unless -j).
 /// The .edge file lists every mesh edge with Triangle's boundary marker: an
 /// input subsegment's nonzero marker (from edgeMarkers; without them, input
 /// without markers to Triangle), else 1 on the mesh's boundary (the holes'

@@ -93,39 +93,44 @@ def stats_of(*args):
 
 
 def read_triangle_files(base):
-    """Parses base.node/.ele/.edge as osm-mesh writes them; checks the format."""
+    """Parses base.node/.ele/.edge as osm-mesh writes them; checks the format.
+    The files count from the input's first index (0 or 1, as Triangle's do);
+    the indices returned count from 1."""
     def rows(path):
         with open(path) as f:
             return [l.split() for l in f if l.strip() and not l.lstrip().startswith("#")]
 
+    name = os.path.basename(base)
     node = rows(base + ".node")
     n, dim, nattr, nmark = (int(x) for x in node[0])
     check(dim == 2 and nmark == 1 and len(node) == n + 1 and
           all(len(r) == 4 + nattr for r in node[1:]),
-          "%s.node: header '%d 2 %d 1' and %d vertex lines" % (os.path.basename(base), n, nattr, n))
-    check([int(r[0]) for r in node[1:]] == list(range(1, n + 1)),
-          "%s.node: vertices numbered 1..%d" % (os.path.basename(base), n))
+          "%s.node: header '%d 2 %d 1' and %d vertex lines" % (name, n, nattr, n))
+    first = int(node[1][0]) if n else 1
+    check(first in (0, 1) and [int(r[0]) for r in node[1:]] == list(range(first, n + first)),
+          "%s.node: vertices numbered %d..%d" % (name, first, n + first - 1))
     vertices = [(float(r[1]), float(r[2])) for r in node[1:]]
+    shift = 1 - first
 
     ele = rows(base + ".ele")
     t, corners, eattr = (int(x) for x in ele[0])
     check(corners == 3 and len(ele) == t + 1 and all(len(r) == 4 + eattr for r in ele[1:]),
-          "%s.ele: header '%d 3 %d' and %d triangle lines" % (os.path.basename(base), t, eattr, t))
-    check([int(r[0]) for r in ele[1:]] == list(range(1, t + 1)),
-          "%s.ele: triangles numbered 1..%d" % (os.path.basename(base), t))
-    triangles = [tuple(int(x) for x in r[1:4]) for r in ele[1:]]
+          "%s.ele: header '%d 3 %d' and %d triangle lines" % (name, t, eattr, t))
+    check([int(r[0]) for r in ele[1:]] == list(range(first, t + first)),
+          "%s.ele: triangles numbered %d..%d" % (name, first, t + first - 1))
+    triangles = [tuple(int(x) + shift for x in r[1:4]) for r in ele[1:]]
     check(all(1 <= v <= n for tri in triangles for v in tri),
-          "%s.ele: corners are 1-based vertex numbers in 1..%d" % (os.path.basename(base), n))
+          "%s.ele: corners are vertex numbers in %d..%d" % (name, first, n + first - 1))
 
     edge = rows(base + ".edge")
     e, emark = (int(x) for x in edge[0])
     check(emark == 1 and len(edge) == e + 1,
-          "%s.edge: header '%d 1' and %d edge lines" % (os.path.basename(base), e, e))
-    check([int(r[0]) for r in edge[1:]] == list(range(1, e + 1)),
-          "%s.edge: edges numbered 1..%d" % (os.path.basename(base), e))
-    edges = [(int(r[1]), int(r[2]), int(r[3])) for r in edge[1:]]
+          "%s.edge: header '%d 1' and %d edge lines" % (name, e, e))
+    check([int(r[0]) for r in edge[1:]] == list(range(first, e + first)),
+          "%s.edge: edges numbered %d..%d" % (name, first, e + first - 1))
+    edges = [(int(r[1]) + shift, int(r[2]) + shift, int(r[3])) for r in edge[1:]]
     check(all(1 <= a <= n and 1 <= b <= n for a, b, _ in edges),
-          "%s.edge: endpoints are 1-based vertex numbers" % os.path.basename(base))
+          "%s.edge: endpoints are vertex numbers" % name)
     # Euler: every edge of the triangles is listed once.
     mesh_edges = set()
     for a, b, c in triangles:
@@ -418,7 +423,11 @@ def group_formats():
     v, t, e = read_triangle_files(out("rules"))
     with open(out("rules.node")) as f:
         node_rows = [l.split() for l in f if l.strip() and not l.lstrip().startswith("#")][1:]
-    marker_at = {(float(r[1]), float(r[2])): int(r[3]) for r in node_rows}
+    # The vertices of triangles: the point given twice is also listed unused,
+    # with its own marker, as Triangle lists it.
+    used = set(i for tri in t for i in tri)
+    marker_at = {(float(r[1]), float(r[2])): int(r[3])
+                 for k, r in enumerate(node_rows) if k + 1 in used}
     expected_points = {(2.0, 0.0): 5, (0.0, 0.0): 5, (4.0, 0.0): 5, (0.0, 4.0): 1, (4.0, 4.0): 1,
                        (1.0, 2.0): 7, (0.5, 1.0): 0, (1.5, 3.0): 0, (0.5, 3.0): 7, (1.5, 1.0): 7,
                        (3.0, 1.0): 3, (3.0, 3.0): 3, (3.5, 2.0): 9, (3.8, 2.0): 9}
@@ -498,6 +507,41 @@ def group_formats():
           "regions: every inner triangle within the region's maximum area 0.05, the outer "
           "region coarser (%d inner, largest %g; largest outer %g)" % (
               len(inner_areas), max(inner_areas), max(outer_areas)))
+    # Triangle's numbering (found by a user review: the nodes came in the
+    # mesh's order, so no input vertex kept its number): node i is input
+    # point i, counted from the input's first index; a point given twice and
+    # a point in a hole are listed too, used by no triangle, with their own
+    # attribute and marker, as Triangle lists them unless -j.
+    for first in (0, 1):
+        numbered = out("numbered%d.poly" % first)
+        rows = [(0, 0, 10, 1), (6, 0, 11, 1), (6, 6, 12, 1), (0, 6, 13, 1),
+                (2, 2, 14, 0), (4, 2, 15, 0), (4, 4, 16, 0), (2, 4, 17, 0),
+                (6, 6, 18, 4),   # point 2 again
+                (3, 3, 19, 6),   # inside the hole
+                (1, 5, 20, 0)]   # a free point
+        with open(numbered, "w") as f:
+            f.write("%d 2 1 1\n" % len(rows))
+            for k, (x, y, a, m) in enumerate(rows):
+                f.write("%d %g %g %g %d\n" % (k + first, x, y, a, m))
+            f.write("8 0\n")
+            for k, (a, b) in enumerate([(0, 1), (1, 2), (2, 3), (3, 0), (4, 5), (5, 6), (6, 7), (7, 4)]):
+                f.write("%d %d %d\n" % (k + first, a + first, b + first))
+            f.write("1\n%d 3 3\n" % first)
+        mesh_ok(numbered, "-o", out("numbered%d.node" % first))
+        v, t, _ = read_triangle_files(out("numbered%d" % first))
+        with open(out("numbered%d.node" % first)) as f:
+            node_rows = [l.split() for l in f if l.strip() and not l.lstrip().startswith("#")][1:]
+        used = set(i for tri in t for i in tri)
+        listed = [(float(r[1]), float(r[2]), float(r[3]), int(r[4])) for r in node_rows[:len(rows)]]
+        # (The hole's corners are on the boundary: Triangle marks them 1.)
+        expected = [(float(x), float(y), float(a), 1 if 4 <= k <= 7 else m)
+                    for k, (x, y, a, m) in enumerate(rows)]
+        check(int(node_rows[0][0]) == first and listed == expected,
+              "Triangle's numbering, input counting from %d: node i is input point i, numbered "
+              "from %d, with its attribute and marker" % (first, first), str(listed[:4]))
+        check(9 not in used and 10 not in used and all(k + 1 in used for k in (0, 1, 2, 3, 4, 5, 6, 7, 10)),
+              "Triangle's numbering, input counting from %d: the repeated point and the point in "
+              "the hole are used by no triangle, every other input point is" % first, str(sorted(used)[:12]))
     # Uppercase extension and a .node output base in a sub-directory.
     os.makedirs(out("sub"), exist_ok=True)
     mesh_ok(square, "-o", out("sub/UPPER.VTP"))
@@ -555,6 +599,10 @@ def group_inputs():
               ({"InputCellId", "Land"} & names == set()) == (not carried),
               "polygon cell data on the mesh %s %r" % ("with" if carried else "without", extra),
               str(sorted(names)))
+    # A .node output cannot hold them: it says so (found by a user review).
+    p = mesh_ok(land, "-o", out("land.node"))
+    check("not written to the .node/.ele files" in p.stderr and "cell data Land" in p.stderr,
+          "a .node output names the cell data it leaves out", p.stderr[-300:])
     # .node: points only, meshed over their hull.
     node = data("split_pslg.node")
     s = stats_of(node, "-o", out("points.node"))
@@ -678,6 +726,17 @@ def group_errors():
     expect_error([points, "-o", points], 2, ["is the input file"], "-o naming the input")
     expect_error([points, "--svg", points], 2, ["is the input file"], "--svg naming the input")
     check(read_bytes(points) == before, "the input file is left as it was")
+    # Nor the .node file a .poly reads its vertices from (found by a user
+    # review: the second run meshed the first run's output), nor one output
+    # over another.
+    poly = out("points.poly")
+    shutil.copy(data("split_pslg.poly"), poly)
+    expect_error([poly, "-o", points], 2, ["points.node", "the .node file the input reads its vertices from"],
+                 "-o naming the .node file beside a .poly input")
+    check(read_bytes(points) == before, "the .node file beside the input is left as it was")
+    expect_error([poly, "-o", out("twice.vtp"), "--svg", os.path.join(ARGS.out, ".", "twice.vtp")],
+                 2, ["twice.vtp", "written twice"], "-o and --svg naming the same file")
+    check(not os.path.exists(out("twice.vtp")), "a file named twice is not written")
 
 
 def group_determinism():

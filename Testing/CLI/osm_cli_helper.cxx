@@ -144,7 +144,32 @@ struct Mesh
   osm::Array<osm::Triangle> triangles;
 };
 
-/// Triangle's .node + .ele, 1-based, as osm-mesh writes them.
+/// The mesh without the vertices no triangle uses: a .node file lists the
+/// input's duplicate points and those in holes too, as Triangle's does.
+Mesh WithoutUnusedVertices(const Mesh& mesh)
+{
+  std::vector<int> index(mesh.vertices.size(), -1);
+  Mesh used;
+  for (const osm::Triangle& t : mesh.triangles)
+  {
+    osm::Triangle renumbered;
+    for (int k = 0; k < 3; ++k)
+    {
+      int& i = index[static_cast<std::size_t>(t[k])];
+      if (i < 0)
+      {
+        i = static_cast<int>(used.vertices.size());
+        used.vertices.push_back(mesh.vertices[static_cast<std::size_t>(t[k])]);
+      }
+      renumbered[k] = i;
+    }
+    used.triangles.push_back(renumbered);
+  }
+  return used;
+}
+
+/// Triangle's .node + .ele, numbered from 0 or 1 (as the input), as
+/// osm-mesh writes them.
 Mesh ReadTriangleFiles(const std::string& nodePath)
 {
   Mesh mesh;
@@ -153,9 +178,10 @@ Mesh ReadTriangleFiles(const std::string& nodePath)
   {
     Die(nodes.error);
   }
-  if (nodes.firstIndex != 1)
+  const long long first = nodes.firstIndex;
+  if (first != 0 && first != 1)
   {
-    Die(nodePath + ": numbered from " + std::to_string(nodes.firstIndex) + ", not 1");
+    Die(nodePath + ": numbered from " + std::to_string(first) + ", not 0 or 1");
   }
   mesh.vertices = nodes.pslg.points;
   const std::string elePath = nodePath.substr(0, nodePath.size() - 5) + ".ele";
@@ -172,17 +198,18 @@ Mesh ReadTriangleFiles(const std::string& nodePath)
   for (long long t = 0; t < count; ++t)
   {
     long long index = 0, a = 0, b = 0, c = 0;
-    if (!(ele >> index >> a >> b >> c) || index != t + 1)
+    if (!(ele >> index >> a >> b >> c) || index != t + first)
     {
       Die(elePath + ": bad triangle line " + std::to_string(t + 1));
     }
     const long long n = static_cast<long long>(mesh.vertices.size());
     for (long long v : { a, b, c })
     {
-      if (v < 1 || v > n)
+      if (v < first || v >= n + first)
       {
         Die(elePath + ": triangle " + std::to_string(index) + " refers to vertex " +
-          std::to_string(v) + " of 1.." + std::to_string(n));
+          std::to_string(v) + " of " + std::to_string(first) + ".." +
+          std::to_string(n + first - 1));
       }
     }
     for (long long k = 0; k < attributes; ++k)
@@ -193,10 +220,10 @@ Mesh ReadTriangleFiles(const std::string& nodePath)
         Die(elePath + ": missing attribute on triangle " + std::to_string(index));
       }
     }
-    mesh.triangles.push_back(
-      { static_cast<int>(a - 1), static_cast<int>(b - 1), static_cast<int>(c - 1) });
+    mesh.triangles.push_back({ static_cast<int>(a - first), static_cast<int>(b - first),
+      static_cast<int>(c - first) });
   }
-  return mesh;
+  return WithoutUnusedVertices(mesh);
 }
 
 Mesh ReadMesh(const std::string& path)

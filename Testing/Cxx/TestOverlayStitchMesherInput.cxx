@@ -912,11 +912,40 @@ int TestComposite()
     "the only polydata block of a composite is named by its flat index too");
 
   // The ids are internal: no array of theirs reaches an output, and a
-  // composite input without point arrays carries none.
+  // composite input without point arrays carries none. Each input vertex
+  // names its block and its point there (InputBlockId, InputPointId).
   auto* twiceMesh = vtkPolyData::SafeDownCast(twice.Mesher->GetOutputDataObject(0));
-  Check(twiceMesh && twiceMesh->GetPointData()->GetNumberOfArrays() == 1 &&
-      twiceMesh->GetPointData()->GetArray("VertexOrigin"),
-    "the mesh's point data is VertexOrigin alone");
+  vtkPointData* twicePoints = twiceMesh ? twiceMesh->GetPointData() : nullptr;
+  auto* pointIds =
+    twicePoints ? vtkIdTypeArray::SafeDownCast(twicePoints->GetArray("InputPointId")) : nullptr;
+  auto* blockIds =
+    twicePoints ? vtkIdTypeArray::SafeDownCast(twicePoints->GetArray("InputBlockId")) : nullptr;
+  Check(twicePoints && twicePoints->GetNumberOfArrays() == 3 &&
+      twicePoints->GetArray("VertexOrigin") && pointIds && blockIds,
+    "the mesh's point data is VertexOrigin, InputPointId and InputBlockId");
+  int vertices = 0, misnamed = 0;
+  for (vtkIdType v = 0; pointIds && blockIds && v < twiceMesh->GetNumberOfPoints(); ++v)
+  {
+    const vtkIdType block = blockIds->GetValue(v), point = pointIds->GetValue(v);
+    if (block < 0 || point < 0)
+    {
+      misnamed += block != point;
+      continue;
+    }
+    ++vertices;
+    vtkPolyData* source = vtkPolyData::SafeDownCast(withFaulty->GetBlock(block - 1));
+    double p[3], q[3];
+    twiceMesh->GetPoint(v, p);
+    misnamed += !source || point >= source->GetNumberOfPoints();
+    if (source && point < source->GetNumberOfPoints())
+    {
+      source->GetPoint(point, q);
+      misnamed += p[0] != q[0] || p[1] != q[1];
+    }
+  }
+  Check(vertices == 5 && misnamed == 0,
+    "each input vertex names its block and point, which has its coordinates (" +
+      std::to_string(vertices) + " vertices, " + std::to_string(misnamed) + " wrong)");
   return 0;
 }
 
@@ -1522,6 +1551,8 @@ int TestGhostCells()
   {
     return 1;
   }
+  // InputPointId: the input vertices' ids in the input, -1 elsewhere.
+  auto* inputIds = vtkIdTypeArray::SafeDownCast(pd->GetArray("InputPointId"));
   std::set<vtkIdType> inputVertices;
   int wrong = 0;
   for (vtkIdType v = 0; v < mesh->GetNumberOfPoints(); ++v)
@@ -1529,16 +1560,23 @@ int TestGhostCells()
     double p[3], q[3];
     mesh->GetPoint(v, p);
     wrong += std::fabs(elevation->GetValue(v) - (2 * p[0] - 3 * p[1] + 1)) > 1e-12;
+    const vtkIdType inputId = inputIds ? inputIds->GetValue(v) : -2;
     if (origin->GetValue(v) == 0)
     {
       const vtkIdType i = label->GetValue(v) / 10;
       input->GetPoint(i, q);
-      wrong += q[0] != p[0] || q[1] != p[1] || name->GetValue(v) != "point " + std::to_string(i);
+      wrong += q[0] != p[0] || q[1] != p[1] || name->GetValue(v) != "point " + std::to_string(i) ||
+        inputId != i;
       inputVertices.insert(i);
+    }
+    else
+    {
+      wrong += inputId != -1;
     }
   }
   Check(wrong == 0 && inputVertices == std::set<vtkIdType>{ 0, 1, 2, 3, 4, 5, 6, 7 },
-    "ghost cell first: the input vertices are points 0 to 7, each with its own tuples (" +
+    "ghost cell first: the input vertices are points 0 to 7, each with its own tuples and "
+    "InputPointId (" +
       std::to_string(inputVertices.size()) + " input vertices, " + std::to_string(wrong) +
       " wrong values)");
   vtkPolyData* edges = h.Mesher->GetEdgesOutput();

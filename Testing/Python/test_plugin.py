@@ -89,6 +89,20 @@ def main(plugin, data_dir):
     origin = mesh.GetPointData().GetArray("VertexOrigin")
     check(origin is not None and origin.GetNumberOfTuples() == mesh.GetNumberOfPoints(),
           "VertexOrigin per point")
+    # InputPointId: each input vertex's point in the input (same coordinates), -1 elsewhere.
+    input_ids = mesh.GetPointData().GetArray("InputPointId")
+    source = fetch(reader, 0)
+    wrong, named = 0, 0
+    for v in range(mesh.GetNumberOfPoints() if input_ids and origin else 0):
+        i = int(input_ids.GetValue(v))
+        if int(origin.GetValue(v)) == 0:
+            named += 1
+            wrong += not (0 <= i < source.GetNumberOfPoints() and
+                          source.GetPoint(i) == mesh.GetPoint(v))
+        else:
+            wrong += i != -1
+    check(input_ids is not None and named > 0 and wrong == 0,
+          "InputPointId names each input vertex's input point (%d named, %d wrong)" % (named, wrong))
     for name in ("MinAngle", "MaxAngle", "RegionId"):
         array = mesh.GetCellData().GetArray(name)
         check(array is not None and array.GetNumberOfTuples() == triangles, name + " per triangle")
