@@ -220,8 +220,8 @@ Mesh ReadTriangleFiles(const std::string& nodePath)
         Die(elePath + ": missing attribute on triangle " + std::to_string(index));
       }
     }
-    mesh.triangles.push_back({ static_cast<int>(a - first), static_cast<int>(b - first),
-      static_cast<int>(c - first) });
+    mesh.triangles.push_back(
+      { static_cast<int>(a - first), static_cast<int>(b - first), static_cast<int>(c - first) });
   }
   return WithoutUnusedVertices(mesh);
 }
