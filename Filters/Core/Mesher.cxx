@@ -18,11 +18,13 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
 #include <new>
 #include <string>
+#include <vector>
 
 namespace osm
 {
@@ -513,6 +515,34 @@ std::size_t mergeEqualPoints(Work& w, double tol, SeedsAcross& seeds)
   return joined;
 }
 
+/// Appends the edges of hull (from hullBoundary) that no segment joins already.
+/// hullBoundary lists every point on the hull's edges, so a segment along the
+/// hull joins two consecutive hull points; walking it twice would find the
+/// two copies crossing each other wherever rounding put it.
+void appendHullEdges(const Array<int>& hull, Array<Segment>& segments)
+{
+  const std::size_t h = hull.size();
+  const auto key = [](int a, int b) {
+    return (static_cast<std::uint64_t>(std::min(a, b)) << 32) |
+      static_cast<std::uint32_t>(std::max(a, b));
+  };
+  std::vector<std::pair<std::uint64_t, std::size_t>> edges(h);
+  for (std::size_t i = 0; i < h; ++i)
+    edges[i] = { key(hull[i], hull[(i + 1) % h]), i };
+  std::sort(edges.begin(), edges.end());
+  std::vector<char> joined(h, 0);
+  for (const Segment& s : segments)
+  {
+    const auto it =
+      std::lower_bound(edges.begin(), edges.end(), std::make_pair(key(s[0], s[1]), std::size_t(0)));
+    for (auto e = it; e != edges.end() && e->first == key(s[0], s[1]); ++e)
+      joined[e->second] = 1;
+  }
+  for (std::size_t i = 0; i < h; ++i)
+    if (!joined[i])
+      segments.push_back({ hull[i], hull[(i + 1) % h] });
+}
+
 /// Segment s of a round (the input's, then the hull's) as the user numbers it.
 std::string segmentName(const Work& w, int s)
 {
@@ -950,8 +980,7 @@ void Mesher::meshRounds(Work& w)
     Array<Segment> segments = w.segments;
     Array<int> hull;
     const Domain domain = chooseDomain(w, hull);
-    for (std::size_t i = 0; i < hull.size(); ++i)
-      segments.push_back({ hull[i], hull[(i + 1) % hull.size()] });
+    appendHullEdges(hull, segments);
     auto t = Clock::now();
     OverlayOptions oo;
     oo.gamma = st.gamma;

@@ -398,6 +398,33 @@ TEST(Clean, ATinySegmentBesideACrossingIsNotBentAtTheLongSegmentsScale)
   EXPECT_EQ(r.stats.crossingsSplit, 3u);
 }
 
+TEST(Mesher, AHullEdgeAlongASegmentIsNotASecondSegment)
+{
+  // Found by a user review running the README's example (crossing.poly, hull
+  // domain, Gamma 1.2, maximum edge 0.5): the hull's edge along segment 1 was
+  // walked beside it, and the two were split at a "crossing" near (4, 2.75)
+  // with a warning naming an edge of the convex hull.
+  Pslg p;
+  p.points = { { 0, 0 }, { 4, 0 }, { 4, 4 }, { 0, 4 }, { 1, 1 }, { 3, 3.5 } };
+  p.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 }, { 4, 5 }, { 1, 3 } };
+  Options o;
+  o.domain = Domain::Hull;
+  o.minAngleDeg = std::asin(1.0 / 2.4) * 180.0 / std::acos(-1.0);
+  o.maxEdgeLength = 0.5;
+  const Result r = meshAndValidate(p, "crossing.poly, hull, maximum edge 0.5", o);
+  EXPECT_EQ(r.stats.crossingsSplit, 1u);
+  EXPECT_FALSE(mentions(r.warnings, "convex hull"));
+  // A hull edge along no segment is still one (points 0, 1 and 3 only).
+  Pslg open;
+  open.points = { { 0, 0 }, { 4, 0 }, { 4, 4 }, { 1, 1 } };
+  open.segments = { { 0, 1 }, { 1, 2 } };
+  const Result h = meshAndValidate(open, "two sides of a triangle, hull", o);
+  double area = 0;
+  for (const Triangle& t : h.mesh.triangles)
+    area += 0.5 * orient2d(h.mesh.vertices[t[0]], h.mesh.vertices[t[1]], h.mesh.vertices[t[2]]);
+  EXPECT_NEAR(area, 8.0, 1e-9);
+}
+
 TEST(Clean, TinySegmentsAmongCrossingsOfLongOnesAreRefusedAsBelowPrecision)
 {
   // Found by Properties.TinySegmentsAtCrossingsOfLongOnes at 400 seeds (seed
