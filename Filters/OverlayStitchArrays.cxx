@@ -75,13 +75,21 @@ std::vector<vtkAbstractArray*> OverlayStitchCarriedArrays(vtkDataSetAttributes* 
     }
     if (source->GetNumberOfTuples() < items)
     {
-      warnings.push_back(array + ": it has " + std::to_string(source->GetNumberOfTuples()) +
-        " tuples for " + std::to_string(items) + " " + kind + "s.");
+      warnings.push_back(
+        OverlayStitchShortArrayNote(kind, name, source->GetNumberOfTuples(), items));
       continue;
     }
     carried.push_back(source);
   }
   return carried;
+}
+
+std::string OverlayStitchShortArrayNote(
+  const char* kind, const char* name, vtkIdType tuples, vtkIdType items, const std::string& where)
+{
+  return std::string("The input's ") + kind + " data array " + (name ? name : "(unnamed)") +
+    " is not carried: " + (where.empty() ? "it" : where) + " has " + std::to_string(tuples) +
+    " tuples for " + std::to_string(items) + " " + kind + "s.";
 }
 
 void OverlayStitchKeepActive(vtkDataSetAttributes* in, vtkDataSetAttributes* out,

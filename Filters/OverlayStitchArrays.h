@@ -34,6 +34,12 @@ std::vector<vtkAbstractArray*> OverlayStitchCarriedArrays(vtkDataSetAttributes* 
   const char* kind, const char* output, const std::vector<std::string>& reserved,
   std::vector<std::string>& warnings);
 
+/// The warning for an array with fewer tuples than its points or cells (kind
+/// "point" or "cell"): "The input's point data array T is not carried: it has
+/// 2 tuples for 9 points." (`where` names a block or piece instead of "it").
+std::string OverlayStitchShortArrayNote(const char* kind, const char* name, vtkIdType tuples,
+  vtkIdType items, const std::string& where = std::string());
+
 /// Makes in's active attributes (scalars, vectors, ...) active in out where
 /// they are among carried, the arrays carried there; not global or pedigree
 /// ids, which the output repeats, so that they are ids no more.

@@ -2,6 +2,8 @@
 // Copyright (c) 2026, the Overlay Stitch Meshing authors
 #include "OverlayStitchGather.h"
 
+#include "OverlayStitchArrays.h"
+
 #include "vtkAbstractArray.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
@@ -124,9 +126,64 @@ bool IsGhostCell(vtkDataArray* ghosts, vtkIdType c)
         vtkDataSetAttributes::HIDDENCELL)) != 0;
 }
 
+/// The piece's ghost array when VTK's RemoveGhostCells() accepts it (one
+/// unsigned char per cell), else null: its flags then mean nothing here
+/// either, and the cells are meshed as they are.
 vtkDataArray* GhostsOf(vtkPolyData* piece)
 {
-  return piece->GetCellData()->GetArray(vtkDataSetAttributes::GhostArrayName());
+  auto* ghosts = vtkUnsignedCharArray::SafeDownCast(
+    piece->GetCellData()->GetArray(vtkDataSetAttributes::GhostArrayName()));
+  return ghosts && ghosts->GetNumberOfComponents() == 1 &&
+      ghosts->GetNumberOfTuples() >= piece->GetNumberOfCells()
+    ? ghosts
+    : nullptr;
+}
+
+/// Removes from piece (a copy) the point and cell arrays with fewer tuples than
+/// its points or cells, which no copy may read past, noting each in notes
+/// (if given) as the filter reports such an array ("... : it has 2 tuples for
+/// 9 points."; `where` names the piece, e.g. "block 2", or is empty).
+void DropShortArrays(vtkPolyData* piece, const std::string& where, std::vector<std::string>* notes)
+{
+  for (vtkDataSetAttributes* data : { static_cast<vtkDataSetAttributes*>(piece->GetPointData()),
+         static_cast<vtkDataSetAttributes*>(piece->GetCellData()) })
+  {
+    const bool points = data == piece->GetPointData();
+    const vtkIdType n = points ? piece->GetNumberOfPoints() : piece->GetNumberOfCells();
+    for (int a = data->GetNumberOfArrays() - 1; a >= 0; --a)
+    {
+      vtkAbstractArray* array = data->GetAbstractArray(a);
+      if (array->GetNumberOfTuples() >= n)
+      {
+        continue;
+      }
+      if (notes)
+      {
+        notes->push_back(OverlayStitchShortArrayNote(
+          points ? "point" : "cell", array->GetName(), array->GetNumberOfTuples(), n, where));
+      }
+      data->RemoveArray(a);
+    }
+  }
+}
+
+/// Whether piece has a point or cell array with fewer tuples than its items.
+bool HasShortArrays(vtkPolyData* piece)
+{
+  for (auto [data, n] : { std::make_pair(static_cast<vtkDataSetAttributes*>(piece->GetPointData()),
+                            piece->GetNumberOfPoints()),
+         std::make_pair(
+           static_cast<vtkDataSetAttributes*>(piece->GetCellData()), piece->GetNumberOfCells()) })
+  {
+    for (int a = 0; a < data->GetNumberOfArrays(); ++a)
+    {
+      if (data->GetAbstractArray(a)->GetNumberOfTuples() < n)
+      {
+        return true;
+      }
+    }
+  }
+  return false;
 }
 
 /// The first of ids[0..n) that names no point of a piece with `points`
@@ -315,24 +372,6 @@ vtkSmartPointer<vtkIdTypeArray> IdArray(const char* name, vtkIdType n, vtkIdType
   return ids;
 }
 
-/// The arrays of data with fewer tuples than `n` items, removed from it (VTK's
-/// copies read past their end) and returned, to be put back as they are.
-std::vector<vtkSmartPointer<vtkAbstractArray>> TakeShortArrays(
-  vtkDataSetAttributes* data, vtkIdType n)
-{
-  std::vector<vtkSmartPointer<vtkAbstractArray>> taken;
-  for (int a = data->GetNumberOfArrays() - 1; a >= 0; --a)
-  {
-    vtkAbstractArray* array = data->GetAbstractArray(a);
-    if (array->GetNumberOfTuples() < n)
-    {
-      taken.emplace_back(array);
-      data->RemoveArray(a);
-    }
-  }
-  return taken;
-}
-
 /// Which points of piece a copy without its ghost cells keeps, in their order
 /// in piece: those the remaining cells use (`kept`, ids in piece) and those
 /// no cell uses at all, input vertices of the graph. (A ghost cell may name
@@ -401,21 +440,39 @@ vtkSmartPointer<vtkCellArray> Renumbered(
 /// so that the mesh is the one of the same data without ghost cells. With
 /// sourceIds, the copy's cells and points carry their ids in piece (unless
 /// they already carry ids in a block), so that outputs and messages can name
-/// them. Arrays too short for their points or cells are left as they are,
-/// for the filter to report. A piece with a cell (not a ghost cell) naming a
-/// missing point is returned as it is, to be refused by that cell's id.
-vtkSmartPointer<vtkPolyData> WithoutGhostCells(vtkPolyData* piece, bool sourceIds)
+/// them. Arrays too short for their points or cells are left out, each noted
+/// in notes (`where` names the piece). A piece with a cell (not a ghost cell)
+/// naming a missing point is returned as it is, to be refused by that cell's id.
+vtkSmartPointer<vtkPolyData> WithoutGhostCells(
+  vtkPolyData* piece, bool sourceIds, const std::string& where, std::vector<std::string>& notes)
 {
+  vtkAbstractArray* flags =
+    piece->GetCellData()->GetAbstractArray(vtkDataSetAttributes::GhostArrayName());
+  if (flags && !GhostsOf(piece))
+  {
+    notes.push_back(std::string("The cell data array ") + vtkDataSetAttributes::GhostArrayName() +
+      (where.empty() ? "" : " of " + where) +
+      " is not used: ghost cells are flagged by one unsigned char per cell, and the cells it "
+      "flags are meshed.");
+  }
   if (!GhostsOf(piece) || NamesMissingPoints(piece))
   {
     return piece;
   }
+  auto local = vtkSmartPointer<vtkPolyData>::New();
+  if (piece->GetNumberOfPoints() == 0)
+  {
+    // VTK removes nothing then; every cell is a ghost cell or names no point.
+    local->GetFieldData()->ShallowCopy(piece->GetFieldData());
+    return local;
+  }
   // The cells without ghosts, each point carrying its id in piece; VTK copies
   // only that point array.
-  auto local = vtkSmartPointer<vtkPolyData>::New();
-  local->ShallowCopy(piece);
+  auto source = vtkSmartPointer<vtkPolyData>::New();
+  source->ShallowCopy(piece);
+  DropShortArrays(source, where, &notes);
+  local->ShallowCopy(source);
   const bool hadIds = piece->GetPointData()->GetArray(OverlayStitchSourcePointIdName);
-  const auto shortCells = TakeShortArrays(local->GetCellData(), piece->GetNumberOfCells());
   if (!hadIds)
   {
     local->GetCellData()->AddArray(
@@ -428,7 +485,7 @@ vtkSmartPointer<vtkPolyData> WithoutGhostCells(vtkPolyData* piece, bool sourceId
     vtkIdTypeArray::SafeDownCast(local->GetPointData()->GetArray("kept"));
   if (!kept || local->GetNumberOfCells() == piece->GetNumberOfCells())
   {
-    return piece; // no ghost cell, or a ghost array VTK does not accept
+    return source; // no ghost cell
   }
 
   const std::vector<vtkIdType> order = PointsKept(piece, kept);
@@ -451,9 +508,8 @@ vtkSmartPointer<vtkPolyData> WithoutGhostCells(vtkPolyData* piece, bool sourceId
   }
   local->SetPoints(points);
   vtkNew<vtkPointData> from;
-  from->ShallowCopy(piece->GetPointData());
+  from->ShallowCopy(source->GetPointData());
   from->RemoveArray(vtkDataSetAttributes::GhostArrayName()); // as VTK's removal does
-  const auto shortPoints = TakeShortArrays(from, piece->GetNumberOfPoints());
   vtkNew<vtkIdList> fromIds;
   fromIds->SetNumberOfIds(n);
   std::copy(order.begin(), order.end(), fromIds->begin());
@@ -462,14 +518,6 @@ vtkSmartPointer<vtkPolyData> WithoutGhostCells(vtkPolyData* piece, bool sourceId
   to->CopyGlobalIdsOn();
   to->CopyAllocate(from, n);
   to->CopyData(from.Get(), fromIds.Get(), vtkIdType(0));
-  for (const auto* taken : { &shortPoints, &shortCells })
-  {
-    for (const auto& array : *taken)
-    {
-      (taken == &shortPoints ? static_cast<vtkDataSetAttributes*>(to) : local->GetCellData())
-        ->AddArray(array);
-    }
-  }
   if (sourceIds && !hadIds)
   {
     auto ids = vtkSmartPointer<vtkIdTypeArray>::New();
@@ -488,10 +536,30 @@ vtkSmartPointer<vtkPolyData> WithoutGhostCells(vtkPolyData* piece, bool sourceId
   return local;
 }
 
+/// How messages name a piece: by its block (and rank) when it carries block
+/// ids, else as "rank 1" (pieceName and index).
+std::string PieceLabel(vtkPolyData* piece, const char* pieceName, std::size_t index)
+{
+  for (vtkDataSetAttributes* data : { static_cast<vtkDataSetAttributes*>(piece->GetCellData()),
+         static_cast<vtkDataSetAttributes*>(piece->GetPointData()) })
+  {
+    auto* block = vtkIdTypeArray::SafeDownCast(data->GetAbstractArray(OverlayStitchBlockIdName));
+    auto* rank = vtkIdTypeArray::SafeDownCast(data->GetAbstractArray(OverlayStitchRankName));
+    if (block && block->GetNumberOfTuples() > 0)
+    {
+      return "block " + std::to_string(block->GetValue(0)) +
+        (rank && rank->GetNumberOfTuples() > 0 ? " on rank " + std::to_string(rank->GetValue(0))
+                                               : std::string());
+    }
+  }
+  return std::string(pieceName) + " " + std::to_string(index);
+}
+
 /// A shallow copy of block whose cells and points carry its flat index and
 /// their ids in it, without its ghost cells: combined with the other blocks,
 /// a ghost copy of a later block's cell would take the place of that cell.
-vtkSmartPointer<vtkPolyData> WithBlockIds(vtkPolyData* block, unsigned int flatIndex)
+vtkSmartPointer<vtkPolyData> WithBlockIds(
+  vtkPolyData* block, unsigned int flatIndex, std::vector<std::string>& notes)
 {
   auto copy = vtkSmartPointer<vtkPolyData>::New();
   copy->ShallowCopy(block);
@@ -501,7 +569,7 @@ vtkSmartPointer<vtkPolyData> WithBlockIds(vtkPolyData* block, unsigned int flatI
   copy->GetCellData()->AddArray(IdArray(OverlayStitchSourceCellIdName, cells, -1));
   copy->GetPointData()->AddArray(IdArray(OverlayStitchBlockIdName, points, index));
   copy->GetPointData()->AddArray(IdArray(OverlayStitchSourcePointIdName, points, -1));
-  return WithoutGhostCells(copy, true);
+  return WithoutGhostCells(copy, true, "block " + std::to_string(flatIndex), notes);
 }
 
 /// In a parallel run, a shallow copy of a composite input's piece (one that
@@ -590,9 +658,20 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
   // A piece without points has no valid cell (its cells are reported, not lost).
   std::vector<vtkPolyData*> used;
   std::vector<std::size_t> usedIndex;
+  // Arrays too short for their piece are left out (the copies below would
+  // read past them), each noted.
+  std::vector<vtkSmartPointer<vtkPolyData>> trimmed(pieces.size());
+  std::vector<std::string> notes;
   for (std::size_t p = 0; p < pieces.size(); ++p)
   {
     vtkPolyData* polyData = vtkPolyData::SafeDownCast(pieces[p]);
+    if (polyData && HasShortArrays(polyData))
+    {
+      trimmed[p] = vtkSmartPointer<vtkPolyData>::New();
+      trimmed[p]->ShallowCopy(polyData);
+      DropShortArrays(trimmed[p], PieceLabel(polyData, pieceName, p), &notes);
+      polyData = trimmed[p];
+    }
     if (polyData && polyData->GetNumberOfPoints() > 0)
     {
       used.push_back(polyData);
@@ -831,6 +910,7 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
   if (summary)
   {
     NoteArraysLeftOut(used, combined, summary->ArraysLeftOut);
+    summary->NotCarried = notes;
     summary->SharedPointsMerged = sharedPoints;
     summary->SharedCellsDropped = sharedCells;
     summary->HolePoints = static_cast<vtkIdType>(seeds.size());
@@ -847,8 +927,12 @@ bool OverlayStitchGatherInput(vtkMultiProcessController* controller, vtkPolyData
   const int ranks = controller ? controller->GetNumberOfProcesses() : 1;
   // This rank's piece, without the cells that are ghost copies of another
   // piece's: in a serial run too, so that it meshes what a parallel one does.
-  vtkSmartPointer<vtkPolyData> local =
-    input ? WithoutGhostCells(input, ranks <= 1) : vtkSmartPointer<vtkPolyData>::New();
+  std::vector<std::string> notes;
+  vtkSmartPointer<vtkPolyData> local = input
+    ? WithoutGhostCells(input, ranks <= 1,
+        ranks > 1 ? "the piece of rank " + std::to_string(controller->GetLocalProcessId()) : "",
+        notes)
+    : vtkSmartPointer<vtkPolyData>::New();
   if (ranks <= 1)
   {
     gathered = input ? local : nullptr;
@@ -863,6 +947,7 @@ bool OverlayStitchGatherInput(vtkMultiProcessController* controller, vtkPolyData
       invalid.NoteCells(input ? input : local.Get(), 0);
       summary->InvalidCells = invalid.Count;
       summary->FirstInvalidCell = invalid.First;
+      summary->NotCarried = notes;
     }
     return true;
   }
@@ -895,6 +980,10 @@ bool OverlayStitchGatherInput(vtkMultiProcessController* controller, vtkPolyData
     pieces[rank] = WithRank(pieces[rank], static_cast<int>(rank));
   }
   gathered = OverlayStitchCombinePieces(pieces, summary, "rank");
+  if (summary)
+  {
+    summary->NotCarried.insert(summary->NotCarried.begin(), notes.begin(), notes.end());
+  }
   return true;
 }
 
@@ -907,6 +996,7 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombineBlocks(vtkCompositeDataSet* inp
     *summary = OverlayStitchGatherSummary();
   }
   ignored.clear();
+  std::vector<std::string> notes;
   std::vector<vtkSmartPointer<vtkDataObject>> blocks;
   auto it = vtkSmartPointer<vtkCompositeDataIterator>::Take(input->NewIterator());
   for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
@@ -914,7 +1004,7 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombineBlocks(vtkCompositeDataSet* inp
     vtkDataObject* leaf = it->GetCurrentDataObject();
     if (auto* polyData = vtkPolyData::SafeDownCast(leaf))
     {
-      blocks.emplace_back(WithBlockIds(polyData, it->GetCurrentFlatIndex()));
+      blocks.emplace_back(WithBlockIds(polyData, it->GetCurrentFlatIndex(), notes));
     }
     else if (vtkDataSet* other = vtkDataSet::SafeDownCast(leaf))
     {
@@ -926,7 +1016,17 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombineBlocks(vtkCompositeDataSet* inp
   }
   if (blocks.size() == 1)
   {
-    return vtkPolyData::SafeDownCast(blocks.front()); // already a copy
+    vtkPolyData* only = vtkPolyData::SafeDownCast(blocks.front()); // already a copy
+    if (summary)
+    {
+      summary->NotCarried = notes;
+    }
+    return only;
   }
-  return OverlayStitchCombinePieces(blocks, summary, "block");
+  auto combined = OverlayStitchCombinePieces(blocks, summary, "block");
+  if (summary)
+  {
+    summary->NotCarried.insert(summary->NotCarried.begin(), notes.begin(), notes.end());
+  }
+  return combined;
 }

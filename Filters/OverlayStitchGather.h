@@ -62,6 +62,9 @@ struct OverlayStitchGatherSummary
   /// Point and cell arrays of some pieces but not all ("cell data Tag"): the
   /// combined input has only those common to every piece.
   std::vector<std::string> ArraysLeftOut;
+  /// Arrays left out of a piece or block for other reasons (fewer tuples than
+  /// its points or cells; a ghost array VTK cannot use), one sentence each.
+  std::vector<std::string> NotCarried;
 };
 
 /// Collective over `controller`: every rank must call it once, in the same

@@ -916,6 +916,19 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
     vtkErrorMacro("No input polydata.");
     return 1;
   }
+  for (const OverlayStitchGatherSummary* summary : { &combination, &gather })
+  {
+    for (const std::string& note : summary->NotCarried)
+    {
+      // Only about arrays the filter would carry.
+      const bool point = note.rfind("The input's point data", 0) == 0;
+      const bool cell = note.rfind("The input's cell data", 0) == 0;
+      if ((!point || this->InterpolatePointData) && (!cell || this->PassCellData))
+      {
+        vtkWarningMacro(<< note);
+      }
+    }
+  }
   const std::string leftOut =
     ArraysLeftOut({ &combination, &gather }, this->InterpolatePointData, this->PassCellData);
   if (!leftOut.empty())

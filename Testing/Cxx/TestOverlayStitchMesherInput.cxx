@@ -1688,6 +1688,101 @@ int TestGhostCells()
       h.Messages->HasWarning({ "point data array Short is not carried", "2 tuples" }) &&
       h.Messages->HasWarning({ "cell data array ShortCell is not carried", "1 tuples" }),
     "ghost copies first, short arrays: both are reported as not carried");
+
+  // (Found by a third review.) Arrays short for the input but long enough
+  // for what stays were carried misaligned; a short or int ghost array was
+  // dropped unseen or half used; ghost cells of an input without points were
+  // meshed; a short string array in a composite's block crashed the
+  // combination, a short double array was read past its end.
+  auto misaligned = SquareWithPointData(true); // 10 points, 3 cells, ghost cell 0
+  for (auto [data, n] :
+    { std::make_pair(static_cast<vtkDataSetAttributes*>(misaligned->GetPointData()), vtkIdType(8)),
+      std::make_pair(static_cast<vtkDataSetAttributes*>(misaligned->GetCellData()), vtkIdType(2)) })
+  {
+    vtkNew<vtkDoubleArray> tag;
+    tag->SetName("Tag");
+    tag->SetNumberOfTuples(n);
+    tag->FillValue(1.0);
+    data->AddArray(tag);
+  }
+  h.Mesher->PassCellDataOn();
+  mesh = h.Run(misaligned, "ghost cell first, arrays short for the input only");
+  h.Mesher->PassCellDataOff();
+  Check(h.NoError() && !mesh->GetPointData()->GetArray("Tag") &&
+      !h.Mesher->GetEdgesOutput()->GetCellData()->GetArray("Tag") &&
+      h.Messages->HasWarning({ "point data array Tag is not carried: it has 8 tuples for 10 "
+                               "points" }) &&
+      h.Messages->HasWarning({ "cell data array Tag is not carried: it has 2 tuples for 3 cells" }),
+    "ghost cell first, arrays short for the input only: reported with the input's counts, not "
+    "carried");
+  for (const bool shortFlags : { true, false })
+  {
+    auto flagged = SquareWithPointData(true);
+    vtkCellData* cd = flagged->GetCellData();
+    cd->RemoveArray(vtkDataSetAttributes::GhostArrayName());
+    vtkSmartPointer<vtkDataArray> flags;
+    if (shortFlags)
+    {
+      flags = vtkSmartPointer<vtkUnsignedCharArray>::New();
+      flags->InsertNextTuple1(vtkDataSetAttributes::DUPLICATECELL); // 1 for 3 cells
+    }
+    else
+    {
+      flags = vtkSmartPointer<vtkIntArray>::New();
+      for (const double flag : { double(vtkDataSetAttributes::DUPLICATECELL), 0.0, 0.0 })
+      {
+        flags->InsertNextTuple1(flag);
+      }
+    }
+    flags->SetName(vtkDataSetAttributes::GhostArrayName());
+    cd->AddArray(flags);
+    const std::string label =
+      std::string("a ghost array of ") + (shortFlags ? "1 tuple for 3 cells" : "ints");
+    mesh = h.Run(flagged, label);
+    Check(h.NoError() && Statistic(mesh, "InputSegments") == 8 &&
+        h.Messages->HasWarning({ "vtkGhostType is not used", "the cells it flags are meshed" }),
+      label + ": said to be unused, and every cell is meshed (" +
+        Num(Statistic(mesh, "InputSegments")) + " segments)");
+  }
+  vtkNew<vtkPolyData> pointless;
+  vtkNew<vtkCellArray> ghostLine;
+  const vtkIdType ends[] = { 0, 1 };
+  ghostLine->InsertNextCell(2, ends);
+  pointless->SetLines(ghostLine);
+  vtkNew<vtkUnsignedCharArray> oneGhost;
+  oneGhost->SetName(vtkDataSetAttributes::GhostArrayName());
+  oneGhost->InsertNextValue(vtkDataSetAttributes::DUPLICATECELL);
+  pointless->GetCellData()->AddArray(oneGhost);
+  mesh = h.Run(pointless, "no points, a ghost line");
+  Check(h.NoError() && h.Messages->HasWarning({ "the input has no points" }),
+    "no points, a ghost line: the ghost line is dropped, and the input has no points");
+  for (const bool ghost : { false, true })
+  {
+    auto first = SquareWithPointData(ghost);
+    auto second = MakeLines({ { 20, 0, 0 }, { 24, 0, 0 }, { 24, 4, 0 } }, { { 0, 1, 2, 0 } });
+    vtkNew<vtkStringArray> words;
+    words->SetName("Words");
+    words->InsertNextValue("only one");
+    first->GetPointData()->AddArray(words);
+    vtkNew<vtkStringArray> values;
+    values->SetName("Words");
+    for (const char* word : { "a", "b", "c" })
+    {
+      values->InsertNextValue(word);
+    }
+    second->GetPointData()->AddArray(values);
+    vtkNew<vtkMultiBlockDataSet> blocks;
+    blocks->SetNumberOfBlocks(2);
+    blocks->SetBlock(0, first);
+    blocks->SetBlock(1, second);
+    Harness b;
+    mesh =
+      b.Run(blocks, std::string("a short string array in a block") + (ghost ? ", ghosts" : ""));
+    Check(b.NoError() && mesh->GetNumberOfCells() > 0 && !mesh->GetPointData()->GetArray("Words") &&
+        b.Messages->HasWarning({ "point data array Words is not carried: block 1 has 1 tuples" }),
+      std::string("a short string array in a block") + (ghost ? ", with ghost cells" : "") +
+        ": meshed, the array named as not carried");
+  }
   return 0;
 }
 
