@@ -85,7 +85,7 @@ INPUT                  Triangle .poly (holes honoured) or .node file, or
                        above 30 no guarantee: the mesh grows fast, and from
                        about 32.5 the refinement may not end)
   --gamma G            the overlay's radius/edge bound instead:
-                       theta1 = asin(1/(2G)), G from 0.8717 to 28.65
+                       theta1 = asin(1/(2G)), G from 0.8718 to 28.64
   --max-edge H         no edge longer than H: refine the overlay, split the
                        few longer completed edges (default 0: no limit)
   --no-resolve         crossing segments are an error (default: split them)
@@ -106,7 +106,8 @@ INPUT                  Triangle .poly (holes honoured) or .node file, or
                        input vertices keep theirs, new points take them
                        linear along their segment or in the triangle of those
                        around them; markers as Triangle's: a segment's on it,
-                       else 0; a triangle its innermost polygon's)
+                       else 1 on the mesh's boundary, else 0; a triangle its
+                       innermost polygon's)
   --stats              print the run statistics as JSON on stdout
   --svg FILE           draw the mesh: input segments bold, discarded overlay
                        edges dashed

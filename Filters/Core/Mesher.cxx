@@ -1032,7 +1032,8 @@ void Mesher::meshRounds(Work& w)
     {
       if (!options.resolveCrossings)
         throw Stop{ crossingError(w, walk.segmentCrossings, exponent, options.pointFormat) +
-          "; enable resolving intersections to split them" };
+          "; enable resolving intersections to split them (the filter's ResolveIntersections; "
+          "osm-mesh without --no-resolve)" };
       // Each round splits at rounded points, which may cross again.
       if (++crossingRounds >= 5)
         throw Stop{ "could not resolve all crossings after 5 rounds of splitting them at their "

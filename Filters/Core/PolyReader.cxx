@@ -325,7 +325,7 @@ private:
     const std::size_t left = lines_.linesLeft();
     if (static_cast<std::size_t>(n) > left)
       return fail(std::to_string(n) + " " + items + " announced, but only " + std::to_string(left) +
-        " lines follow");
+        (left == 1 ? " line follows" : " lines follow"));
     return true;
   }
 

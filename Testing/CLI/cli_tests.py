@@ -166,6 +166,12 @@ def group_help():
                        "--merge-tolerance", "--max-steiner", "--project-xy", "--region-areas",
                        "--no-point-data", "--stats", "--svg", "--version"):
             check(option in p.stdout, flag + " documents " + option)
+    # The --gamma range it prints is accepted at both ends (found by a user
+    # review: 0.8717 and 28.65 lay just outside it).
+    ends = re.search(r"G from ([0-9.]+) to ([0-9.]+)", run("--help").stdout)
+    check(ends is not None, "--help gives the --gamma range")
+    for end in (ends.groups() if ends else ()):
+        mesh_ok(data("square_hole.poly"), "--gamma", end, "-o", out("gamma-end.vtp"))
     p = run("--version")
     check(p.returncode == 0 and p.stdout.startswith("osm-mesh ") and
           p.stdout.strip().split()[1][0].isdigit(), "--version prints 'osm-mesh <version>'",

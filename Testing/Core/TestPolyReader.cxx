@@ -444,7 +444,7 @@ TEST(PolyReaderErrors, HugeCountsAreRefusedBeforeAllocating)
   EXPECT_TRUE(failsAt(poly("3 2 1000000000 0\n1 0 0\n2 1 0\n3 0 1\n"), "t.poly:1",
     "3 vertices with 1000000000 attributes each cannot fit in the rest of the file"));
   EXPECT_TRUE(failsAt(poly("3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n2000000000 0\n1 1 2\n"), "t.poly:5",
-    "2000000000 segments announced, but only 1 lines follow"));
+    "2000000000 segments announced, but only 1 line follows"));
   EXPECT_TRUE(failsAt(poly("3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n0\n123456789\n"), "t.poly:6",
     "123456789 holes announced, but only 0 lines follow"));
   EXPECT_TRUE(failsAt(poly(std::string(squareWithHole) + "99999\n1 0 0 1\n"), "t.poly:13",
