@@ -87,16 +87,20 @@ struct Work
   Array<Point> regionSeeds;
 };
 
-/// Power-of-two scale bringing the largest coordinate into [0.5, 1): exact, so
-/// input vertices come back bit for bit, and the predicates cannot overflow.
+/// Power-of-two scale bringing the largest coordinate of a point into
+/// [0.5, 1): exact, so input vertices come back bit for bit, and the
+/// predicates cannot overflow. Hole and region seeds far beyond the points,
+/// outside every triangle, are moved in to 16 (scaled), still outside: such a
+/// seed set the scale before, and a seed at 1e100 made the points "too small".
 std::string normalise(
   Work& w, const Pslg& input, const Array<int>& pointOf, const PointFormat& format, int& exponent)
 {
   double maxAbs = 0;
   for (const Point& p : w.points)
     maxAbs = std::max({ maxAbs, std::fabs(p.x), std::fabs(p.y) });
-  for (const Point& p : w.holes)
-    maxAbs = std::max({ maxAbs, std::fabs(p.x), std::fabs(p.y) });
+  if (maxAbs == 0)
+    for (const Point& p : w.holes)
+      maxAbs = std::max({ maxAbs, std::fabs(p.x), std::fabs(p.y) });
   exponent = 0;
   if (maxAbs == 0)
     return {};
@@ -135,10 +139,17 @@ std::string normalise(
         ") for exact arithmetic in double precision";
     }
   }
+  const auto scaleSeed = [&](Point& p) {
+    const auto in = [](double v) { return std::fabs(v) > 16 ? std::copysign(16.0, v) : v; };
+    if (std::fabs(p.x) > std::ldexp(16.0, exponent) || std::fabs(p.y) > std::ldexp(16.0, exponent))
+      p = { in(std::ldexp(p.x, -exponent)), in(std::ldexp(p.y, -exponent)) };
+    else
+      scale(p);
+  };
   for (Point& p : w.holes)
-    scale(p);
+    scaleSeed(p);
   for (Point& p : w.regionSeeds)
-    scale(p);
+    scaleSeed(p);
   return {};
 }
 

@@ -425,6 +425,24 @@ TEST(Mesher, AHullEdgeAlongASegmentIsNotASecondSegment)
   EXPECT_NEAR(area, 8.0, 1e-9);
 }
 
+TEST(Mesher, FarSeedsAreOutsideNotAScale)
+{
+  // Found by a user review: a hole seed at (1e100, 1e100) set the scale, and
+  // the unit square's points were refused as "too small next to the largest
+  // coordinate (1e+100)". Far seeds are outside the domain, with a warning.
+  Pslg p;
+  p.points = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } };
+  p.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 } };
+  p.holes = { { 1e100, 1e100 }, { 1e308, -1e308 }, { -40, 0.5 } };
+  p.regions = { { { 0.5, 0.5 }, 7.0 }, { { -1e300, 3 }, 9.0 } };
+  const Result r = meshAndValidate(p, "far seeds", Options{});
+  ASSERT_TRUE(r.ok) << r.error;
+  EXPECT_NEAR(area(r.mesh), 1.0, 1e-12);
+  EXPECT_TRUE(mentions(r.warnings, "3 hole point(s) lie outside")) << r.warnings.size();
+  ASSERT_FALSE(r.regionAttribute.empty());
+  EXPECT_EQ(r.regionAttribute.front(), 7.0);
+}
+
 TEST(Clean, TinySegmentsAmongCrossingsOfLongOnesAreRefusedAsBelowPrecision)
 {
   // Found by Properties.TinySegmentsAtCrossingsOfLongOnes at 400 seeds (seed
