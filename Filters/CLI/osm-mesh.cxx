@@ -93,7 +93,9 @@ INPUT                  Triangle .poly (holes honoured) or .node file, or
                        closer than D to them; crossings of segments closer
                        than D to a point or crossing join it (default 0:
                        exact duplicates)
-  --max-steiner N      fail if more than N Steiner points are needed (0: no cap)
+  --max-steiner N      fail if the overlay needs more than N Steiner points
+                       (the statistic OverlaySteinerPoints, its padding box's
+                       4 corners included; 0: no cap)
   --project-xy         mesh the projection onto the XY plane of input points
                        that are not coplanar (default: an error), at their
                        mean z

@@ -1001,6 +1001,10 @@ void Mesher::meshRounds(Work& w)
     if (options.maxEdgeLength > 0 && oo.maxEdgeLength == 0)
       oo.maxEdgeLength = std::numeric_limits<double>::denorm_min();
     oo.maxSteinerPoints = options.maxSteinerPoints;
+    if (options.maxSteinerPoints > 0 && options.maxSteinerPoints < 4)
+      throw Stop{ "the overlay needs more than the allowed " +
+        std::to_string(options.maxSteinerPoints) +
+        " Steiner points: the 4 corners of its padding box count among them" };
     oo.sizeBoxes = regionBoxes;
     oo.sizeFromAreas = options.regionAreas &&
       std::any_of(input.regions.begin(), input.regions.end(),

@@ -42,7 +42,10 @@ struct Options
   /// at most this much too, however many rounds its pieces cross again in.
   /// 0 merges only exact duplicates.
   double mergeTolerance = 0.0;
-  /// Stop with an error when more Steiner points than this would be needed (0: no cap).
+  /// Stop with an error when the overlay would need more Steiner points than
+  /// this (0: no cap): Stats::overlaySteinerPoints, the 4 corners of its
+  /// padding box and the points refining it, in the padding too; not the
+  /// points stitching and completion put on segments.
   std::size_t maxSteinerPoints = 0;
   /// Apply the regions' maximum areas (Pslg::regions; Triangle's -a): off,
   /// they are ignored with a warning, as Triangle ignores them without -a

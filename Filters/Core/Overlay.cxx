@@ -386,7 +386,9 @@ double Refiner::pointsForMaxEdge() const
 void Refiner::countSteiner()
 {
   ++out.steinerPoints;
-  if (steinerCap > 0 && out.steinerPoints > steinerCap)
+  // The cap counts the 4 corners of the padding box too, as the statistic
+  // OverlaySteinerPoints does.
+  if (steinerCap > 0 && out.steinerPoints + 4 > steinerCap)
     throw Stop{ "the overlay needs more than the allowed " + std::to_string(steinerCap) +
       " Steiner points; raise the cap or coarsen the input" };
   if (out.steinerPoints > hardCap)

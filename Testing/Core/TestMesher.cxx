@@ -1107,6 +1107,19 @@ TEST(Mesher, SteinerCapGivesAClearError)
   EXPECT_FALSE(r.ok);
   EXPECT_NE(r.error.find("Steiner"), std::string::npos) << r.error;
   EXPECT_TRUE(r.mesh.triangles.empty());
+
+  // The cap counts what the statistic OverlaySteinerPoints counts (found by a
+  // user review: the cap came 4 short of it, the padding box's corners).
+  const Result free = mesh(wedgeInSquare(), Options{});
+  ASSERT_TRUE(free.ok) << free.error;
+  const std::size_t needed = free.stats.overlaySteinerPoints;
+  for (std::size_t cap : { needed, needed - 1, std::size_t(3) })
+  {
+    o.maxSteinerPoints = cap;
+    const Result capped = mesh(wedgeInSquare(), o);
+    EXPECT_EQ(capped.ok, cap == needed)
+      << "cap " << cap << " of " << needed << ": " << capped.error;
+  }
 }
 
 TEST(Mesher, MaxEdgeLengthRefines)
