@@ -133,10 +133,13 @@ std::string normalise(
       (before.y != 0 && std::fabs(p.y) < 0x1p-200))
     {
       const auto user = std::find(pointOf.begin(), pointOf.end(), static_cast<int>(i));
-      return "point " + std::to_string(user - pointOf.begin()) + " at " +
-        formatPoint(input.points[user - pointOf.begin()], format) +
-        " is too small next to the largest coordinate (" + formatNumber(maxAbs) +
-        ") for exact arithmetic in double precision";
+      const Point& q = input.points[user - pointOf.begin()];
+      const double tiny = before.x != 0 && std::fabs(p.x) < 0x1p-200 ? q.x : q.y;
+      return "point " + std::to_string(user - pointOf.begin()) + " at " + formatPoint(q, format) +
+        " has a coordinate (" + formatNumber(tiny) +
+        ") too small next to the largest coordinate (" + formatNumber(maxAbs) +
+        ") for exact arithmetic in double precision (nonzero coordinates must be above 2^-200 "
+        "of the largest): round it to 0";
     }
   }
   const auto scaleSeed = [&](Point& p) {
