@@ -225,6 +225,8 @@ public:
   }
 
   std::vector<std::string> Warnings;
+  /// --stats was given: a failure prints its JSON too, with "ok": false.
+  bool Stats = false;
   /// The input file's path, named in the filter's note on a file that counts
   /// from 1 ("...; the input counts from 1)").
   std::string InputPath;
@@ -1043,6 +1045,17 @@ void PrintStatistics(vtkPolyData* mesh, const std::vector<std::string>& warnings
   std::cout << "]\n}\n";
 }
 
+/// --stats after a failure: whether it succeeded, why not, and the warnings.
+void PrintFailure(const std::string& error, const std::vector<std::string>& warnings)
+{
+  std::cout << "{\n  \"ok\": false,\n  \"Error\": " << JsonString(error) << ",\n  \"Warnings\": [";
+  for (std::size_t i = 0; i < warnings.size(); ++i)
+  {
+    std::cout << (i ? ", " : "") << JsonString(warnings[i]);
+  }
+  std::cout << "]\n}\n";
+}
+
 int Run(int argc, char* argv[], OsmOutputWindow* window)
 {
   Arguments args;
@@ -1050,6 +1063,7 @@ int Run(int argc, char* argv[], OsmOutputWindow* window)
   {
     return 0;
   }
+  window->Stats = args.stats;
 
   vtkSmartPointer<vtkAlgorithm> reader = MakeReader(args.input);
   reader->Update();
@@ -1145,6 +1159,10 @@ int main(int argc, char* argv[])
   {
     std::cerr << "osm-mesh: " << failure.message << "\n";
     status = failure.status;
+    if (status == 1 && window->Stats)
+    {
+      PrintFailure(failure.message, window->Warnings);
+    }
   }
   catch (const std::exception& e)
   {

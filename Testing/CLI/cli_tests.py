@@ -743,6 +743,18 @@ def group_errors():
     expect_error([poly, "-o", out("twice.vtp"), "--svg", os.path.join(ARGS.out, ".", "twice.vtp")],
                  2, ["twice.vtp", "written twice"], "-o and --svg naming the same file")
     check(not os.path.exists(out("twice.vtp")), "a file named twice is not written")
+    # --stats when meshing fails: JSON with "ok": false, the error and the
+    # warnings (found by a user review: it printed nothing).
+    all_hole = write("allhole.poly", "4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n"
+                                     "4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n1\n1 0.5 0.5\n")
+    p = run(all_hole, "--stats")
+    try:
+        failed = json.loads(p.stdout)
+    except ValueError:
+        failed = {}
+    check(p.returncode == 1 and failed.get("ok") is False and "empty" in failed.get("Error", "") and
+          any("removed every region" in w for w in failed.get("Warnings", [])),
+          "--stats on a failure prints ok false, the error and the warnings", p.stdout[-300:])
 
 
 def group_determinism():
