@@ -128,15 +128,31 @@ struct IgnoredCells
   vtkIdType Empty = 0;
   vtkIdType ShortLines = 0;
   vtkIdType ShortPolygons = 0;
+  vtkIdType First = -1; ///< the smallest id of an ignored cell
+
+  /// Counts cell `cellId` in `count` when `ignore`.
+  void Note(bool ignore, vtkIdType& count, vtkIdType cellId)
+  {
+    if (ignore)
+    {
+      ++count;
+      this->First = this->First < 0 ? cellId : std::min(this->First, cellId);
+    }
+  }
 
   vtkIdType Total() const
   {
     return this->Strips + this->Empty + this->ShortLines + this->ShortPolygons;
   }
-  std::string Describe() const
+  /// The warning, naming the first ignored cell of input by its id (in its
+  /// block, or in the input with its ghost cells, where it carries those).
+  std::string Describe(vtkPolyData* input) const
   {
     std::ostringstream msg;
-    msg << "Ignored " << this->Total() << " input cell(s):";
+    const std::string source =
+      OverlayStitchSource(input->GetCellData(), OverlayStitchSourceCellIdName, this->First, "cell");
+    msg << "Ignored " << this->Total() << " input cell(s), the first "
+        << (source.empty() ? "cell " + std::to_string(this->First) : source) << ":";
     const char* separator = " ";
     auto item = [&](vtkIdType n, const char* what) {
       if (n > 0)
@@ -389,8 +405,8 @@ void ReadSegments(
       vtkIdType n;
       const vtkIdType* ids;
       it->GetCurrentCell(n, ids);
-      ignored.Empty += n == 0 ? 1 : 0;
-      ignored.ShortLines += n == 1 ? 1 : 0;
+      ignored.Note(n == 0, ignored.Empty, cellId);
+      ignored.Note(n == 1, ignored.ShortLines, cellId);
       for (vtkIdType k = 0; k + 1 < n; ++k)
       {
         addSegment(ids[k], ids[k + 1]);
@@ -425,8 +441,8 @@ void ReadSegments(
       }
       if (n < 3)
       {
-        ignored.Empty += n == 0 ? 1 : 0;
-        ignored.ShortPolygons += n > 0 ? 1 : 0;
+        ignored.Note(n == 0, ignored.Empty, cellId);
+        ignored.Note(n > 0, ignored.ShortPolygons, cellId);
       }
       for (vtkIdType k = 0; n >= 3 && k < n; ++k)
       {
@@ -439,14 +455,18 @@ void ReadSegments(
   if (vtkCellArray* verts = input->GetVerts())
   {
     auto it = vtk::TakeSmartPointer(verts->NewIterator());
-    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+    vtkIdType vertId = 0;
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++vertId)
     {
-      ignored.Empty += it->GetCurrentCell()->GetNumberOfIds() == 0 ? 1 : 0;
+      ignored.Note(it->GetCurrentCell()->GetNumberOfIds() == 0, ignored.Empty, vertId);
     }
   }
   if (vtkCellArray* strips = input->GetStrips())
   {
-    ignored.Strips += strips->GetNumberOfCells();
+    for (vtkIdType k = 0; k < strips->GetNumberOfCells(); ++k)
+    {
+      ignored.Note(true, ignored.Strips, cellId + k);
+    }
   }
 }
 
@@ -984,7 +1004,7 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   ReadSegments(input, pslg, segmentSources, ignored);
   if (ignored.Total() > 0)
   {
-    vtkWarningMacro(<< ignored.Describe());
+    vtkWarningMacro(<< ignored.Describe(input));
   }
   // In a plane that contains the z direction, an (x, y) seed names a whole
   // vertical line of the plane: refused rather than placed at some height.

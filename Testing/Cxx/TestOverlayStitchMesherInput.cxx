@@ -978,10 +978,11 @@ int TestIgnoredCells()
   Check(h.NoError(), "no error");
   Check(MessageObserver::Count(h.Messages->Warnings, { "Ignored" }) == 1,
     "exactly one warning about ignored cells");
-  Check(
-    h.Messages->HasWarning({ "Ignored 5 input cell(s)", "2 triangle strip(s)", "1 empty cell(s)",
-      "1 line(s) with a single point", "1 polygon(s) with fewer than 3 points" }),
-    "it counts them by kind: 2 strips, 1 empty cell, 1 single-point line, 1 two-point polygon");
+  Check(h.Messages->HasWarning(
+          { "Ignored 5 input cell(s), the first cell 1:", "2 triangle strip(s)", "1 empty cell(s)",
+            "1 line(s) with a single point", "1 polygon(s) with fewer than 3 points" }),
+    "it counts them by kind: 2 strips, 1 empty cell, 1 single-point line, 1 two-point polygon, "
+    "and names the first (found by a user review: it named none)");
   Check(Statistic(mesh, "IgnoredCells") == 5, "statistic IgnoredCells = 5");
   Check(Statistic(mesh, "ZeroLengthSegmentsDropped") == 0,
     "the repeated closing point of a polygon gives no zero-length segment");
@@ -1425,7 +1426,8 @@ int TestMatrix()
   input->SetStrips(strips);
   mesh = h.Run(input, "triangle strip");
   meshOk(mesh, "triangle strip");
-  Check(h.Messages->HasWarning({ "Ignored 1 input cell(s): 1 triangle strip(s)" }),
+  Check(
+    h.Messages->HasWarning({ "Ignored 1 input cell(s), the first cell 1: 1 triangle strip(s)" }),
     "triangle strip: one warning counting it");
   // ... a polygon cell: its edges are segments.
   input = Square();
