@@ -1099,6 +1099,25 @@ void Mesher::meshRounds(Work& w)
         "crossing joined another point within the merge tolerance, e.g. " +
         seedsAcrossJoins.example);
     st.segmentsSplitAtVertices = walk.splitsAtInputVertices + walk.duplicatePieces;
+    // Overlaps of input segments (a hull edge along a segment is no news).
+    const auto inputs = static_cast<int>(w.segments.size());
+    const auto overlap = std::find_if(walk.overlaps.begin(), walk.overlaps.end(),
+      [&](const std::array<int, 4>& o) { return o[1] < inputs; });
+    if (overlap != walk.overlaps.end())
+    {
+      const auto count = std::count_if(walk.overlaps.begin(), walk.overlaps.end(),
+        [&](const std::array<int, 4>& o) { return o[1] < inputs; });
+      const auto& [a, b, u, v] = *overlap;
+      const auto at = [&](int vertex) {
+        const Point& q = overlay.mesh.points[vertex];
+        return formatPoint(
+          { std::ldexp(q.x, exponent), std::ldexp(q.y, exponent) }, options.pointFormat);
+      };
+      res.warnings.push_back(std::to_string(count) +
+        " piece(s) of input segments lie along another input segment and are meshed once, e.g. " +
+        segmentName(w, a) + " and " + segmentName(w, b) + " overlap from " + at(u) + " to " +
+        at(v));
+    }
     st.overlayVertices = overlay.mesh.points.size();
     st.overlaySteinerPoints = overlay.steinerPoints + 4;
     if (overlay.refinementsSkipped > 0)

@@ -363,6 +363,7 @@ void Walker::markDuplicates()
     {
       out.pieces[keys[k][3]].duplicate = true;
       ++out.duplicatePieces;
+      out.overlaps.push_back({ keys[k - 1][2], keys[k][2], keys[k][0], keys[k][1] });
     }
   }
 }

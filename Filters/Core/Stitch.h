@@ -105,6 +105,9 @@ struct Walk
   Array<SegmentCrossing> segmentCrossings;
   std::size_t splitsAtInputVertices = 0;
   std::size_t duplicatePieces = 0;
+  /// Per duplicate piece: the segment whose piece is kept, the duplicate's
+  /// segment (the larger index), and the overlay vertices the piece runs between.
+  Array<std::array<int, 4>> overlaps;
 };
 
 /// Walk every segment (endpoints given as overlay vertices) through the overlay,

@@ -443,6 +443,27 @@ TEST(Mesher, FarSeedsAreOutsideNotAScale)
   EXPECT_EQ(r.regionAttribute.front(), 7.0);
 }
 
+TEST(Mesher, OverlappingSegmentsAreMeshedOnceAndSaidSo)
+{
+  // Found by a user review: collinear segments overlapping from (1, 0) to
+  // (2, 0) were meshed once with no word (and hull edges along segments,
+  // which overlap them too, are no news).
+  Pslg p;
+  p.points = { { 0, 0 }, { 2, 0 }, { 1, 0 }, { 3, 0 }, { 0, 1 } };
+  p.segments = { { 0, 1 }, { 2, 3 }, { 0, 4 } };
+  for (Domain d : { Domain::Auto, Domain::Hull, Domain::Box })
+  {
+    Options o;
+    o.domain = d;
+    const Result r = meshAndValidate(p, "overlapping segments", o);
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_TRUE(mentions(r.warnings,
+      "1 piece(s) of input segments lie along another input segment and are meshed once, e.g. "
+      "input segment 0 and input segment 1 overlap from (1, 0) to (2, 0)"));
+    EXPECT_FALSE(mentions(r.warnings, "convex hull"));
+  }
+}
+
 TEST(Clean, TinySegmentsAmongCrossingsOfLongOnesAreRefusedAsBelowPrecision)
 {
   // Found by Properties.TinySegmentsAtCrossingsOfLongOnes at 400 seeds (seed
