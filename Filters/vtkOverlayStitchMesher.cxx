@@ -1177,6 +1177,15 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
       return AbortRequested(this);
     };
   };
+  // An output's own arrays, which an input array may not take the name of
+  // (InputBlockId only for a composite input, which alone has it).
+  auto ownNames = [composite](std::vector<std::string> names) {
+    if (composite)
+    {
+      names.emplace_back("InputBlockId");
+    }
+    return names;
+  };
   std::vector<vtkIdType> segmentCells;
   if (this->InterpolatePointData || (this->PassCellData && this->GenerateEdges))
   {
@@ -1190,8 +1199,8 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   if (interpolate)
   {
     OverlayStitchInterpolatePointData(input->GetPointData(), input->GetCellData(), pslg, result,
-      segmentCells, { "VertexOrigin", "InputPointId", "InputBlockId" }, carried,
-      outputSteps(0.9, 0.93), warnings);
+      segmentCells, ownNames({ "VertexOrigin", "InputPointId" }), carried, outputSteps(0.9, 0.93),
+      warnings);
     warn();
     reuse.reset();
   }
@@ -1210,7 +1219,7 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   if (this->PassCellData)
   {
     OverlayStitchPassPolygonData(input, pslg, result,
-      { "MinAngle", "MaxAngle", "RegionId", "RegionAttribute", "InputCellId", "InputBlockId" },
+      ownNames({ "MinAngle", "MaxAngle", "RegionId", "RegionAttribute", "InputCellId" }),
       mesh->GetCellData(), outputSteps(0.945, 0.95), warnings);
     warn();
     if (aborted())
@@ -1240,7 +1249,7 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
     {
       OverlayStitchPassCellData(input->GetCellData(), input->GetNumberOfCells(), pslg, result,
         segmentCells,
-        { "Overlay", "Kept", "Discarded", "Input", "EdgeClass", "InputCellId", "InputBlockId" },
+        ownNames({ "Overlay", "Kept", "Discarded", "Input", "EdgeClass", "InputCellId" }),
         edges->GetCellData(), outputSteps(0.97, 0.98), warnings);
       warn();
     }

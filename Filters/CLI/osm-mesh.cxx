@@ -76,7 +76,8 @@ INPUT                  Triangle .poly (holes honoured) or .node file, or
   -o, --output FILE    write the mesh, in the format of FILE's extension:
                        .vtp, .vtu (VTK XML, zlib level 1), .vtk (legacy VTK),
                        or .node (Triangle: FILE.node, .ele and .edge side by
-                       side, 1-based)
+                       side, numbered as Triangle does: node i is input point
+                       i, from the input file's first index)
   --domain MODE        auto (default: enclosed if segments enclose a region
                        with an input point on its boundary, else hull;
                        where they cross, specks do not count), enclosed,
@@ -93,9 +94,10 @@ INPUT                  Triangle .poly (holes honoured) or .node file, or
                        closer than D to them; crossings of segments closer
                        than D to a point or crossing join it (default 0:
                        exact duplicates)
-  --max-steiner N      fail if the overlay needs more than N Steiner points
-                       (the statistic OverlaySteinerPoints, its padding box's
-                       4 corners included; 0: no cap)
+  --max-steiner N      fail if the overlay of a meshing round needs more than
+                       N Steiner points (as the statistic OverlaySteinerPoints
+                       counts them for the last round, its padding box's 4
+                       corners included; 0: no cap)
   --project-xy         mesh the projection onto the XY plane of input points
                        that are not coplanar (default: an error), at their
                        mean z
@@ -347,6 +349,26 @@ std::string Number(double value)
 }
 
 /// Parses the command line; returns false when --help or --version was answered.
+/// Where writing to path lands: absolute, normalised, through symbolic links
+/// (a dangling one too: it names the file a write creates).
+std::filesystem::path Resolved(const std::filesystem::path& path)
+{
+  std::error_code ec;
+  std::filesystem::path p = std::filesystem::absolute(path, ec);
+  for (int hops = 0; hops < 40 && std::filesystem::is_symlink(p, ec); ++hops)
+  {
+    const std::filesystem::path target = std::filesystem::read_symlink(p, ec);
+    if (ec)
+    {
+      break;
+    }
+    p = target.is_absolute() ? target : p.parent_path() / target;
+  }
+  // (weakly_canonical leaves a relative path to a new file relative.)
+  const std::filesystem::path resolved = std::filesystem::weakly_canonical(p, ec);
+  return ec ? p.lexically_normal() : resolved;
+}
+
 /// Whether a .poly file's first line (after comments) lists 0 vertices, which
 /// it then reads from the .node file beside it.
 bool ListsNoVertices(const std::string& path)
@@ -590,10 +612,7 @@ bool ParseArguments(int argc, char* argv[], Arguments& args)
       }
     }
     std::error_code ec;
-    // (weakly_canonical leaves a relative path to a new file relative.)
-    std::filesystem::path target =
-      std::filesystem::weakly_canonical(std::filesystem::absolute(path, ec), ec);
-    target = ec ? std::filesystem::path(path).lexically_normal() : target;
+    const std::filesystem::path target = Resolved(path);
     if (std::find(targets.begin(), targets.end(), target) != targets.end())
     {
       Fail("'" + path + "' would be written twice (-o and --svg): choose another name", 2);
@@ -906,34 +925,42 @@ void ToTriangleNumbering(osm::Result& r, osm::NodeData& data, vtkPolyData* mesh,
   data.markers = std::move(markers);
 }
 
-/// A .node file holds a .poly's numbered vertex attributes and markers, and
-/// an .ele file region ids: say which of the mesh's arrays (a .vtp input's
-/// point data, polygon cell data) it leaves out.
-void WarnNotInNodeFiles(vtkPolyData* mesh, OsmOutputWindow* window)
+/// A .node file holds a .poly's numbered vertex attributes and markers (as
+/// NodeDataOf takes them: Attribute0, Attribute1, ... of one component each,
+/// PointMarker of one), and an .ele file region ids: say which of the mesh's
+/// other arrays (a .vtp input's point data, polygon cell data) it leaves out.
+void WarnNotInNodeFiles(vtkPolyData* mesh, const osm::NodeData& data, OsmOutputWindow* window)
 {
+  std::vector<std::string> points = { "VertexOrigin", "InputPointId", "InputBlockId" };
+  for (std::size_t a = 0; a < data.attributeCount; ++a)
+  {
+    points.push_back("Attribute" + std::to_string(a));
+  }
+  if (!data.markers.empty())
+  {
+    points.emplace_back("PointMarker");
+  }
   std::string left;
-  auto note = [&left](vtkFieldData* data, const char* kind, std::vector<std::string> written) {
-    for (int a = 0; a < data->GetNumberOfArrays(); ++a)
+  auto note = [&left](
+                vtkFieldData* arrays, const char* kind, const std::vector<std::string>& written) {
+    for (int a = 0; a < arrays->GetNumberOfArrays(); ++a)
     {
-      const char* name = data->GetAbstractArray(a)->GetName();
+      const char* name = arrays->GetAbstractArray(a)->GetName();
       const std::string text = name ? name : "(unnamed)";
-      const bool attribute = text.rfind("Attribute", 0) == 0 && text.size() > 9 &&
-        std::all_of(text.begin() + 9, text.end(), [](char c) { return std::isdigit(c) != 0; });
-      if (!attribute && std::find(written.begin(), written.end(), text) == written.end())
+      if (std::find(written.begin(), written.end(), text) == written.end())
       {
         left += (left.empty() ? "" : ", ") + std::string(kind) + " " + text;
       }
     }
   };
-  note(mesh->GetPointData(), "point data",
-    { "VertexOrigin", "InputPointId", "InputBlockId", "PointMarker" });
+  note(mesh->GetPointData(), "point data", points);
   note(mesh->GetCellData(), "cell data",
     { "MinAngle", "MaxAngle", "RegionId", "RegionAttribute", "InputCellId", "InputBlockId" });
   if (!left.empty())
   {
     window->DisplayWarningText(
-      ("not written to the .node/.ele files, which hold a .poly's numbered vertex "
-       "attributes and markers and the region ids only: " +
+      ("not written to the .node/.ele files, which hold a .poly's numbered vertex attributes "
+       "(Attribute0, Attribute1, ... of one component) and markers and the region ids only: " +
         left + " (write .vtp, .vtu or .vtk to keep them)")
         .c_str());
   }
@@ -953,7 +980,7 @@ void WriteMesh(const std::string& path, vtkPolyData* mesh, vtkPolyData* edges, v
     {
       ToTriangleNumbering(result, data, mesh, input);
     }
-    WarnNotInNodeFiles(mesh, window);
+    WarnNotInNodeFiles(mesh, data, window);
     const std::string error = osm::writeTriangleFiles(base, result, data);
     if (!error.empty())
     {

@@ -594,6 +594,8 @@ public:
     , run(progress)
   {}
   Result execute();
+  /// The warnings collected so far (when a Stop ends the run, they still hold).
+  std::vector<std::string> takeWarnings() { return std::move(res.warnings); }
 
 private:
   void meshRounds(Work& w);
@@ -1615,6 +1617,7 @@ Result mesh(const Pslg& input, const Options& options, Progress* progress)
   {
     Result r;
     r.error = stop.reason;
+    r.warnings = mesher.takeWarnings();
     return r;
   }
   catch (const std::bad_alloc&)

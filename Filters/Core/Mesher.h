@@ -42,8 +42,9 @@ struct Options
   /// at most this much too, however many rounds its pieces cross again in.
   /// 0 merges only exact duplicates.
   double mergeTolerance = 0.0;
-  /// Stop with an error when the overlay would need more Steiner points than
-  /// this (0: no cap): Stats::overlaySteinerPoints, the 4 corners of its
+  /// Stop with an error when the overlay of a meshing round would need more
+  /// Steiner points than this (0: no cap), counted as
+  /// Stats::overlaySteinerPoints counts the last round's: the 4 corners of its
   /// padding box and the points refining it, in the padding too; not the
   /// points stitching and completion put on segments.
   std::size_t maxSteinerPoints = 0;

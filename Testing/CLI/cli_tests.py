@@ -605,10 +605,32 @@ def group_inputs():
               ({"InputCellId", "Land"} & names == set()) == (not carried),
               "polygon cell data on the mesh %s %r" % ("with" if carried else "without", extra),
               str(sorted(names)))
-    # A .node output cannot hold them: it says so (found by a user review).
+    # A .node output cannot hold them: it says so (found by a user review),
+    # and of the point arrays it names those it does not write as Triangle's
+    # attributes: Attribute0 is, Attribute2 (no Attribute1) and a 2-component
+    # Attribute1... are not (found by a second review).
     p = mesh_ok(land, "-o", out("land.node"))
     check("not written to the .node/.ele files" in p.stderr and "cell data Land" in p.stderr,
           "a .node output names the cell data it leaves out", p.stderr[-300:])
+    gaps = out("gaps.vtp")
+    with open(gaps, "w") as f:
+        f.write('<?xml version="1.0"?>\n<VTKFile type="PolyData" version="0.1" byte_order="LittleEndian">'
+                '<PolyData><Piece NumberOfPoints="4" NumberOfVerts="0" NumberOfLines="1" '
+                'NumberOfStrips="0" NumberOfPolys="0"><PointData>'
+                '<DataArray type="Float64" Name="Attribute0" format="ascii">1 2 3 4</DataArray>'
+                '<DataArray type="Float64" Name="Attribute2" format="ascii">1 2 3 4</DataArray>'
+                '</PointData><Points><DataArray type="Float64" NumberOfComponents="3" format="ascii">'
+                '0 0 0 1 0 0 1 1 0 0 1 0</DataArray></Points><Lines>'
+                '<DataArray type="Int64" Name="connectivity" format="ascii">0 1 2 3 0</DataArray>'
+                '<DataArray type="Int64" Name="offsets" format="ascii">5</DataArray>'
+                '</Lines></Piece></PolyData></VTKFile>\n')
+    p = mesh_ok(gaps, "-o", out("gaps.node"))
+    with open(out("gaps.node")) as f:
+        header = f.readline().split()
+    check(header[2] == "1" and "point data Attribute2" in p.stderr and
+          "point data Attribute0" not in p.stderr,
+          "a .node output writes Attribute0 and names Attribute2, which it leaves out",
+          str(header) + p.stderr[-300:])
     # .node: points only, meshed over their hull.
     node = data("split_pslg.node")
     s = stats_of(node, "-o", out("points.node"))
@@ -743,6 +765,12 @@ def group_errors():
     expect_error([poly, "-o", out("twice.vtp"), "--svg", os.path.join(ARGS.out, ".", "twice.vtp")],
                  2, ["twice.vtp", "written twice"], "-o and --svg naming the same file")
     check(not os.path.exists(out("twice.vtp")), "a file named twice is not written")
+    dangling = out("dangling.svg")
+    if os.path.lexists(dangling):
+        os.remove(dangling)
+    os.symlink("twice.vtp", dangling)
+    expect_error([poly, "-o", out("twice.vtp"), "--svg", dangling], 2, ["written twice"],
+                 "-o and --svg naming one file through a dangling symbolic link")
     # --stats when meshing fails: JSON with "ok": false, the error and the
     # warnings (found by a user review: it printed nothing).
     all_hole = write("allhole.poly", "4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n"
@@ -755,6 +783,18 @@ def group_errors():
     check(p.returncode == 1 and failed.get("ok") is False and "empty" in failed.get("Error", "") and
           any("removed every region" in w for w in failed.get("Warnings", [])),
           "--stats on a failure prints ok false, the error and the warnings", p.stdout[-300:])
+    # ... the mesher's warnings too, from before it stopped (a second review).
+    twice = write("twice-capped.poly", "5 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n5 1 0\n"
+                                       "4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n")
+    p = run(twice, "--stats", "--max-steiner", "5")
+    try:
+        failed = json.loads(p.stdout)
+    except ValueError:
+        failed = {}
+    check(p.returncode == 1 and failed.get("ok") is False and
+          any("duplicate point" in w for w in failed.get("Warnings", [])),
+          "--stats on a failure keeps the mesher's warnings from before it stopped",
+          p.stdout[-300:])
 
 
 def group_determinism():

@@ -1953,6 +1953,26 @@ int TestPointData()
   Check(!mesh->GetPointData()->GetArray(vtkDataSetAttributes::GhostArrayName()),
     "point data: the input's ghost array is not carried, without a warning");
 
+  // The Mesh's InputPointId is its own; InputBlockId only for a composite
+  // input (a review: a single dataset's InputBlockId was refused as taken).
+  auto named = SquareWithPointData();
+  for (const char* name : { "InputPointId", "InputBlockId" })
+  {
+    vtkNew<vtkIntArray> array;
+    array->SetName(name);
+    array->SetNumberOfTuples(named->GetNumberOfPoints());
+    array->FillValue(7);
+    named->GetPointData()->AddArray(array);
+  }
+  mesh = h.Run(named, "point data named InputPointId and InputBlockId");
+  auto* ownIds = vtkIdTypeArray::SafeDownCast(mesh->GetPointData()->GetArray("InputPointId"));
+  auto* userBlock = vtkIntArray::SafeDownCast(mesh->GetPointData()->GetArray("InputBlockId"));
+  Check(ownIds && userBlock && userBlock->GetValue(0) == 7 &&
+      h.Messages->HasWarning({ "InputPointId", "not carried", "of its own" }) &&
+      !h.Messages->HasWarning({ "InputBlockId" }),
+    "point data: an input InputPointId gives way to the Mesh's own; an input InputBlockId is "
+    "carried");
+
   // Off: no input array on the mesh.
   h.Mesher->InterpolatePointDataOff();
   mesh = h.Run(SquareWithPointData(), "point data off");
