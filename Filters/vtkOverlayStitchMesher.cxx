@@ -376,7 +376,13 @@ std::string ArraysLeftOut(
     for (const std::string& item : summary->ArraysLeftOut)
     {
       const bool point = item.rfind("point", 0) == 0;
-      if ((point ? pointData : cellData) && named.insert(item).second)
+      // An array some piece had too few tuples of is named once, with those.
+      const std::string kind = point ? "point data " : "cell data ";
+      const std::string note =
+        "The input's " + kind + "array " + item.substr(kind.size()) + " is not carried";
+      const bool noted = std::any_of(summary->NotCarried.begin(), summary->NotCarried.end(),
+        [&note](const std::string& n) { return n.rfind(note, 0) == 0; });
+      if ((point ? pointData : cellData) && !noted && named.insert(item).second)
       {
         names += (names.empty() ? "" : ", ") + item;
       }
