@@ -26,13 +26,15 @@ double unitScale(const Array<Point>& a, const Array<Point>& b)
     : 1.0;
 }
 
-/// Twice the signed area of abc, to about an ulp: in doubles, or exactly
-/// where rounding could be much of it (in slivers, where the fuzzer found
-/// weights off by 1e-9 of the field).
+/// Twice the signed area of abc, to 1e-12 of itself: in doubles, whose
+/// error is up to about 3.3e-16 of |l| + |r|, or exactly where that could be
+/// more (in slivers, where the fuzzer found weights off by 1e-9 of the field;
+/// a bound of 1e-14 of |l| + |r| left weights off by 1e-4 in a triangle of
+/// three nearly collinear input points, found by a user review).
 double twiceArea(const Point& a, const Point& b, const Point& c)
 {
   const double l = (b.x - a.x) * (c.y - a.y), r = (b.y - a.y) * (c.x - a.x);
-  return std::abs(l - r) > 1e-14 * (std::abs(l) + std::abs(r)) ? l - r : orient2dAccurate(a, b, c);
+  return std::abs(l - r) > 3.3e-4 * (std::abs(l) + std::abs(r)) ? l - r : orient2dAccurate(a, b, c);
 }
 
 /// The terms of p in triangle t of T, from those of its known vertices

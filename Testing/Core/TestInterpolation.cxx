@@ -423,3 +423,25 @@ TEST(Interpolation, AHullEdgeNearlyAlongASegment)
     EXPECT_NEAR(valueAt(w[v], in, linear), linear(r.mesh.vertices[v]), 1e-5)
       << formatPoint(r.mesh.vertices[v]);
 }
+
+// Three nearly collinear input points on the hull (guitar.poly's (32.6, 8.57),
+// (32.8, 8.49) and (33.4, 8.25), found by a user review): a stitch point on
+// the hull edge took weights in their sliver off by 1e-4, since the areas in
+// doubles were trusted down to 1e-14 of their terms, and a linear field came
+// out 2e-4 off there.
+TEST(Interpolation, ASliverOfCollinearHullPoints)
+{
+  Pslg in;
+  in.points = { { 32.6, 8.57 }, { 32.8, 8.49 }, { 33.4, 8.25 }, { 33.6, 8.17 }, { 33.6, 7.88 },
+    { 32.4, 8.36 }, { 33.2, 8.04 } };
+  in.segments = { { 0, 1 }, { 2, 3 }, { 3, 4 }, { 5, 0 }, { 6, 2 } };
+  Options o;
+  o.domain = Domain::Hull;
+  o.maxEdgeLength = 0.05;
+  const Result r = meshed(in, o);
+  ASSERT_TRUE(r.ok) << r.error;
+  const std::vector<VertexTerms> w = termsOf(in, r, "collinear hull points");
+  for (std::size_t v = 0; v < w.size(); ++v)
+    ASSERT_NEAR(valueAt(w[v], in, linear), linear(r.mesh.vertices[v]), 1e-12)
+      << formatPoint(r.mesh.vertices[v]);
+}
