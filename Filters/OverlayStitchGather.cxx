@@ -599,19 +599,23 @@ const char* const OverlayStitchSourcePointIdName = "vtkOverlayStitchSourcePointI
 const char* const OverlayStitchRankName = "vtkOverlayStitchRank";
 
 //------------------------------------------------------------------------------
+vtkIdType OverlayStitchSourceId(vtkDataSetAttributes* data, const char* idName, vtkIdType i)
+{
+  auto* ids = vtkIdTypeArray::SafeDownCast(data->GetAbstractArray(idName));
+  return ids && i >= 0 && i < ids->GetNumberOfTuples() ? ids->GetValue(i) : vtkIdType(-1);
+}
+
+//------------------------------------------------------------------------------
 std::string OverlayStitchSource(
   vtkDataSetAttributes* data, const char* idName, vtkIdType i, const char* kind)
 {
-  auto value = [&](const char* name) {
-    auto* ids = vtkIdTypeArray::SafeDownCast(data->GetAbstractArray(name));
-    return ids && i >= 0 && i < ids->GetNumberOfTuples() ? ids->GetValue(i) : vtkIdType(-1);
-  };
-  const vtkIdType block = value(OverlayStitchBlockIdName), id = value(idName);
+  const vtkIdType block = OverlayStitchSourceId(data, OverlayStitchBlockIdName, i);
+  const vtkIdType id = OverlayStitchSourceId(data, idName, i);
   if (id < 0)
   {
     return std::string();
   }
-  const vtkIdType rank = value(OverlayStitchRankName);
+  const vtkIdType rank = OverlayStitchSourceId(data, OverlayStitchRankName, i);
   return std::string(kind) + " " + std::to_string(id) +
     (block >= 0 ? " of block " + std::to_string(block) : std::string(" of the input")) +
     (rank >= 0 ? " on rank " + std::to_string(rank) : std::string());

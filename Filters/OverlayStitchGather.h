@@ -103,6 +103,10 @@ extern const char* const OverlayStitchSourcePointIdName;
 /// part of it.
 extern const char* const OverlayStitchRankName;
 
+/// Item i's value in data's id array idName (one of those above), or -1
+/// without one.
+vtkIdType OverlayStitchSourceId(vtkDataSetAttributes* data, const char* idName, vtkIdType i);
+
 /// Where item i (a cell or point of data, the combined input's cell or point
 /// data) comes from, as "point 3 of block 2" (kind "point", idName the id
 /// array of that kind), with " on rank 1" in a parallel run, or "point 3 of

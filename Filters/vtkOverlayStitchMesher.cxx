@@ -305,7 +305,11 @@ std::string ExplainPoints(const std::string& text, vtkPolyData* input)
     const std::string source = OverlayStitchSource(input->GetPointData(),
       OverlayStitchSourcePointIdName, static_cast<vtkIdType>(point), "point");
     // A dataset's point that kept its id needs no note.
-    if (!source.empty() && source != "point " + std::to_string(point) + " of the input")
+    const bool renamed = OverlayStitchSourceId(input->GetPointData(), OverlayStitchBlockIdName,
+                           static_cast<vtkIdType>(point)) >= 0 ||
+      OverlayStitchSourceId(input->GetPointData(), OverlayStitchSourcePointIdName,
+        static_cast<vtkIdType>(point)) != static_cast<vtkIdType>(point);
+    if (!source.empty() && renamed)
     {
       out << (any ? "; " : " [") << "point " << point << " is " << source;
       any = true;
@@ -352,8 +356,8 @@ std::string ExplainSegments(const std::string& text, const osm::Array<SegmentSou
     {
       // A dataset without its ghost cells carries its own ids (OverlayStitchGather.h).
       auto own = [](vtkDataSetAttributes* data, const char* name, vtkIdType i) {
-        auto* ids = vtkIdTypeArray::SafeDownCast(data->GetAbstractArray(name));
-        return ids ? ids->GetValue(i) : i;
+        const vtkIdType id = OverlayStitchSourceId(data, name, i);
+        return id >= 0 ? id : i;
       };
       out << " is cell " << own(input->GetCellData(), OverlayStitchSourceCellIdName, source.Cell)
           << " from point " << own(input->GetPointData(), OverlayStitchSourcePointIdName, source.A)

@@ -1006,10 +1006,6 @@ void Mesher::meshRounds(Work& w)
     if (options.maxEdgeLength > 0 && oo.maxEdgeLength == 0)
       oo.maxEdgeLength = std::numeric_limits<double>::denorm_min();
     oo.maxSteinerPoints = options.maxSteinerPoints;
-    if (options.maxSteinerPoints > 0 && options.maxSteinerPoints < 4)
-      throw Stop{ "the overlay needs more than the allowed " +
-        std::to_string(options.maxSteinerPoints) +
-        " Steiner points: the 4 corners of its padding box count among them" };
     oo.sizeBoxes = regionBoxes;
     oo.sizeFromAreas = options.regionAreas &&
       std::any_of(input.regions.begin(), input.regions.end(),
@@ -1100,7 +1096,7 @@ void Mesher::meshRounds(Work& w)
         " hole or region seed(s) now lie on the other side of a segment that bent where its "
         "crossing joined another point within the merge tolerance, e.g. " +
         seedsAcrossJoins.example);
-    st.segmentsSplitAtVertices = walk.splitsAtInputVertices + walk.duplicatePieces;
+    st.segmentsSplitAtVertices = walk.splitsAtInputVertices + walk.overlaps.size();
     // Overlaps of input segments (a hull edge along a segment is no news).
     const auto inputs = static_cast<int>(w.segments.size());
     const auto overlap = std::find_if(walk.overlaps.begin(), walk.overlaps.end(),
@@ -1121,7 +1117,7 @@ void Mesher::meshRounds(Work& w)
         at(v));
     }
     st.overlayVertices = overlay.mesh.points.size();
-    st.overlaySteinerPoints = overlay.steinerPoints + 4;
+    st.overlaySteinerPoints = overlay.steinerPoints + kBoxCorners;
     if (overlay.refinementsSkipped > 0)
       res.warnings.push_back(std::to_string(overlay.refinementsSkipped) +
         " overlay refinement step(s) were skipped because a Steiner point fell on an existing "

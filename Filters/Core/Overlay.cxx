@@ -307,6 +307,10 @@ Overlay Refiner::refine()
     catch (const std::bad_alloc&)
     {}
   }
+  if (steinerCap > 0 && steinerCap < kBoxCorners)
+    throw Stop{ "the overlay needs more than the allowed " + std::to_string(steinerCap) +
+      " Steiner points: the " + std::to_string(kBoxCorners) +
+      " corners of its padding box count among them" };
   hardCap = steinerCap > 0
     ? steinerCap
     : 1000 * input.size() + 1000000 + static_cast<std::size_t>(8 * forMaxEdge);
@@ -386,9 +390,7 @@ double Refiner::pointsForMaxEdge() const
 void Refiner::countSteiner()
 {
   ++out.steinerPoints;
-  // The cap counts the 4 corners of the padding box too, as the statistic
-  // OverlaySteinerPoints does.
-  if (steinerCap > 0 && out.steinerPoints + 4 > steinerCap)
+  if (steinerCap > 0 && out.steinerPoints + kBoxCorners > steinerCap)
     throw Stop{ "the overlay needs more than the allowed " + std::to_string(steinerCap) +
       " Steiner points; raise the cap or coarsen the input" };
   if (out.steinerPoints > hardCap)

@@ -49,9 +49,14 @@ struct Overlay
   Triangulation mesh;
   Array<int> inputVertex; ///< input point index -> mesh vertex
   Array<char> isInput;    ///< per mesh vertex
+  /// Steiner points inserted, not counting the kBoxCorners corners.
   std::size_t steinerPoints = 0;
   std::size_t refinementsSkipped = 0; ///< triangles that could not be refined (numerics)
 };
+
+/// The padded box's corners, the overlay's first Steiner points: a cap on
+/// Steiner points (OverlayOptions::maxSteinerPoints) counts them.
+constexpr std::size_t kBoxCorners = 4;
 
 /// Mesh the points (distinct, finite) alone; segments are ignored here.
 Overlay buildOverlay(const Array<Point>& points, const OverlayOptions& options, RunContext& run);

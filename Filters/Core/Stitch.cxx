@@ -362,7 +362,6 @@ void Walker::markDuplicates()
     if (keys[k][0] == keys[k - 1][0] && keys[k][1] == keys[k - 1][1])
     {
       out.pieces[keys[k][3]].duplicate = true;
-      ++out.duplicatePieces;
       out.overlaps.push_back({ keys[k - 1][2], keys[k][2], keys[k][0], keys[k][1] });
     }
   }

@@ -104,7 +104,6 @@ struct Walk
   Array<int> firstPiece; ///< per segment: where its pieces start (none if it has none)
   Array<SegmentCrossing> segmentCrossings;
   std::size_t splitsAtInputVertices = 0;
-  std::size_t duplicatePieces = 0;
   /// Per duplicate piece: the segment whose piece is kept, the duplicate's
   /// segment (the larger index), and the overlay vertices the piece runs between.
   Array<std::array<int, 4>> overlaps;

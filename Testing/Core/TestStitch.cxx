@@ -271,7 +271,7 @@ TEST(Stitch, TheStitchedGraphDoesNotDependOnTheWalkOrder)
     segs.push_back({ c, c + 3 });
     Stitched s = stitchInput(pts, segs, 30);
     ASSERT_GT(s.walk.segmentCrossings.size(), 20u) << "seed " << seed;
-    ASSERT_GT(s.walk.duplicatePieces, 0u) << "seed " << seed;
+    ASSERT_GT(s.walk.overlaps.size(), 0u) << "seed " << seed;
 
     const std::size_t m = s.segments.size();
     Array<int> identity(m), reversed(m), shuffled(m);
@@ -296,7 +296,7 @@ TEST(Stitch, TheStitchedGraphDoesNotDependOnTheWalkOrder)
         EXPECT_TRUE(x.a == y.a && x.b == y.b && x.p == y.p)
           << "seed " << seed << ", crossing " << k;
       }
-      EXPECT_EQ(w.duplicatePieces, ref.duplicatePieces);
+      EXPECT_EQ(w.overlaps, ref.overlaps);
       Statistics stats;
       Array<Edge> edges;
       const PlanarGraph g =
