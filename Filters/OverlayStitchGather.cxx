@@ -143,7 +143,8 @@ vtkDataArray* GhostsOf(vtkPolyData* piece)
 /// its points or cells, which no copy may read past, noting each in notes
 /// (if given) as the filter reports such an array ("... : it has 2 tuples for
 /// 9 points."; `where` names the piece, e.g. "block 2", or is empty).
-void DropShortArrays(vtkPolyData* piece, const std::string& where, std::vector<std::string>* notes)
+void DropShortArrays(
+  vtkPolyData* piece, const std::string& where, std::vector<OverlayStitchNote>* notes)
 {
   for (vtkDataSetAttributes* data : { static_cast<vtkDataSetAttributes*>(piece->GetPointData()),
          static_cast<vtkDataSetAttributes*>(piece->GetCellData()) })
@@ -159,8 +160,10 @@ void DropShortArrays(vtkPolyData* piece, const std::string& where, std::vector<s
       }
       if (notes)
       {
-        notes->push_back(OverlayStitchShortArrayNote(
-          points ? "point" : "cell", array->GetName(), array->GetNumberOfTuples(), n, where));
+        const char* kind = points ? "point" : "cell";
+        notes->push_back({ { kind, array->GetName() ? array->GetName() : "(unnamed)" },
+          OverlayStitchShortArrayNote(
+            kind, array->GetName(), array->GetNumberOfTuples(), n, where) });
       }
       data->RemoveArray(a);
     }
@@ -311,11 +314,11 @@ void CollectHolePoints(vtkFieldData* field, std::vector<std::array<double, 3>>& 
 namespace
 {
 /// The arrays of some pieces that combining left out, since not every piece
-/// has them (with the same type and components): "point data X", "cell data Y".
-void NoteArraysLeftOut(
-  const std::vector<vtkPolyData*>& used, vtkPolyData* combined, std::vector<std::string>& out)
+/// has them (with the same type and components).
+void NoteArraysLeftOut(const std::vector<vtkPolyData*>& used, vtkPolyData* combined,
+  std::vector<OverlayStitchArrayName>& out)
 {
-  std::set<std::string> seen;
+  std::set<OverlayStitchArrayName> seen;
   for (const bool cells : { false, true })
   {
     vtkDataSetAttributes* kept = cells ? static_cast<vtkDataSetAttributes*>(combined->GetCellData())
@@ -327,8 +330,7 @@ void NoteArraysLeftOut(
       for (int i = 0; i < attributes->GetNumberOfArrays(); ++i)
       {
         const char* name = attributes->GetArrayName(i);
-        const std::string item =
-          std::string(cells ? "cell" : "point") + " data " + (name ? name : "(unnamed)");
+        const OverlayStitchArrayName item{ cells ? "cell" : "point", name ? name : "(unnamed)" };
         if ((!name || !kept->GetAbstractArray(name)) &&
           !(name && std::strcmp(name, vtkDataSetAttributes::GhostArrayName()) == 0) &&
           seen.insert(item).second)
@@ -443,17 +445,18 @@ vtkSmartPointer<vtkCellArray> Renumbered(
 /// them. Arrays too short for their points or cells are left out, each noted
 /// in notes (`where` names the piece). A piece with a cell (not a ghost cell)
 /// naming a missing point is returned as it is, to be refused by that cell's id.
-vtkSmartPointer<vtkPolyData> WithoutGhostCells(
-  vtkPolyData* piece, bool sourceIds, const std::string& where, std::vector<std::string>& notes)
+vtkSmartPointer<vtkPolyData> WithoutGhostCells(vtkPolyData* piece, bool sourceIds,
+  const std::string& where, std::vector<OverlayStitchNote>& notes)
 {
   vtkAbstractArray* flags =
     piece->GetCellData()->GetAbstractArray(vtkDataSetAttributes::GhostArrayName());
   if (flags && !GhostsOf(piece))
   {
-    notes.push_back(std::string("The cell data array ") + vtkDataSetAttributes::GhostArrayName() +
-      (where.empty() ? "" : " of " + where) +
-      " is not used: ghost cells are flagged by one unsigned char per cell, and the cells it "
-      "flags are meshed.");
+    notes.push_back({ {},
+      std::string("The cell data array ") + vtkDataSetAttributes::GhostArrayName() +
+        (where.empty() ? "" : " of " + where) +
+        " is not used: ghost cells are flagged by one unsigned char per cell, and the cells it "
+        "flags are meshed." });
   }
   if (!GhostsOf(piece) || NamesMissingPoints(piece))
   {
@@ -559,7 +562,7 @@ std::string PieceLabel(vtkPolyData* piece, const char* pieceName, std::size_t in
 /// their ids in it, without its ghost cells: combined with the other blocks,
 /// a ghost copy of a later block's cell would take the place of that cell.
 vtkSmartPointer<vtkPolyData> WithBlockIds(
-  vtkPolyData* block, unsigned int flatIndex, std::vector<std::string>& notes)
+  vtkPolyData* block, unsigned int flatIndex, std::vector<OverlayStitchNote>& notes)
 {
   auto copy = vtkSmartPointer<vtkPolyData>::New();
   copy->ShallowCopy(block);
@@ -665,7 +668,7 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
   // Arrays too short for their piece are left out (the copies below would
   // read past them), each noted.
   std::vector<vtkSmartPointer<vtkPolyData>> trimmed(pieces.size());
-  std::vector<std::string> notes;
+  std::vector<OverlayStitchNote> notes;
   for (std::size_t p = 0; p < pieces.size(); ++p)
   {
     vtkPolyData* polyData = vtkPolyData::SafeDownCast(pieces[p]);
@@ -931,7 +934,7 @@ bool OverlayStitchGatherInput(vtkMultiProcessController* controller, vtkPolyData
   const int ranks = controller ? controller->GetNumberOfProcesses() : 1;
   // This rank's piece, without the cells that are ghost copies of another
   // piece's: in a serial run too, so that it meshes what a parallel one does.
-  std::vector<std::string> notes;
+  std::vector<OverlayStitchNote> notes;
   vtkSmartPointer<vtkPolyData> local = input
     ? WithoutGhostCells(input, ranks <= 1,
         ranks > 1 ? "the piece of rank " + std::to_string(controller->GetLocalProcessId()) : "",
@@ -1000,7 +1003,7 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombineBlocks(vtkCompositeDataSet* inp
     *summary = OverlayStitchGatherSummary();
   }
   ignored.clear();
-  std::vector<std::string> notes;
+  std::vector<OverlayStitchNote> notes;
   std::vector<vtkSmartPointer<vtkDataObject>> blocks;
   auto it = vtkSmartPointer<vtkCompositeDataIterator>::Take(input->NewIterator());
   for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())

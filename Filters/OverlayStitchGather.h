@@ -46,6 +46,31 @@ class vtkIdTypeArray;
 class vtkMultiProcessController;
 class vtkPolyData;
 
+/// An input array, point or cell data, by its kind ("point" or "cell") and
+/// name ("(unnamed)" for an array without one).
+struct OverlayStitchArrayName
+{
+  std::string Kind;
+  std::string Name;
+  bool operator==(const OverlayStitchArrayName& other) const
+  {
+    return this->Kind == other.Kind && this->Name == other.Name;
+  }
+  bool operator<(const OverlayStitchArrayName& other) const
+  {
+    return this->Kind != other.Kind ? this->Kind < other.Kind : this->Name < other.Name;
+  }
+};
+
+/// A sentence for the user about input left out of a piece or block, and the
+/// array it is about (Kind empty: about no array the filter may carry, so
+/// always worth reporting).
+struct OverlayStitchNote
+{
+  OverlayStitchArrayName Array;
+  std::string Text;
+};
+
 /// What the gather did, for tests and diagnostics (meaningful on rank 0).
 struct OverlayStitchGatherSummary
 {
@@ -59,12 +84,12 @@ struct OverlayStitchGatherSummary
   /// rank 1 refers to point 57, ..."), for the caller to report.
   vtkIdType InvalidCells = 0;
   std::string FirstInvalidCell;
-  /// Point and cell arrays of some pieces but not all ("cell data Tag"): the
-  /// combined input has only those common to every piece.
-  std::vector<std::string> ArraysLeftOut;
+  /// Point and cell arrays of some pieces but not all: the combined input has
+  /// only those common to every piece.
+  std::vector<OverlayStitchArrayName> ArraysLeftOut;
   /// Arrays left out of a piece or block for other reasons (fewer tuples than
   /// its points or cells; a ghost array VTK cannot use), one sentence each.
-  std::vector<std::string> NotCarried;
+  std::vector<OverlayStitchNote> NotCarried;
 };
 
 /// Collective over `controller`: every rank must call it once, in the same

@@ -368,27 +368,30 @@ std::string ExplainSegments(const std::string& text, const osm::Array<SegmentSou
   return out.str();
 }
 
+/// Whether the filter carries arrays of this kind ("point", "cell"; any other
+/// kind is not an array it carries, and counts).
+bool Carries(const std::string& kind, bool pointData, bool cellData)
+{
+  return kind == "point" ? pointData : kind == "cell" ? cellData : true;
+}
+
 /// The arrays that combining blocks or pieces left out and the filter would
 /// carry (point data when interpolating, cell data when passing it), listed.
 std::string ArraysLeftOut(
   std::initializer_list<const OverlayStitchGatherSummary*> summaries, bool pointData, bool cellData)
 {
   std::string names;
-  std::set<std::string> named; // blocks and ranks may both leave one out
+  std::set<OverlayStitchArrayName> named; // blocks and ranks may both leave one out
   for (const OverlayStitchGatherSummary* summary : summaries)
   {
-    for (const std::string& item : summary->ArraysLeftOut)
+    for (const OverlayStitchArrayName& item : summary->ArraysLeftOut)
     {
-      const bool point = item.rfind("point", 0) == 0;
       // An array some piece had too few tuples of is named once, with those.
-      const std::string kind = point ? "point data " : "cell data ";
-      const std::string note =
-        "The input's " + kind + "array " + item.substr(kind.size()) + " is not carried";
       const bool noted = std::any_of(summary->NotCarried.begin(), summary->NotCarried.end(),
-        [&note](const std::string& n) { return n.rfind(note, 0) == 0; });
-      if ((point ? pointData : cellData) && !noted && named.insert(item).second)
+        [&item](const OverlayStitchNote& n) { return n.Array == item; });
+      if (Carries(item.Kind, pointData, cellData) && !noted && named.insert(item).second)
       {
-        names += (names.empty() ? "" : ", ") + item;
+        names += (names.empty() ? "" : ", ") + item.Kind + " data " + item.Name;
       }
     }
   }
@@ -948,14 +951,12 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   }
   for (const OverlayStitchGatherSummary* summary : { &combination, &gather })
   {
-    for (const std::string& note : summary->NotCarried)
+    for (const OverlayStitchNote& note : summary->NotCarried)
     {
       // Only about arrays the filter would carry.
-      const bool point = note.rfind("The input's point data", 0) == 0;
-      const bool cell = note.rfind("The input's cell data", 0) == 0;
-      if ((!point || this->InterpolatePointData) && (!cell || this->PassCellData))
+      if (Carries(note.Array.Kind, this->InterpolatePointData, this->PassCellData))
       {
-        vtkWarningMacro(<< note);
+        vtkWarningMacro(<< note.Text);
       }
     }
   }
