@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cfloat>
 #include <cmath>
 #include <numeric>
 #include <optional>
@@ -503,6 +504,17 @@ Array<int> hullCandidates(const Array<Point>& P)
   return out;
 }
 
+/// x lies between a and b along the line through them (ab: |b - a|), within
+/// the rounding onLineWithinRounding allows across it.
+bool alongSegment(const Point& a, const Point& b, const Point& x, double ab)
+{
+  const double scale = std::max(std::fabs(x.x), std::fabs(x.y)) + ab;
+  const double slack = 8 * DBL_EPSILON * scale * ab;
+  const double ux = b.x - a.x, uy = b.y - a.y;
+  const double along = (x.x - a.x) * ux + (x.y - a.y) * uy; // |x - a| cos * ab
+  return along >= -slack && along <= ab * ab + slack;
+}
+
 } // namespace
 
 Array<int> convexHull(const Array<Point>& P)
@@ -563,7 +575,10 @@ Array<int> hullBoundary(const Array<Point>& P)
     return length;
   };
   const Array<double> lowerLength = edgeLengths(lower), upperLength = edgeLengths(upper);
-  // The hull edge index near which point p lies within rounding, or -1.
+  // The hull edge index near which point p lies within rounding, or -1. The
+  // chain's order finds the edge whose ends' x bracket p's; a nearly vertical
+  // edge brackets points far beyond its ends, near its line but not near the
+  // edge, so p must also lie between the ends along the edge.
   const auto nearEdge = [&](const Array<int>& chain, int p, bool isLower) {
     const auto it = std::upper_bound(chain.begin(), chain.end(), p, less);
     if (it == chain.begin() || it == chain.end())
@@ -571,7 +586,8 @@ Array<int> hullBoundary(const Array<Point>& P)
     const int i = static_cast<int>(it - chain.begin()) - 1;
     const Point &a = P[chain[i]], &b = P[chain[i + 1]];
     const double length = (isLower ? lowerLength : upperLength)[i];
-    if (!onLineWithinRounding(orient2d(a, b, P[p]), P[p], length, length))
+    if (!onLineWithinRounding(orient2d(a, b, P[p]), P[p], length, length) ||
+      !alongSegment(a, b, P[p], length))
       return -1;
     return isLower ? i : h - 1 - i;
   };

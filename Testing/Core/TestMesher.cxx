@@ -2376,3 +2376,34 @@ TEST(Domain, HullBoundaryPassesThroughPointsWithinRounding)
     { 0.5, 0 } };
   EXPECT_EQ(hullBoundary(square), (Array<int>{ 0, 6, 4, 1, 2, 3 }));
 }
+
+TEST(Domain, AHullWithANearlyVerticalEdgeHasItsArea)
+{
+  // Found by two reviews: a corner of one chain lies between the ends of a
+  // nearly vertical edge of the other in x (an ulp apart) and on that edge's
+  // line, but far beyond the edge. It was taken for a point on both chains,
+  // and these hulls for ones without area: the padded box was meshed.
+  const double below1 = std::nextafter(1.0, 0.0);
+  const Array<Point> square{ { 0, 0 }, { 1, 0 }, { 1, 0.5 }, { below1, 1 }, { 0, 1 } };
+  EXPECT_EQ(hullBoundary(square), (Array<int>{ 0, 1, 2, 3, 4 }));
+  const Array<Point> strip{ { 0, 0 }, { 1, 0 }, { 1, 0.05 }, { 1, 0.1 }, { below1, 0.11 } };
+  EXPECT_EQ(hullBoundary(strip), (Array<int>{ 0, 1, 2, 3, 4 }));
+  // A rectangle's side digitised as x = 0.3, 0.1 + 0.2 (an ulp more), 0.3.
+  const Array<Point> side{ { 0, 0 }, { 0.3, 0 }, { 0.1 + 0.2, 1 }, { 0.3, 2 }, { 0, 2 } };
+  EXPECT_EQ(hullBoundary(side).size(), 5u);
+  Pslg pslg;
+  pslg.points = square;
+  Options options;
+  options.domain = Domain::Hull;
+  const Result r = mesh(pslg, options);
+  ASSERT_TRUE(r.ok) << r.error;
+  double area = 0;
+  for (const Triangle& t : r.mesh.triangles)
+    area += 0.5 * orient2d(r.mesh.vertices[t[0]], r.mesh.vertices[t[1]], r.mesh.vertices[t[2]]);
+  EXPECT_NEAR(area, 1.0, 1e-12) << "the hull, not the padded box";
+  for (const std::string& w : r.warnings)
+    EXPECT_EQ(w.find("collinear"), std::string::npos) << w;
+  // Still thinner than rounding: no area, no boundary.
+  const Array<Point> thin{ { 0, 0 }, { 1, 1e-17 }, { 2, 0 } };
+  EXPECT_TRUE(hullBoundary(thin).empty());
+}
