@@ -977,7 +977,10 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   osm::PlaneMap map;
   if (inputError.empty())
   {
-    inputError = map.choose(points, this->ProjectToXYPlane != 0);
+    // Float coordinates are rounded to 2^-24 of themselves: a tilted plane's
+    // points, as a slice gives them, lie that far off it.
+    const bool floats = input->GetPoints() && input->GetPoints()->GetDataType() == VTK_FLOAT;
+    inputError = map.choose(points, this->ProjectToXYPlane != 0, floats ? 0x1p-24 : 0.0);
   }
   // Composite blocks and the pieces of a parallel run are meshed as one
   // combined input, whose numbers are not any single block's.

@@ -15,7 +15,8 @@
  * The input points may lie in any plane:
  * - in a plane z = constant, they are meshed as they are;
  * - otherwise, if they are coplanar (every point within 1e-9 of the bounding
- *   box diagonal from their least-squares plane), they are meshed in that
+ *   box diagonal from their least-squares plane, plus for float points 4
+ *   times 2^-24 of the largest coordinate), they are meshed in that
  *   plane and the output is mapped back to 3D: input vertices keep their
  *   original coordinates bit for bit, new points lie in the fitted plane;
  * - otherwise the run fails with an error naming the point farthest from the

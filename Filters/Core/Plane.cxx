@@ -246,7 +246,7 @@ std::string formatPoint3(const Vec3& p)
   return buf;
 }
 
-std::string PlaneMap::choose(const Array<Vec3>& points, bool projectToXY)
+std::string PlaneMap::choose(const Array<Vec3>& points, bool projectToXY, double roundoff)
 {
   input = &points;
   fitted = projected = false;
@@ -268,13 +268,26 @@ std::string PlaneMap::choose(const Array<Vec3>& points, bool projectToXY)
   const PlaneFit fit = fitPlane(points);
   if (!fit.ok)
     return "the input points have no best-fitting plane";
-  if (!fit.coplanar(relativeTolerance))
+  // Rounding each coordinate by roundoff of it moves a point by up to
+  // sqrt(3) roundoff of its largest coordinate off the plane, and the fit
+  // through the moved points by about as much again.
+  double largest = 0.0;
+  for (const Vec3& p : points)
+    largest = std::max({ largest, std::fabs(p.x), std::fabs(p.y), std::fabs(p.z) });
+  const double rounding = 4 * roundoff * largest;
+  if (!(fit.maxDistance <= relativeTolerance * fit.diagonal + rounding))
   {
-    char buf[160];
-    std::snprintf(buf, sizeof buf,
-      " is %g from their best-fitting plane (the tolerance is %g times the bounding box "
-      "diagonal: %g)",
-      fit.maxDistance, relativeTolerance, relativeTolerance * fit.diagonal);
+    char buf[224];
+    if (rounding > 0)
+      std::snprintf(buf, sizeof buf,
+        " is %g from their best-fitting plane (the tolerance is %g times the bounding box "
+        "diagonal plus 4 times the coordinates' rounding, %g, of the largest coordinate: %g)",
+        fit.maxDistance, relativeTolerance, roundoff, relativeTolerance * fit.diagonal + rounding);
+    else
+      std::snprintf(buf, sizeof buf,
+        " is %g from their best-fitting plane (the tolerance is %g times the bounding box "
+        "diagonal: %g)",
+        fit.maxDistance, relativeTolerance, relativeTolerance * fit.diagonal);
     return "the input points are not coplanar: point " + std::to_string(fit.farthest) + " at " +
       formatPoint3(points[fit.farthest]) + buf +
       "; turn on ProjectToXYPlane (osm-mesh: --project-xy) to mesh their projection onto the "

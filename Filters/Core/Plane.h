@@ -91,8 +91,11 @@ public:
 
   /// Chooses the mapping for points (kept by reference until the map is done
   /// with). Returns an error message naming the farthest point when they are
-  /// not coplanar and projectToXY is off, or "".
-  std::string choose(const Array<Vec3>& points, bool projectToXY);
+  /// not coplanar and projectToXY is off, or "". roundoff: the unit roundoff
+  /// of the coordinates as the caller stored them (2^-24 for floats; 0 for
+  /// doubles, whose rounding the relative tolerance covers): points of a plane
+  /// that storing moved off it by rounding are coplanar.
+  std::string choose(const Array<Vec3>& points, bool projectToXY, double roundoff = 0.0);
 
   bool isFitted() const { return fitted; }
   bool isProjected() const { return projected; }

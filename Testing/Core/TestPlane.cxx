@@ -265,6 +265,35 @@ TEST(PlaneMap, TiltedInputComesBackBitForBit)
   EXPECT_NEAR(m.z, expected.z, 1e-12);
 }
 
+TEST(PlaneMap, FloatCoordinatesOfATiltedPlaneAreCoplanar)
+{
+  // Found by a user review: float input (ParaView's Slice gives it) lies
+  // 2^-24 of its coordinates off its plane, far beyond 1e-9 of the diagonal.
+  for (const Vec3 c : { Vec3{ 0.1, 0, 0 }, Vec3{ 0, 0, 1000 } })
+  {
+    osm::Array<osm::Vec3> points = planePoints(c, { 1, 0.3, 0.7 }, { -0.2, 1, 0.4 }, 200, 5);
+    for (Vec3& p : points)
+      p = { double(float(p.x)), double(float(p.y)), double(float(p.z)) };
+    osm::PlaneMap map;
+    const std::string error = map.choose(points, false);
+    EXPECT_NE(error.find("not coplanar"), std::string::npos) << "as doubles: " << error;
+    ASSERT_EQ(map.choose(points, false, 0x1p-24), "") << c.z;
+    EXPECT_TRUE(map.isFitted());
+    // Input points still come back bit for bit.
+    osm::Array<osm::Point> planar;
+    for (const Vec3& p : points)
+      planar.push_back(map.toPlane(p));
+    map.indexInputPoints(planar);
+    EXPECT_EQ(map.toSpace(planar[7]).z, points[7].z);
+    // A point off the plane by 1e-4 of the coordinates is not float rounding.
+    const double off = 1e-4 * (1 + c.z);
+    points[3].z += off;
+    const std::string far = map.choose(points, false, 0x1p-24);
+    EXPECT_NE(far.find("not coplanar: point 3"), std::string::npos) << far;
+    EXPECT_NE(far.find("coordinates' rounding"), std::string::npos) << far;
+  }
+}
+
 TEST(PlaneMap, NonCoplanarIsAnErrorUnlessProjected)
 {
   const osm::Array<osm::Vec3> points{ { 0, 0, 0 }, { 10, 0, 0 }, { 10, 10, 0 }, { 0, 10, 0 },

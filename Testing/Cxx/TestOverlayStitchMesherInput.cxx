@@ -367,6 +367,39 @@ int TestTiltedPlane()
   Check(h.Mesher->GetOverlayOutput()->GetNumberOfCells() > 0 && d2 < 1e-12,
     "every Overlay point lies in the plane (farthest " + Num(d2) + ")");
 
+  // Float coordinates (as ParaView's Slice gives them) lie 2^-24 of
+  // themselves off the plane: still coplanar, and the input's points come
+  // back as they were. A point 1e-4 off is not rounding.
+  {
+    auto floats = vtkSmartPointer<vtkPolyData>::New();
+    floats->DeepCopy(input);
+    vtkNew<vtkPoints> single;
+    single->SetDataTypeToFloat();
+    single->DeepCopy(input->GetPoints());
+    floats->SetPoints(single);
+    vtkPolyData* floatMesh = h.Run(floats, "tilted plane, float points");
+    const double floatArea = osmtest::TotalArea(floatMesh);
+    Check(h.NoError() && Statistic(floatMesh, "InputPlaneFitted") == 1 &&
+        std::fabs(floatArea - 100.0) < 1e-4,
+      "float points of a tilted plane are meshed in it (area " + Num(floatArea) + ")");
+    const auto floatPoints = PointSet(floatMesh);
+    int kept = 0;
+    for (vtkIdType i = 0; i < floats->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      floats->GetPoint(i, p);
+      kept += floatPoints.count({ p[0], p[1], p[2] }) ? 1 : 0;
+    }
+    Check(kept == floats->GetNumberOfPoints(), "their input points come back as they were");
+    double p[3];
+    single->GetPoint(5, p);
+    single->SetPoint(5, p[0], p[1], p[2] + 1e-3);
+    single->Modified();
+    h.Run(floats, "tilted plane, float points, one off");
+    Check(h.Messages->HasError({ "not coplanar: point 5", "coordinates' rounding" }),
+      "a float point 1e-3 off the plane is refused, the tolerance explained");
+  }
+
   // Hole seeds: from the field data (3D, projected onto the plane) ...
   const Xyz center = tilt.At(5, 5);
   AddFieldHoles(input, { { center[0], center[1], center[2] + 0.25 } });
