@@ -2,6 +2,7 @@
 
 #include "Geometry.h"
 #include "HugePages.h"
+#include "Predicates.h"
 #include "Snap.h"
 
 #include <algorithm>
@@ -220,6 +221,65 @@ void warnAboutSeedsBesideBends(const Pslg& in, const Array<Point>& points,
       example);
 }
 
+/// Hole and region seeds that merging moved a segment across, or whose
+/// segment it collapsed to a point (a small hole's outline): their region may
+/// have changed, and the mesh shows no trace of it, so say so. Merging moves
+/// a point by at most tol, so a seed can change sides only within tol of the
+/// merged segment; seeds sorted by x give the candidates.
+void warnAboutSeedsAcrossMerges(const Pslg& in, const CleanPslg& out, double tol,
+  const PointFormat& format, std::vector<std::string>& warnings)
+{
+  struct Seed
+  {
+    Point p;
+    const char* kind;
+    std::size_t index;
+    bool moved = false;
+  };
+  Array<Seed> seeds;
+  for (std::size_t h = 0; h < in.holes.size(); ++h)
+    seeds.push_back({ in.holes[h], "hole", h });
+  for (std::size_t r = 0; r < in.regions.size(); ++r)
+    seeds.push_back({ in.regions[r].seed, "region", r });
+  if (tol <= 0 || seeds.empty())
+    return;
+  std::sort(seeds.begin(), seeds.end(), [](const Seed& a, const Seed& b) { return a.p < b.p; });
+  std::size_t count = 0;
+  std::string example;
+  for (std::size_t s = 0; s < in.segments.size(); ++s)
+  {
+    const Point &a0 = in.points[in.segments[s][0]], &b0 = in.points[in.segments[s][1]];
+    const Point &a = out.points[out.pointOf[in.segments[s][0]]],
+                &b = out.points[out.pointOf[in.segments[s][1]]];
+    if ((a0 == a && b0 == b) || a0 == b0)
+      continue;
+    const bool collapsed = a == b;
+    const SegmentFrame frame(a, collapsed ? Point{ a.x + 1, a.y } : b);
+    const double length = collapsed ? 0.0 : frame.length;
+    auto it = std::lower_bound(seeds.begin(), seeds.end(), std::min(a.x, b.x) - tol,
+      [](const Seed& seed, double x) { return seed.p.x < x; });
+    for (; it != seeds.end() && it->p.x <= std::max(a.x, b.x) + tol; ++it)
+    {
+      const Point& q = it->p;
+      const double along = frame.along(q);
+      if (it->moved || along < -tol || along > length + tol || std::fabs(frame.off(q)) > tol)
+        continue;
+      if (!collapsed && orientSign(a0, b0, q) == orientSign(a, b, q))
+        continue;
+      it->moved = true;
+      if (count++ == 0)
+        example = std::string(it->kind) + " " + std::to_string(it->index) + " at " +
+          formatPoint(q, format) + " and segment " + std::to_string(s);
+    }
+  }
+  if (count > 0)
+    warnings.push_back(std::to_string(count) +
+      " hole or region seed(s) lie where merging points within the merge tolerance moved a "
+      "segment across them or collapsed it to a point, so they may now lie in another region: "
+      "e.g. " +
+      example);
+}
+
 /// The segments on the merged points; with a tolerance, split at the points
 /// within it (Snap.h); zero-length and duplicate ones dropped.
 std::string mapSegments(const Pslg& in, CleanPslg& out, Statistics& stats,
@@ -278,6 +338,7 @@ std::string mapSegments(const Pslg& in, CleanPslg& out, Statistics& stats,
     out.segments.push_back(segment);
     out.segmentOrigin.push_back(origin);
   }
+  warnAboutSeedsAcrossMerges(in, out, tol, format, warnings);
   warnAboutSeedsBesideBends(in, out.points, split, tol, warnings);
   return {};
 }

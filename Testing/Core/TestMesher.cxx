@@ -1785,6 +1785,39 @@ TEST(Clean, ASeedBesideABentSegmentIsWarnedAbout)
   EXPECT_FALSE(mentions(mesh(p, o).warnings, "seed(s) lie within the merge tolerance"));
 }
 
+TEST(Clean, ASeedAMergeMovesASegmentAcrossIsWarnedAbout)
+{
+  // Found by a review: a divider at x = 5 whose ends merge into the square's
+  // points at x = 5.009 moves across a hole seed at x = 5.004, and the hole
+  // takes the other half; a small triangle around a seed collapses to a
+  // point, and the seed takes the region around it. Nothing said so.
+  const char* warning = "seed(s) lie where merging points within the merge tolerance moved a "
+                        "segment across them or collapsed it";
+  Pslg p;
+  p.points = { { 0, 0 }, { 5.009, 0 }, { 10, 0 }, { 10, 10 }, { 5.009, 10 }, { 0, 10 }, { 5, 0 },
+    { 5, 10 } };
+  p.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 4 }, { 4, 5 }, { 5, 0 }, { 6, 7 } };
+  p.holes = { { 5.004, 5 } };
+  Options o;
+  o.mergeTolerance = 0.01;
+  const Result moved = mesh(p, o);
+  ASSERT_TRUE(moved.ok) << moved.error;
+  EXPECT_TRUE(mentions(moved.warnings, std::string("1 hole or region ") + warning));
+  EXPECT_TRUE(mentions(moved.warnings, "e.g. hole 0 at (5.0039999999999996, 5) and segment 6"));
+  EXPECT_FALSE(mentions(mesh(p).warnings, warning)) << "no tolerance, nothing moved";
+  // The same merge, a seed on the side it stays on: nothing to say.
+  p.holes = { { 4.99, 5 } };
+  EXPECT_FALSE(mentions(mesh(p, o).warnings, warning));
+  // A region seed in a triangle that collapses.
+  p.holes.clear();
+  p.points.insert(p.points.end(), { { 2, 5 }, { 2.005, 5 }, { 2, 5.005 } });
+  p.segments.insert(p.segments.end(), { { 8, 9 }, { 9, 10 }, { 10, 8 } });
+  p.regions = { { { 2.001, 5.001 }, 7.0, 0.0 } };
+  const Result collapsed = mesh(p, o);
+  ASSERT_TRUE(collapsed.ok) << collapsed.error;
+  EXPECT_TRUE(mentions(collapsed.warnings, "e.g. region 0 at (2.0009999999999999, "));
+}
+
 TEST(Clean, MergeToleranceFarBelowTheCoordinates)
 {
   // Cell indices of x / tol overflowed 64 bits here (1e6 / 1e-13: undefined
