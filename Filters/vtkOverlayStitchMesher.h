@@ -142,11 +142,11 @@ public:
 
   ///@{
   /**
-   * Input points closer than this distance are merged into the first of them
+   * Input points at most this distance apart are merged into the first of them
    * (counted in the statistic DuplicatePointsMerged), and segments split at
-   * the points closer than this to them, bending to pass through them
+   * the points within this distance of them, bending to pass through them
    * (PointsSnappedOntoSegments): a border digitised twice becomes one. Where
-   * crossing segments are split, crossings closer than this to a point or to
+   * crossing segments are split, crossings within this distance of a point or of
    * another crossing join it: segments meant to meet at one point, whose
    * rounded crossings scatter, meet there. 0, the default, merges only exact
    * duplicates.

@@ -90,9 +90,9 @@ INPUT                  Triangle .poly (holes honoured) or .node file, or
   --max-edge H         no edge longer than H: refine the overlay, split the
                        few longer completed edges (default 0: no limit)
   --no-resolve         crossing segments are an error (default: split them)
-  --merge-tolerance D  merge points closer than D, and split segments at points
-                       closer than D to them; crossings of segments closer
-                       than D to a point or crossing join it (default 0:
+  --merge-tolerance D  merge points at most D apart, and split segments at
+                       points within D of them; crossings of segments within
+                       D of a point or crossing join it (default 0:
                        exact duplicates)
   --max-steiner N      fail if the overlay of a meshing round needs more than
                        N Steiner points (as the statistic OverlaySteinerPoints

@@ -34,10 +34,10 @@ struct Options
   Domain domain = Domain::Auto;
   /// Split crossing segments at their intersection (true) or refuse them (false).
   bool resolveCrossings = true;
-  /// Points closer than this (absolute distance) are merged into the first of
-  /// them, and segments split at the points closer than this to them (they
+  /// Points at most this far apart (absolute distance) are merged into the
+  /// first of them, and segments split at the points within this of them (they
   /// bend by at most this much; Snap.h). Crossings split in the rounds join
-  /// a point or crossing closer than this, if it lies within this of the
+  /// a point or crossing within this, if it lies within this of the
   /// pieces of the input through the crossing: a segment bends through it by
   /// at most this much too, however many rounds its pieces cross again in.
   /// 0 merges only exact duplicates.
