@@ -161,6 +161,9 @@ private:
   }
   void makeBox();
   void enqueueIfNeeded(int t);
+  /// Whether the size bound asks to refine triangle abc (longest: its longest
+  /// edge, squared).
+  bool sizeBoundRefines(const Point& a, const Point& b, const Point& c, double longest) const;
   void refineTriangle(int t);
   Point steinerPoint(int t, const Point& circumcenter) const;
   void splitHullEdge(int edge);
@@ -247,10 +250,7 @@ void Refiner::enqueueIfNeeded(int t)
   if (mesh.tri[t].info < 0)
   {
     const double la = dist2(b, c), lb = dist2(a, c), lc = dist2(a, b);
-    const double longest = std::max({ la, lb, lc });
-    const bool tooLong =
-      (maxEdge > 0 && longest > maxEdge2 && !(limited && outsideBounds(a, b, c, sizeWithin))) ||
-      (!sizeBoxes.empty() && sizeBoxes.tooLong(a, b, c, longest));
+    const bool tooLong = sizeBoundRefines(a, b, c, std::max({ la, lb, lc }));
     if (!tooLong && o.x * o.x + o.y * o.y <= gamma2 * std::min({ la, lb, lc }))
       return;
     // Poor, but beyond the bounds where output can be: leave it (tested only
@@ -260,6 +260,12 @@ void Refiner::enqueueIfNeeded(int t)
   }
   // The key as refineTriangle computes the radius (only its size class counts).
   queue.push(dist2(a, Point{ a.x + o.x, a.y + o.y }), { t, mesh.tri[t].v[2] });
+}
+
+bool Refiner::sizeBoundRefines(const Point& a, const Point& b, const Point& c, double longest) const
+{
+  return (maxEdge > 0 && longest > maxEdge2 && !(limited && outsideBounds(a, b, c, sizeWithin))) ||
+    (!sizeBoxes.empty() && sizeBoxes.tooLong(a, b, c, longest));
 }
 
 Overlay Refiner::refine()
@@ -452,9 +458,19 @@ void Refiner::refineTriangle(int t)
   const double resolution =
     64 * std::numeric_limits<double>::epsilon() * std::max(std::fabs(c.x), std::fabs(c.y));
   if (r2 < resolution * resolution)
+  {
+    // So small a triangle is too long only for a size bound that small.
+    if (sizeBoundRefines(a, b, d, std::max({ dist2(a, b), dist2(b, d), dist2(d, a) })))
+      throw Stop{ std::string(sizeFromAreas
+                      ? "the maximum edge length or a region's maximum triangle area"
+                      : "the maximum edge length") +
+          " is too small for double precision at these coordinates (edges below about 1e-14 of "
+          "the coordinate magnitude): use a larger one, or move the input nearer the origin",
+        true, c };
     throw Stop{ "input points are closer together than double precision resolves at their "
                 "coordinates (features below about 1e-14 of the coordinate magnitude)",
       true, c, { -1, -1 }, true };
+  }
   if (!mesh.cavityOf(c, start, cavity))
   {
     ++out.refinementsSkipped;

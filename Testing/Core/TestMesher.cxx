@@ -425,6 +425,28 @@ TEST(Mesher, AHullEdgeAlongASegmentIsNotASecondSegment)
   EXPECT_NEAR(area, 8.0, 1e-9);
 }
 
+TEST(Mesher, AMaximumEdgeBelowDoublePrecisionIsNamedAsTheCause)
+{
+  // Found by a user review: a square 1e-3 across at 1e9, whose points are
+  // 2,500 ulps apart, with a maximum edge of 1e-5 (1e-14 of the coordinates).
+  // The error blamed input points too close together and offered a merge
+  // tolerance, which cannot help.
+  Pslg p = square();
+  for (Point& q : p.points)
+    q = { 1e9 + 1e-3 * q.x, 1e9 + 1e-3 * q.y };
+  Options o;
+  o.maxEdgeLength = 1e-5;
+  const Result tiny = mesh(p, o);
+  ASSERT_FALSE(tiny.ok);
+  EXPECT_NE(tiny.error.find("the maximum edge length is too small for double precision at these "
+                            "coordinates"),
+    std::string::npos)
+    << tiny.error;
+  EXPECT_EQ(tiny.error.find("merge tolerance"), std::string::npos) << tiny.error;
+  o.maxEdgeLength = 3e-5;
+  EXPECT_TRUE(mesh(p, o).ok) << "3e-5 is resolved";
+}
+
 TEST(Mesher, FarSeedsAreOutsideNotAScale)
 {
   // Found by a user review: a hole seed at (1e100, 1e100) set the scale, and
