@@ -362,6 +362,9 @@ std::string cleanPslg(const Pslg& in, CleanPslg& out, Statistics& stats,
         formatPoint(region.seed);
     if (!std::isfinite(region.attribute))
       return "region " + std::to_string(r) + " has a non-finite attribute";
+    // An infinite area bounds nothing, as 0 or a negative one; NaN is no number.
+    if (std::isnan(region.maxArea))
+      return "region " + std::to_string(r) + " has a maximum area that is not a number";
   }
   mergeDuplicates(in, out, stats, warnings, mergeTolerance, format, mayJoin);
   return mapSegments(in, out, stats, warnings, mergeTolerance, format, snap);

@@ -901,6 +901,16 @@ TEST(Mesher, RegionalAttributesOfASharedRegionAreTheLastSeeds)
   const Result bad = mesh(p);
   EXPECT_FALSE(bad.ok);
   EXPECT_NE(bad.error.find("region 4 has a non-finite coordinate"), std::string::npos) << bad.error;
+  // A NaN area was taken silently (found by a review), applied or not.
+  p.regions[4].seed = { 0.5, 0.5 };
+  p.regions[2].maxArea = std::nan("");
+  const Result nanArea = mesh(p, areas);
+  EXPECT_FALSE(nanArea.ok);
+  EXPECT_NE(
+    nanArea.error.find("region 2 has a maximum area that is not a number"), std::string::npos)
+    << nanArea.error;
+  p.regions[2].maxArea = std::numeric_limits<double>::infinity();
+  EXPECT_TRUE(mesh(p, areas).ok) << "an infinite area bounds nothing";
 }
 
 double triangleArea(const Result& r, std::size_t t)
