@@ -35,6 +35,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -316,7 +317,10 @@ double ParseNumber(const std::string& option, const std::string& text)
   {
     Fail(option + ": expected a number, got '" + text + "'", 2);
   }
-  if (!std::isfinite(value) || errno == ERANGE)
+  // strtod flags subnormal results too (1e-310): those are numbers; a text
+  // that rounds to 0 or to infinity is not in range.
+  const bool subnormal = value != 0 && std::fabs(value) < DBL_MIN;
+  if (!std::isfinite(value) || (errno == ERANGE && !subnormal))
   {
     Fail(option + ": " + text + " is not a finite number in range", 2);
   }
@@ -414,6 +418,14 @@ bool ParseArguments(int argc, char* argv[], Arguments& args)
       if (i + 1 >= argc)
       {
         Fail(arg + " needs a value (see --help)", 2);
+      }
+      // An option next is a value forgotten (--svg --stats), not a file name.
+      const std::string next = argv[i + 1];
+      if (next.size() > 2 && next.compare(0, 2, "--") == 0)
+      {
+        Fail(arg + " needs a value, not the option " + next + " (a file named so: " + arg + "=" +
+            next + " or ./" + next + ")",
+          2);
       }
       return argv[++i];
     };

@@ -722,6 +722,9 @@ def group_errors():
         ([square, square], ["more than one input"]),
         ([square, "--frobnicate"], ["unknown option '--frobnicate'"]),
         ([square, "--min-angle"], ["--min-angle needs a value"]),
+        # Found by a user review: this wrote an SVG file named --stats.
+        ([square, "--svg", "--stats"], ["--svg needs a value, not the option --stats"]),
+        ([square, "-o", "--max-edge", "1"], ["-o needs a value, not the option --max-edge"]),
         ([square, "--min-angle", "abc"], ["--min-angle", "'abc'"]),
         ([square, "--min-angle", "50"], ["--min-angle must be between 1 and 35"]),
         ([square, "--min-angle", "0.5"], ["--min-angle must be between 1 and 35"]),
@@ -747,6 +750,13 @@ def group_errors():
         expect_error(args, 2, fragments, "bad command line " + " ".join(
             os.path.basename(a) if os.sep in a else a for a in args))
     check(not os.path.exists(out("mesh.txt")), "a refused output is not created")
+    check(not os.path.exists("--stats") and not os.path.exists(out("--stats")),
+          "no file is named after the option that followed --svg")
+    # A subnormal value is a number (it was refused as out of range), here too small.
+    expect_error([square, "-o", out("tiny.vtp"), "--max-edge", "1e-310"], 1,
+                 ["the maximum edge length is too small"], "a subnormal --max-edge")
+    expect_error([square, "--max-edge", "1e-400"], 2, ["1e-400 is not a finite number in range"],
+                 "a --max-edge that rounds to 0")
     # The input is never overwritten.
     points = out("points.node")
     shutil.copy(data("split_pslg.node"), points)
