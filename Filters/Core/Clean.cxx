@@ -18,9 +18,7 @@ namespace osm
 
 std::string formatPoint(const Point& p)
 {
-  char buf[80];
-  std::snprintf(buf, sizeof buf, "(%.17g, %.17g)", p.x, p.y);
-  return buf;
+  return "(" + formatNumber(p.x) + ", " + formatNumber(p.y) + ")";
 }
 
 std::string formatNumber(double x)

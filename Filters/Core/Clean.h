@@ -38,7 +38,7 @@ std::string cleanPslg(const Pslg& in, CleanPslg& out, Statistics& stats,
   std::vector<std::string>& warnings, double mergeTolerance = 0.0, const PointFormat& format = {},
   bool snap = true, const JoinFilter& mayJoin = {});
 
-/// "(x, y)" with enough digits to tell nearby points apart.
+/// "(x, y)", each by formatNumber: digits enough to read back exactly, no more.
 std::string formatPoint(const Point& p);
 
 /// x with 15 significant digits, or 16 or 17 if it needs them to read back

@@ -107,9 +107,7 @@ std::string normalise(
   // The padded box reaches about 5 times the largest coordinate: it must stay finite.
   if (maxAbs > std::numeric_limits<double>::max() / 16)
   {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.17g", maxAbs);
-    return std::string("a coordinate of magnitude ") + buf +
+    return "a coordinate of magnitude " + formatNumber(maxAbs) +
       " is too large: the mesher needs coordinates below 1.1e307 to pad the domain";
   }
   std::frexp(maxAbs, &exponent);

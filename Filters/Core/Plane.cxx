@@ -1,5 +1,7 @@
 #include "Plane.h"
 
+#include "Clean.h" // formatNumber
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -241,9 +243,7 @@ PlaneFit fitPlane(const Array<Vec3>& points)
 
 std::string formatPoint3(const Vec3& p)
 {
-  char buf[96];
-  std::snprintf(buf, sizeof buf, "(%.17g, %.17g, %.17g)", p.x, p.y, p.z);
-  return buf;
+  return "(" + formatNumber(p.x) + ", " + formatNumber(p.y) + ", " + formatNumber(p.z) + ")";
 }
 
 std::string PlaneMap::choose(const Array<Vec3>& points, bool projectToXY, double roundoff)

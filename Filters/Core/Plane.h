@@ -75,7 +75,7 @@ struct PlaneFit
 /// (coordinates are rescaled by a power of two before squaring).
 PlaneFit fitPlane(const Array<Vec3>& points);
 
-/// "(x, y, z)" with round-trip precision, for messages.
+/// "(x, y, z)", each by formatNumber (round-trip, no more digits), for messages.
 std::string formatPoint3(const Vec3& p);
 
 /// How 3D input points become the mesher's 2D points, and output points come
