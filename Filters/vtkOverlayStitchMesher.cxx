@@ -164,7 +164,8 @@ struct IgnoredCells
     item(this->Strips, "triangle strip(s)");
     item(this->Empty, "empty cell(s) without points");
     item(this->ShortLines, "line(s) with a single point");
-    item(this->ShortPolygons, "polygon(s) with fewer than 3 points");
+    item(this->ShortPolygons,
+      "polygon(s) with fewer than 3 points (a last point repeating the first not counted)");
     msg << ". Segments come from line, polyline and polygon cells; every input point is "
            "meshed.";
     return msg.str();

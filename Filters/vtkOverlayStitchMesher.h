@@ -9,7 +9,8 @@
  * become segments between consecutive points, polygon cells contribute their
  * closed edge loops, vertex cells (and every other input point) are meshed as
  * isolated points. Triangle strips, empty cells, lines with fewer than 2
- * points and polygons with fewer than 3 points are ignored, with one warning
+ * points and polygons with fewer than 3 points (a last point repeating the
+ * first not counted) are ignored, with one warning
  * that counts them by kind.
  *
  * The input points may lie in any plane:

@@ -1239,6 +1239,10 @@ void Mesher::meshRounds(Work& w)
         std::to_string(used) + " at " + formatPoint(input.holes[used], options.pointFormat) +
         ": the mesh is empty");
     }
+    else if (carve.regions == 0 && domain == Domain::Enclosed)
+      res.warnings.push_back(
+        "the segments enclose no region (no closed loop of them around an area): the enclosed "
+        "domain is empty; the hull or box domain meshes such input");
     if (!carve.seedsOnSegments.empty())
       res.warnings.push_back(std::to_string(carve.seedsOnSegments.size()) +
         " hole point(s) lie on a segment or at its end, e.g. hole " +

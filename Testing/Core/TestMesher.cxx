@@ -447,6 +447,26 @@ TEST(Mesher, AMaximumEdgeBelowDoublePrecisionIsNamedAsTheCause)
   EXPECT_TRUE(mesh(p, o).ok) << "3e-5 is resolved";
 }
 
+TEST(Mesher, AnEmptyEnclosedDomainSaysWhy)
+{
+  // Found by a user review: an open path in the enclosed domain gave an
+  // empty mesh, and nothing said why.
+  Pslg p;
+  p.points = { { 0, 0 }, { 1, 0 }, { 1, 1 } };
+  p.segments = { { 0, 1 }, { 1, 2 } };
+  Options o;
+  o.domain = Domain::Enclosed;
+  const Result r = mesh(p, o);
+  ASSERT_TRUE(r.ok) << r.error;
+  EXPECT_TRUE(r.mesh.triangles.empty());
+  EXPECT_TRUE(mentions(r.warnings, "the segments enclose no region"));
+  // Closed, it has a region and no such warning.
+  p.segments.push_back({ 2, 0 });
+  const Result closed = mesh(p, o);
+  EXPECT_FALSE(closed.mesh.triangles.empty());
+  EXPECT_FALSE(mentions(closed.warnings, "enclose no region"));
+}
+
 TEST(Mesher, FarSeedsAreOutsideNotAScale)
 {
   // Found by a user review: a hole seed at (1e100, 1e100) set the scale, and
