@@ -30,6 +30,7 @@
 #include "vtkXMLPolyDataWriter.h"
 #include "vtkXMLUnstructuredGridWriter.h"
 
+#include "Clean.h" // formatNumber
 #include "MeshWriter.h"
 
 #include <algorithm>
@@ -1152,6 +1153,14 @@ int Run(int argc, char* argv[], OsmOutputWindow* window)
       (nodeOutput ? "a .node file" : "--svg") +
       " holds x and y only: write .vtp, .vtu or .vtk, or mesh the XY projection with "
       "--project-xy");
+  }
+  // In a plane z = c, x and y describe the mesh, but c is lost: say so.
+  const double z = mesh->GetNumberOfPoints() > 0 ? mesh->GetPoint(0)[2] : 0.0;
+  if (nodeOutput && !tilted && z != 0.0)
+  {
+    window->DisplayWarningText(("the mesh lies in the plane z = " + osm::formatNumber(z) +
+      ", and a .node file holds x and y only: z is not written")
+                                 .c_str());
   }
 
   if (!args.output.empty())

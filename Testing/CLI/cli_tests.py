@@ -612,6 +612,16 @@ def group_inputs():
     p = mesh_ok(land, "-o", out("land.node"))
     check("not written to the .node/.ele files" in p.stderr and "cell data Land" in p.stderr,
           "a .node output names the cell data it leaves out", p.stderr[-300:])
+    # Nor a plane z = 5 (found by a user review: z was dropped silently).
+    raised = out("raised.vtk")
+    with open(raised, "w") as f:
+        f.write("# vtk DataFile Version 3.0\nz\nASCII\nDATASET POLYDATA\nPOINTS 4 double\n"
+                "0 0 5\n1 0 5\n1 1 5\n0 1 5\nPOLYGONS 1 5\n4 0 1 2 3\n")
+    p = mesh_ok(raised, "-o", out("raised.node"))
+    check("the mesh lies in the plane z = 5, and a .node file holds x and y only" in p.stderr,
+          "a .node output of a plane z = 5 says z is not written", p.stderr[-300:])
+    p = mesh_ok(data("square_hole.poly"), "-o", out("flat.node"))
+    check("plane z =" not in p.stderr, "nothing to say at z = 0", p.stderr[-300:])
     gaps = out("gaps.vtp")
     with open(gaps, "w") as f:
         f.write('<?xml version="1.0"?>\n<VTKFile type="PolyData" version="0.1" byte_order="LittleEndian">'
