@@ -809,6 +809,7 @@ vtkOverlayStitchMesher::vtkOverlayStitchMesher()
   , ProjectToXYPlane(0)
   , UseInputHolePoints(1)
   , ApplyRegionAreas(0)
+  , GapRatioOverlay(0)
   , MaximumSteinerPoints(0)
   , InterpolatePointData(1)
   , PassCellData(1)
@@ -1108,6 +1109,7 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   options.resolveCrossings = this->ResolveIntersections != 0;
   options.mergeTolerance = this->MergeTolerance;
   options.regionAreas = this->ApplyRegionAreas != 0;
+  options.gapRatioOverlay = this->GapRatioOverlay != 0;
   options.maxSteinerPoints = static_cast<std::size_t>(this->MaximumSteinerPoints);
   // Triangle's vertex markers need the input subsegments, to know which
   // vertices lie on a marked segment.
@@ -1299,6 +1301,7 @@ void vtkOverlayStitchMesher::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ProjectToXYPlane: " << (this->ProjectToXYPlane ? "On" : "Off") << "\n";
   os << indent << "UseInputHolePoints: " << (this->UseInputHolePoints ? "On" : "Off") << "\n";
   os << indent << "ApplyRegionAreas: " << (this->ApplyRegionAreas ? "On" : "Off") << "\n";
+  os << indent << "GapRatioOverlay: " << (this->GapRatioOverlay ? "On" : "Off") << "\n";
   os << indent << "MaximumSteinerPoints: " << this->MaximumSteinerPoints << "\n";
   os << indent << "GenerateEdges: " << (this->GenerateEdges ? "On" : "Off") << "\n";
   os << indent << "InterpolatePointData: " << (this->InterpolatePointData ? "On" : "Off") << "\n";

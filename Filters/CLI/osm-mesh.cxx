@@ -65,7 +65,8 @@ const char* const Usage =
   R"(Usage: osm-mesh INPUT [-o OUTPUT] [--domain auto|enclosed|hull|box]
                 [--min-angle DEG | --gamma G] [--max-edge H] [--no-resolve]
                 [--merge-tolerance D] [--max-steiner N] [--project-xy]
-                [--region-areas] [--no-point-data] [--stats] [--svg FILE]
+                [--region-areas] [--gap-ratio] [--no-point-data] [--stats]
+                [--svg FILE]
                 [--help] [--version]
 
 Mesh a Planar Straight Line Graph with Overlay Stitch Meshing: a conforming
@@ -106,6 +107,11 @@ INPUT                  Triangle .poly (holes honoured) or .node file, or
   --region-areas       apply the maximum areas of a .poly's region lines to
                        their regions, as Triangle's -a (default: ignored,
                        with a warning)
+  --gap-ratio          refine the overlay to the paper's gap-ratio quality,
+                       the premise of its proof of the bound, at once (2 to 12
+                       times the triangles on real inputs; default: the
+                       radius/edge quality, and a mesh from it with an angle
+                       above the bound is made again from a gap-ratio overlay)
   --no-point-data      do not carry the input's point data (a .poly's vertex
                        attributes and markers) to the mesh, nor its polygons'
                        cell data, nor its segment markers to .edge (default:
@@ -279,6 +285,7 @@ struct Arguments
   bool resolve = true;
   bool projectXY = false;
   bool regionAreas = false;
+  bool gapRatio = false;
   bool pointData = true;
   double mergeTolerance = 0.0;
   long long maxSteiner = 0;
@@ -517,6 +524,11 @@ bool ParseArguments(int argc, char* argv[], Arguments& args)
     {
       noValue();
       args.regionAreas = true;
+    }
+    else if (arg == "--gap-ratio")
+    {
+      noValue();
+      args.gapRatio = true;
     }
     else if (arg == "--no-point-data")
     {
@@ -1125,6 +1137,7 @@ int Run(int argc, char* argv[], OsmOutputWindow* window)
   mesher->SetMergeTolerance(args.mergeTolerance);
   mesher->SetProjectToXYPlane(args.projectXY);
   mesher->SetApplyRegionAreas(args.regionAreas);
+  mesher->SetGapRatioOverlay(args.gapRatio);
   mesher->SetInterpolatePointData(args.pointData);
   mesher->SetPassCellData(args.pointData); // polygons' data, .edge markers
   mesher->SetMaximumSteinerPoints(static_cast<vtkIdType>(args.maxSteiner));

@@ -3,8 +3,9 @@
 //
 // Uninserted input points wait in buckets attached to the triangle that
 // contains them. A triangle is refined when it is of poor quality (radius /
-// shortest edge > Γ, or an edge longer than the size bound) or crowded (its
-// bucket is not empty). Refining inserts a Steiner point, unless an
+// shortest edge > Γ, or with gapRatio radius / a corner's nearest-neighbour
+// distance > Γ, the paper's Definition 2; or an edge longer than the size
+// bound) or crowded (its bucket is not empty). Refining inserts a Steiner point, unless an
 // uninserted input point lies within kYield·r of it (r: the Steiner point's
 // distance to the triangle's nearest corner): then that point is inserted
 // instead. Larger triangles are refined first (by size class, within a factor
@@ -131,6 +132,7 @@ public:
     , run(run)
     , gamma2(options.gamma * options.gamma * (1.0 + 1e-12))
     , offCenter2(options.offCenters ? std::pow(offCenterHeight(options.gamma), 2) : 0.0)
+    , gapRatio(options.gapRatio)
     , maxEdge(options.sizeInBoxesOnly ? 0.0 : options.maxEdgeLength)
     , maxEdge2(maxEdge * maxEdge)
     , steinerCap(options.maxSteinerPoints)
@@ -161,6 +163,10 @@ private:
   }
   void makeBox();
   void enqueueIfNeeded(int t);
+  /// Queues the triangles around vertex a not incident to v (start: one that is).
+  void enqueueAround(int a, int start, int v);
+  /// With gapRatio: the nearest-neighbour distances after inserting v.
+  void updateNearest(int v);
   /// Whether the size bound asks to refine triangle abc (longest: its longest
   /// edge, squared).
   bool sizeBoundRefines(const Point& a, const Point& b, const Point& c, double longest) const;
@@ -184,6 +190,7 @@ private:
   RunContext& run;
   const double gamma2;
   const double offCenter2; ///< (off-center height / shortest edge)^2; 0: circumcenters only
+  const bool gapRatio;     ///< Γ bounds radius / nearest-neighbour distance at each corner
   const double maxEdge;    ///< 0: none over sizeWithin (the size boxes may have theirs)
   const double maxEdge2;
   const std::size_t steinerCap;
@@ -206,6 +213,11 @@ private:
   std::size_t inserted = 0;
   std::size_t hardCap = 0;
   double lastProgress = 0;
+  /// With gapRatio, per mesh vertex: the squared distance to its nearest
+  /// neighbour among the inserted vertices (Definition 2's r).
+  Array<double> nearest2;
+  /// Scratch: vertices whose nearest neighbour came nearer in an insertion.
+  Array<int> nearer;
   // Scratch.
   Triangulation::Cavity cavity;
   Array<int> created;
@@ -225,6 +237,8 @@ void Refiner::makeBox()
   const int c2 = mesh.addPoint({ cx + h, cy + h });
   const int c3 = mesh.addPoint({ cx - h, cy + h });
   out.isInput.assign(4, 0);
+  if (gapRatio)
+    nearest2.assign(4, 4 * h * h); // the box side, squared
   const int t0 = mesh.newTriangle(c0, c1, c2);
   const int t1 = mesh.newTriangle(c0, c2, c3);
   mesh.link(t0, t1);
@@ -251,7 +265,13 @@ void Refiner::enqueueIfNeeded(int t)
   {
     const double la = dist2(b, c), lb = dist2(a, c), lc = dist2(a, b);
     const bool tooLong = sizeBoundRefines(a, b, c, std::max({ la, lb, lc }));
-    if (!tooLong && o.x * o.x + o.y * o.y <= gamma2 * std::min({ la, lb, lc }))
+    // A corner's nearest neighbour is at most its edges away: the gap ratio
+    // asks more than the radius / shortest edge ratio.
+    const Triangulation::Slot& slot = mesh.tri[t];
+    const double near2 = gapRatio
+      ? std::min({ nearest2[slot.v[0]], nearest2[slot.v[1]], nearest2[slot.v[2]] })
+      : std::min({ la, lb, lc });
+    if (!tooLong && o.x * o.x + o.y * o.y <= gamma2 * near2)
       return;
     // Poor, but beyond the bounds where output can be: leave it (tested only
     // here, after the quality test that most new triangles pass).
@@ -562,9 +582,57 @@ bool Refiner::insertVertex(const Point& p, int start, int inputIndex, bool cavit
   }
   // The new triangles' buckets start empty (newTriangle resets info).
   distribute(v, created);
+  if (gapRatio)
+    updateNearest(v);
   for (int u : created)
     enqueueIfNeeded(u);
+  for (std::size_t k = 0; k < nearer.size(); k += 2)
+    enqueueAround(nearer[k], nearer[k + 1], v);
   return true;
+}
+
+void Refiner::updateNearest(int v)
+{
+  // A nearest neighbour is a Delaunay neighbour: v's are the fan's outer
+  // vertices, and only they can have come nearer to a vertex. Those that did
+  // may leave their older triangles above the gap ratio (listed in nearer,
+  // each with a fan triangle it is a corner of).
+  const Point& p = mesh.points[v];
+  nearest2.push_back(std::numeric_limits<double>::infinity());
+  nearer.clear();
+  for (int u : created)
+    for (int k = 0; k < 2; ++k) // v[1] too: on the box boundary the fan is open
+    {
+      const int a = mesh.tri[u].v[k];
+      const double d = dist2(p, mesh.points[a]);
+      nearest2[v] = std::min(nearest2[v], d);
+      if (d < nearest2[a])
+      {
+        nearest2[a] = d;
+        nearer.push_back(a);
+        nearer.push_back(u);
+      }
+    }
+}
+
+void Refiner::enqueueAround(int a, int start, int v)
+{
+  // Both ways around a from a triangle of the fan, up to the hull or back.
+  for (const int step : { 1, 2 })
+  {
+    int t = start;
+    for (;;)
+    {
+      const int i = mesh.localIndex(t, a);
+      t = mesh.tri[t].n[(i + step) % 3];
+      if (t < 0 || t == start)
+        break;
+      if (mesh.localIndex(t, v) < 0)
+        enqueueIfNeeded(t);
+    }
+    if (t == start)
+      break;
+  }
 }
 
 int Refiner::findInFan(const Point& q, int v, const Array<int>& fan, std::size_t& hint) const

@@ -15,7 +15,12 @@ namespace osm
 
 struct OverlayOptions
 {
-  double gamma = 1.0;         ///< radius / shortest-edge bound Γ
+  double gamma = 1.0; ///< radius / shortest-edge bound Γ
+  /// Bound the gap ratio instead (the paper's Definition 2, the premise of
+  /// its Lemma 2): every triangle's circumradius at most Γ times the
+  /// distance from each of its corners to that corner's nearest neighbour,
+  /// which may be a vertex of another triangle.
+  bool gapRatio = false;
   double maxEdgeLength = 0.0; ///< 0: no size bound
   std::size_t maxSteinerPoints = 0;
   /// Skinny triangles are refined at their off-center instead of their

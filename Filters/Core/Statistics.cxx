@@ -17,6 +17,7 @@ std::vector<std::pair<std::string, double>> Statistics::items() const
     { "Gamma", gamma },
     { "Theta1Deg", theta1Deg },
     { "PredictedMaxAngleDeg", predictedMaxAngleDeg },
+    { "GapRatioOverlay", gapRatioOverlay ? 1.0 : 0.0 },
     { "OverlayVertices", n(overlayVertices) },
     { "OverlaySteinerPoints", n(overlaySteinerPoints) },
     { "OverlayTriangles", n(overlayTriangles) },

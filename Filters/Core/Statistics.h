@@ -29,6 +29,9 @@ struct Statistics
   double gamma = 0.0; ///< radius/edge bound Γ
   double theta1Deg = 0.0;
   double predictedMaxAngleDeg = 0.0; ///< 180° − θ2
+  /// The overlay bounds the gap ratio, not only radius / shortest edge
+  /// (Options::gapRatioOverlay, or a mesh made again from one).
+  bool gapRatioOverlay = false;
   std::size_t overlayVertices = 0;
   std::size_t overlaySteinerPoints = 0;
   std::size_t overlayTriangles = 0;

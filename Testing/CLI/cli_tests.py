@@ -164,7 +164,7 @@ def group_help():
               flag + " prints the usage on stdout, exit 0", p.stdout[:100] + p.stderr)
         for option in ("-o", "--domain", "--min-angle", "--gamma", "--max-edge", "--no-resolve",
                        "--merge-tolerance", "--max-steiner", "--project-xy", "--region-areas",
-                       "--no-point-data", "--stats", "--svg", "--version"):
+                       "--gap-ratio", "--no-point-data", "--stats", "--svg", "--version"):
             check(option in p.stdout, flag + " documents " + option)
     # The --gamma range it prints is accepted at both ends (found by a user
     # review: 0.8717 and 28.65 lay just outside it).
@@ -490,6 +490,13 @@ def group_formats():
           "regions: by default (as Triangle without -a) the area limit is said not applied", text)
     text = mesh_ok(regions, "-o", out("regions.node"), "--region-areas").stderr
     check("area" not in text, "regions: --region-areas applies the area limit, no warning", text)
+    # --gap-ratio: the paper's overlay quality at once, more triangles.
+    fast = stats_of(data("wedge.vtk"))
+    strict = stats_of(data("wedge.vtk"), "--gap-ratio")
+    check(fast.get("GapRatioOverlay") == 0 and strict.get("GapRatioOverlay") == 1 and
+          strict.get("OutputTriangles", 0) > fast.get("OutputTriangles", 0),
+          "--gap-ratio makes the gap-ratio overlay (%s triangles, %s without)" % (
+              strict.get("OutputTriangles"), fast.get("OutputTriangles")))
     with open(out("regions.ele")) as f:
         rows = [l.split() for l in f if l.strip()]
     rv, rt, _ = read_triangle_files(out("regions"))

@@ -201,6 +201,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // the inputs: points merge, and segments bend onto points near them.
   if (const int digits = in.byte() % 48; digits >= 1 && digits <= 6)
     o.mergeTolerance = extent * std::pow(10.0, -digits);
+  // Then the gap-ratio overlay for a quarter of the inputs. Its meshes grade
+  // more slowly, up to 12 times larger: a tenth of the cap keeps their
+  // validation as quick as the others'.
+  o.gapRatioOverlay = in.byte() % 4 == 1;
+  if (o.gapRatioOverlay)
+    o.maxSteinerPoints = 10000;
   const osm::Result r = osm::mesh(p, o);
   if (!r.ok)
     return 0; // refused: the message is checked by the unit tests

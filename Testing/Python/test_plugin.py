@@ -59,6 +59,7 @@ def main(plugin, data_dir):
         "ProjectToXYPlane": 0,
         "UseInputHolePoints": 1,
         "ApplyRegionAreas": 0,
+        "GapRatioOverlay": 0,
         "MaximumSteinerPoints": 0,
         "InterpolatePointData": 1,
         "PassCellData": 1,

@@ -132,7 +132,7 @@ def centroids_inside(poly, lo, hi):
 def test_defaults(mesher):
     names = mesher.ListProperties()
     for name, value in (("MergeTolerance", 0.0), ("ProjectToXYPlane", 0), ("UseInputHolePoints", 1),
-                        ("ApplyRegionAreas", 0)):
+                        ("ApplyRegionAreas", 0), ("GapRatioOverlay", 0)):
         check(name in names, "property %s exists" % name)
         if name in names:
             check(mesher.GetPropertyValue(name) == value,
@@ -240,6 +240,16 @@ def test_poly_with_hole(data_dir):
     check(largest <= 0.5 and mesh.GetNumberOfCells() >= 96 / 0.5,
           "ApplyRegionAreas=1: every triangle within the region's area 0.5 (%d triangles, "
           "largest %.3g)" % (mesh.GetNumberOfCells(), largest))
+    mesher.ApplyRegionAreas = 0
+    # GapRatioOverlay: the paper's overlay quality, at once; more triangles.
+    fast = mesh_of(mesher).GetNumberOfCells()
+    check(statistic(mesh_of(mesher), "GapRatioOverlay") == 0, "GapRatioOverlay off by default")
+    mesher.GapRatioOverlay = 1
+    mesh = mesh_of(mesher)
+    check(statistic(mesh, "GapRatioOverlay") == 1 and mesh.GetNumberOfCells() > fast,
+          "GapRatioOverlay=1: the gap-ratio overlay (%d triangles, %d without)" % (
+              mesh.GetNumberOfCells(), fast))
+    mesher.GapRatioOverlay = 0
     Delete(mesher)
     Delete(reader)
 
