@@ -3,14 +3,20 @@
 //
 // Uninserted input points wait in buckets attached to the triangle that
 // contains them. A triangle is refined when it is of poor quality (radius /
-// shortest edge > Γ, or with gapRatio radius / a corner's nearest-neighbour
+// shortest edge > Γ; with gapRatio, radius / a corner's nearest-neighbour
 // distance > Γ, the paper's Definition 2; or an edge longer than the size
-// bound) or crowded (its bucket is not empty). Refining inserts a Steiner point, unless an
-// uninserted input point lies within kYield·r of it (r: the Steiner point's
-// distance to the triangle's nearest corner): then that point is inserted
-// instead. Larger triangles are refined first (by size class, within a factor
-// of 8 in circumradius: SizeQueue.h), so the mesh stays a well-graded quality
-// Delaunay mesh throughout, which bounds the work.
+// bound) or crowded (its bucket is not empty). Refining inserts a Steiner
+// point, unless an uninserted input point lies within kYield·r of it (r: the
+// Steiner point's distance to the triangle's nearest corner): then that point
+// is inserted instead. Larger triangles are refined first (by size class,
+// within a factor of 8 in circumradius: SizeQueue.h), so the mesh stays a
+// well-graded quality Delaunay mesh throughout, which bounds the work.
+//
+// SVR keeps a waiting point in the bucket of every triangle whose circumdisk
+// holds it; here it waits in one, which moves less, and the yield test sees
+// the points of the Steiner point's cavity only. SVR's proof of O(n log(L/s)
+// + m) work does not carry over as it stands: the benchmark suite measures
+// the time per triangle instead (BENCHMARKS.md).
 //
 // The Steiner point is the circumcenter or, for a skinny triangle, its
 // off-center (Üngör, "Off-centers", LATIN 2004): the point on the bisector of
