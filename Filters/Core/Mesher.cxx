@@ -1638,7 +1638,10 @@ Result mesh(const Pslg& input, const Options& options, Progress* progress)
   Result r = meshOnce(input, options, progress);
   const double above =
     options.remeshAboveDeg > 0 ? options.remeshAboveDeg : r.stats.predictedMaxAngleDeg;
-  if (!r.ok || options.gapRatioOverlay || !(r.stats.maxAngleDeg > above))
+  // Above 30 degrees (Γ below 1) nothing is proven, and the refinement may
+  // not end: no second mesh there.
+  if (!r.ok || options.gapRatioOverlay || !(r.stats.maxAngleDeg > above) ||
+    options.minAngleDeg > 30)
     return r;
   // The paper proves the bound for an overlay of gap-ratio quality; the
   // radius-edge overlay is much smaller and has always met it, but nothing

@@ -38,7 +38,8 @@ struct Options
   /// overlay, with a warning. True: the gap-ratio overlay at once.
   bool gapRatioOverlay = false;
   /// The largest angle above which a mesh from the radius-edge overlay is
-  /// made again from a gap-ratio one; 0: the bound 180° − θ2.
+  /// made again from a gap-ratio one; 0: the bound 180° − θ2. (Not with
+  /// minAngleDeg above 30, where nothing is proven.)
   double remeshAboveDeg = 0.0;
   /// If > 0, no output edge is longer: overlay triangles with a longer edge
   /// are refined further, and the few longer diagonals that completion makes
