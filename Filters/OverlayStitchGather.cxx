@@ -961,7 +961,7 @@ bool OverlayStitchGatherInput(vtkMultiProcessController* controller, vtkPolyData
 
   // The one collective call: every rank reaches it, whatever its input.
   std::vector<vtkSmartPointer<vtkDataObject>> pieces;
-  const int status = controller->Gather(local, pieces, 0);
+  const int status = controller->Gather(OverlayStitchPieceToSend(local), pieces, 0);
   if (controller->GetLocalProcessId() != 0)
   {
     return false;
@@ -992,6 +992,33 @@ bool OverlayStitchGatherInput(vtkMultiProcessController* controller, vtkPolyData
     summary->NotCarried.insert(summary->NotCarried.begin(), notes.begin(), notes.end());
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkPolyData> OverlayStitchPieceToSend(vtkPolyData* piece)
+{
+  vtkFieldData* fields = piece->GetFieldData();
+  bool empty = false;
+  for (int a = 0; fields && a < fields->GetNumberOfArrays(); ++a)
+  {
+    empty = empty || fields->GetAbstractArray(a)->GetNumberOfTuples() == 0;
+  }
+  if (!empty)
+  {
+    return piece;
+  }
+  auto sent = vtkSmartPointer<vtkPolyData>::New();
+  sent->ShallowCopy(piece);
+  vtkNew<vtkFieldData> kept;
+  for (int a = 0; a < fields->GetNumberOfArrays(); ++a)
+  {
+    if (fields->GetAbstractArray(a)->GetNumberOfTuples() > 0)
+    {
+      kept->AddArray(fields->GetAbstractArray(a));
+    }
+  }
+  sent->SetFieldData(kept);
+  return sent;
 }
 
 //------------------------------------------------------------------------------

@@ -103,6 +103,14 @@ struct OverlayStitchGatherSummary
 bool OverlayStitchGatherInput(vtkMultiProcessController* controller, vtkPolyData* input,
   vtkSmartPointer<vtkPolyData>& gathered, OverlayStitchGatherSummary* summary = nullptr);
 
+/// The piece a rank sends to rank 0: piece itself, or a shallow copy without
+/// its field arrays of no tuples. VTK's legacy encoding, which the gather
+/// uses, loses every field array after one with no tuples (the .poly reader's
+/// HolePoints comes first, empty without holes: RegionAttributes and
+/// FileFirstIndex were lost); an empty array holds nothing the combination
+/// needs. Exposed for tests.
+vtkSmartPointer<vtkPolyData> OverlayStitchPieceToSend(vtkPolyData* piece);
+
 /// The combination done on rank 0, exposed for tests: `pieces` in rank order
 /// (null or non-polydata entries count as empty pieces). `pieceName` names a
 /// piece in the summary's FirstInvalidCell ("rank", "block") with its index in

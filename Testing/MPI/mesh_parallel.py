@@ -88,6 +88,8 @@ def main():
     probe = ProgrammableFilter(Input=source, OutputDataSetType="Same as Input", Script=PROBE)
 
     mesher = OverlayStitchMesher(Input=probe)
+    # A .poly's region areas apply (Triangle's -a): they reach rank 0 or the mesh differs.
+    mesher.ApplyRegionAreas = 1
     if args.fail_first:
         # A run that fails on rank 0 only (too few Steiner points allowed): every rank
         # must still finish it with empty outputs, and the next run must work.
@@ -117,6 +119,8 @@ def main():
     blocks = OutputPort(mesher, 1).GetDataInformation().GetCellDataInformation() \
         .GetArrayInformation("InputBlockId")
     result["block_ids"] = list(blocks.GetComponentRange(0)) if blocks else None
+    result["region_attribute"] = mesh_port.GetDataInformation().GetCellDataInformation() \
+        .GetArrayInformation("RegionAttribute") is not None
     for name in ("InputPoints", "InputSegments", "DuplicatePointsMerged",
                  "DuplicateSegmentsMerged", "ZeroLengthSegmentsDropped", "OutputTriangles",
                  "OutputVertices", "Regions", "MinAngleDeg", "MaxAngleDeg", "SecondsTotal"):

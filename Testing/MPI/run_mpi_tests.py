@@ -223,6 +223,28 @@ def bundled(runner):
     invalid_block(runner)
     block_named_points(runner)
     unreadable_poly(runner)
+    region_poly(runner)
+
+
+def region_poly(runner):
+    """Found by a review: a .poly read on rank 0 lost its region lines (and its
+    numbering) in the gather, whose encoding drops the field arrays after an
+    empty one, and the reader's HolePoints comes first, empty without holes."""
+    path = os.path.join(runner.out, "regions.poly")
+    with open(path, "w") as f:
+        f.write("8 2 0 0\n1 0 0\n2 10 0\n3 10 10\n4 0 10\n5 3 3\n6 7 3\n7 7 7\n8 3 7\n"
+                "8 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n5 5 6\n6 6 7\n7 7 8\n8 8 5\n0\n"
+                "2\n1 1 1 7 0.5\n2 5 5 9 2\n")
+    print("== regions.poly", flush=True)
+    serial = runner.mesh("regions-np1", 1, path)
+    parallel = runner.mesh("regions-np2", 2, path)
+    triangles = serial["stats"]["OutputTriangles"]
+    check(serial["region_attribute"] and triangles >= 84 / 0.5 + 16 / 2,
+          "regions.poly serial: region attributes, areas applied (%s triangles)" % triangles)
+    check(parallel["region_attribute"], "regions.poly -np 2: the region attributes reach the mesh")
+    check(parallel["stats"]["OutputTriangles"] == triangles,
+          "regions.poly -np 2: the areas applied, %s triangles (serial %s)" % (
+              parallel["stats"]["OutputTriangles"], triangles))
 
 
 def unreadable_poly(runner):
