@@ -875,9 +875,14 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
 
   // Field data: the first array of each name, except the hole seeds, which are
   // gathered from every piece (empty pieces included) and deduplicated.
+  // The seeds' array takes its place among the others when first seen, and
+  // its values at the end: the order of a serial run's input.
   std::vector<std::array<double, 3>> seeds;
   std::set<std::array<double, 3>> seenSeeds;
   bool anyHoles = false;
+  vtkNew<vtkDoubleArray> holes;
+  holes->SetName(HolePointsName);
+  holes->SetNumberOfComponents(3);
   vtkFieldData* outField = combined->GetFieldData();
   for (const auto& piece : pieces)
   {
@@ -895,23 +900,19 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
     {
       vtkAbstractArray* array = field->GetAbstractArray(a);
       const char* name = array ? array->GetName() : nullptr;
-      if (name && std::strcmp(name, HolePointsName) != 0 && !outField->GetAbstractArray(name))
+      if (name && !outField->GetAbstractArray(name))
       {
-        outField->AddArray(array);
+        outField->AddArray(std::strcmp(name, HolePointsName) == 0 ? holes.Get() : array);
       }
     }
   }
   if (anyHoles)
   {
-    vtkNew<vtkDoubleArray> holes;
-    holes->SetName(HolePointsName);
-    holes->SetNumberOfComponents(3);
     holes->SetNumberOfTuples(static_cast<vtkIdType>(seeds.size()));
     for (std::size_t s = 0; s < seeds.size(); ++s)
     {
       holes->SetTypedTuple(static_cast<vtkIdType>(s), seeds[s].data());
     }
-    outField->AddArray(holes);
   }
 
   if (summary)

@@ -75,6 +75,24 @@ bool AbortRequested(vtkAlgorithm* filter)
 #endif
 }
 
+/// The input's field data on an output, as VTK's filters pass it; the
+/// output's own arrays (the statistics, EdgeClassNames) win a name clash.
+/// Arrays without values are left out: a parallel run's gather cannot carry
+/// them (OverlayStitchPieceToSend), and the outputs are the serial run's.
+void PassFieldData(vtkFieldData* in, vtkPolyData* output)
+{
+  vtkFieldData* out = output->GetFieldData();
+  for (int a = 0; in && a < in->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* array = in->GetAbstractArray(a);
+    if (array->GetNumberOfTuples() > 0 &&
+      (!array->GetName() || !out->GetAbstractArray(array->GetName())))
+    {
+      out->AddArray(array);
+    }
+  }
+}
+
 /// The outputs of a run that meshes nothing. Empty points, not none: a point
 /// set without points keeps reporting its old bounds.
 void ClearOutputs(std::initializer_list<vtkPolyData*> outputs)
@@ -1268,6 +1286,9 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
         segmentCells,
         ownNames({ "Overlay", "Kept", "Discarded", "Input", "EdgeClass", "InputCellId" }),
         edges->GetCellData(), outputSteps(0.97, 0.98), warnings);
+      // The input's active cell scalars came along active; the Edges output
+      // opens colored by its classes all the same.
+      edges->GetCellData()->SetActiveScalars("EdgeClass");
       warn();
     }
   }
@@ -1279,6 +1300,10 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   if (this->GenerateOverlay)
   {
     MakeTriangles(result.overlay, map, overlay, outputSteps(0.98, 1.0));
+  }
+  for (vtkPolyData* output : { mesh, edges, overlay })
+  {
+    PassFieldData(input->GetFieldData(), output);
   }
   this->SetProgressText(nullptr);
   this->UpdateProgress(1.0);
