@@ -326,6 +326,10 @@ bool OverlayStitchPassCellData(vtkCellData* in, vtkIdType inputCells, const osm:
       auto* marked = vtkDataArray::SafeDownCast(target);
       for (vtkIdType e = 0; e < n; ++e)
       {
+        if ((e & 0xffff) == 0 && poll(1.0)) // (after Carry's share: an abort check only)
+        {
+          return false;
+        }
         marked->SetComponent(e, 0, markers.edge(static_cast<std::size_t>(e)));
       }
     }
