@@ -916,6 +916,12 @@ int vtkOverlayStitchMesher::FillInputPortInformation(int port, vtkInformation* i
 int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
+  // Whichever way the run ends, no phase is left named as current.
+  const struct ProgressTextReset
+  {
+    vtkOverlayStitchMesher* Filter;
+    ~ProgressTextReset() { this->Filter->SetProgressText(nullptr); }
+  } progressTextReset{ this };
   vtkDataObject* inputObject = vtkDataObject::GetData(inputVector[0], 0);
   vtkSmartPointer<vtkPolyData> local = vtkPolyData::SafeDownCast(inputObject);
   vtkPolyData* mesh = vtkPolyData::GetData(outputVector, 0);

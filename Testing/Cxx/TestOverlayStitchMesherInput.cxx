@@ -1264,6 +1264,8 @@ int TestAbort(int points)
     Check(h.Messages->Errors.size() == 1 && h.Messages->HasError({ "aborted by the user" }),
       row + ": the run ends with the error 'aborted by the user'");
     Check(osmtest::AllOutputsEmpty(h.Mesher), row + ": all outputs are empty");
+    // Found by a review: the phase stayed named after a failed run.
+    Check(h.Mesher->GetProgressText() == nullptr, row + ": no phase is left named as current");
     double bounds[6];
     h.Mesher->GetOutput(0)->GetBounds(bounds);
     Check(bounds[0] > bounds[1], row + ": the empty mesh reports no bounds (not the last mesh's)");
