@@ -40,6 +40,10 @@
 #include <new>
 #include <string>
 
+#if defined(__unix__)
+#include <unistd.h>
+#endif
+
 namespace osm
 {
 
@@ -79,6 +83,21 @@ double offCenterHeight(double gamma)
   const double sinTheta = 1.0 / (2.0 * gamma);
   return 0.95 * gamma * (1.0 + std::sqrt(1.0 - sinTheta * sinTheta));
 }
+
+} // namespace
+
+double physicalMemoryBytes()
+{
+#if defined(__unix__)
+  const long pages = sysconf(_SC_PHYS_PAGES), size = sysconf(_SC_PAGE_SIZE);
+  if (pages > 0 && size > 0)
+    return double(pages) * double(size);
+#endif
+  return 0.0;
+}
+
+namespace
+{
 
 Array<Point> permuted(const Array<Point>& points, const Array<int>& order)
 {
@@ -325,6 +344,23 @@ Overlay Refiner::refine()
                                              "triangle area is too small") +
       " for this input: the overlay would need " + need + " points, and a mesh can index " +
       std::to_string(static_cast<long long>(indexable)) };
+  }
+  // A mesh this machine cannot hold would end in the system killing the
+  // process (the host application with it): refuse it at once. About 2.2
+  // points per forMaxEdge (below), 2 triangles per point, and 100 bytes per
+  // triangle: the core's own peak is 75, osm-mesh's whole process 99 to 154
+  // (a review's la.poly at 0.003, 2.7e8 triangles, was killed at 23 GB).
+  if (const double memory = physicalMemoryBytes(), need = 2.2 * forMaxEdge * 2 * 100;
+      memory > 0 && need > memory)
+  {
+    char sizes[96];
+    std::snprintf(sizes, sizeof sizes,
+      "about %.3g points, at least %.3g GB, and this machine has %.3g GB", 2.2 * forMaxEdge,
+      need / 1e9, memory / 1e9);
+    throw Stop{ std::string(!sizeFromAreas ? "the maximum edge length is too small"
+                                           : "the maximum edge length or a region's maximum "
+                                             "triangle area is too small") +
+      " for this machine's memory: the mesh would need " + sizes };
   }
   // A size bound may ask for many more points than the input has: about 2.2
   // times forMaxEdge (measured on squares), so room for 2.5 times spares

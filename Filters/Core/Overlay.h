@@ -63,6 +63,10 @@ struct Overlay
 /// Steiner points (OverlayOptions::maxSteinerPoints) counts them.
 constexpr std::size_t kBoxCorners = 4;
 
+/// The machine's physical memory in bytes, or 0 where unknown: a size bound
+/// asking for a mesh beyond it is refused before refining.
+double physicalMemoryBytes();
+
 /// Mesh the points (distinct, finite) alone; segments are ignored here.
 Overlay buildOverlay(const Array<Point>& points, const OverlayOptions& options, RunContext& run);
 

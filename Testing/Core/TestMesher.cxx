@@ -4,10 +4,12 @@
 
 #include "Clean.h"
 #include "Domain.h"
+#include "Overlay.h"
 #include "Predicates.h"
 
 #include <algorithm>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -445,6 +447,26 @@ TEST(Mesher, AMaximumEdgeBelowDoublePrecisionIsNamedAsTheCause)
   EXPECT_EQ(tiny.error.find("merge tolerance"), std::string::npos) << tiny.error;
   o.maxEdgeLength = 3e-5;
   EXPECT_TRUE(mesh(p, o).ok) << "3e-5 is resolved";
+}
+
+TEST(Mesher, AMeshBeyondTheMachinesMemoryIsRefusedAtOnce)
+{
+  // Found by a review: la.poly with a maximum edge of 0.003 asked for 2.7e8
+  // triangles and was killed by the system at 23 GB, the host with it.
+  // 4e8 points' worth of the unit square needs about 176 GB.
+  const double memory = physicalMemoryBytes();
+  if (memory <= 0 || memory > 170e9)
+    GTEST_SKIP() << "this machine's memory: " << memory;
+  Options o;
+  o.maxEdgeLength = std::sqrt(1 / (0.8660254037844386 * 4e8));
+  const auto start = std::chrono::steady_clock::now();
+  const Result r = mesh(square(), o);
+  ASSERT_FALSE(r.ok);
+  EXPECT_NE(r.error.find("the maximum edge length is too small for this machine's memory"),
+    std::string::npos)
+    << r.error;
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0)
+    << "refused before refining";
 }
 
 TEST(Mesher, AnEmptyEnclosedDomainSaysWhy)
