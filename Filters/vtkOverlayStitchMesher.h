@@ -189,7 +189,7 @@ public:
    * overlay of gap-ratio quality (every triangle's circumradius at most
    * Gamma times the distance from each corner to its nearest neighbour).
    * Off (the default), the overlay bounds radius / shortest edge, as
-   * Delaunay refinement does: 2 to 12 times fewer triangles on real inputs,
+   * Delaunay refinement does: up to 12 times fewer triangles on real inputs,
    * all meshed below 150 degrees, but no proof; a mesh from it with an angle
    * above the bound is made again from a gap-ratio overlay, with a warning
    * (statistic GapRatioOverlay 1). On: the gap-ratio overlay at once.

@@ -108,8 +108,8 @@ INPUT                  Triangle .poly (holes honoured) or .node file, or
                        their regions, as Triangle's -a (default: ignored,
                        with a warning)
   --gap-ratio          refine the overlay to the paper's gap-ratio quality,
-                       the premise of its proof of the bound, at once (2 to 12
-                       times the triangles on real inputs; default: the
+                       the premise of its proof of the bound, at once (up to
+                       12 times the triangles on real inputs; default: the
                        radius/edge quality, and a mesh from it with an angle
                        above the bound is made again from a gap-ratio overlay)
   --no-point-data      do not carry the input's point data (a .poly's vertex

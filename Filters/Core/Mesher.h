@@ -32,7 +32,7 @@ struct Options
   /// circumradius at most Γ times the distance from each corner to its
   /// nearest neighbour, Lemma 2's premise). By default the overlay bounds
   /// radius / shortest edge only (the corners' own triangle), as Delaunay
-  /// refinement does: 2 to 12 times fewer triangles on the real inputs, whose
+  /// refinement does: up to 12 times fewer triangles on the real inputs, whose
   /// meshes all stay below 150°, but no proof; a mesh from it with an angle
   /// above the bound (or remeshAboveDeg) is made again from a gap-ratio
   /// overlay, with a warning. True: the gap-ratio overlay at once.
