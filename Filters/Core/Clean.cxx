@@ -227,6 +227,8 @@ void warnAboutSeedsBesideBends(const Pslg& in, const Array<Point>& points,
 void warnAboutSeedsAcrossMerges(const Pslg& in, const CleanPslg& out, double tol,
   const PointFormat& format, std::vector<std::string>& warnings)
 {
+  if (tol <= 0 || (in.holes.empty() && in.regions.empty()))
+    return;
   struct Seed
   {
     Point p;
@@ -239,8 +241,6 @@ void warnAboutSeedsAcrossMerges(const Pslg& in, const CleanPslg& out, double tol
     seeds.push_back({ in.holes[h], "hole", h });
   for (std::size_t r = 0; r < in.regions.size(); ++r)
     seeds.push_back({ in.regions[r].seed, "region", r });
-  if (tol <= 0 || seeds.empty())
-    return;
   std::sort(seeds.begin(), seeds.end(), [](const Seed& a, const Seed& b) { return a.p < b.p; });
   std::size_t count = 0;
   std::string example;

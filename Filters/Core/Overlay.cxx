@@ -225,6 +225,12 @@ private:
   const Bounds sizeWithin;
   const SizeBoxes sizeBoxes;
   const bool sizeFromAreas;
+  /// What sets the size bound, for messages.
+  std::string sizeBoundName() const
+  {
+    return sizeFromAreas ? "the maximum edge length or a region's maximum triangle area"
+                         : "the maximum edge length";
+  }
 
   Overlay out;
   Triangulation& mesh = out.mesh;
@@ -339,11 +345,8 @@ Overlay Refiner::refine()
     char need[48] = "more";
     if (std::isfinite(forMaxEdge))
       std::snprintf(need, sizeof need, "at least %.3g", forMaxEdge);
-    throw Stop{ std::string(!sizeFromAreas ? "the maximum edge length is too small"
-                                           : "the maximum edge length or a region's maximum "
-                                             "triangle area is too small") +
-      " for this input: the overlay would need " + need + " points, and a mesh can index " +
-      std::to_string(static_cast<long long>(indexable)) };
+    throw Stop{ sizeBoundName() + " is too small for this input: the overlay would need " + need +
+      " points, and a mesh can index " + std::to_string(static_cast<long long>(indexable)) };
   }
   // A mesh this machine cannot hold would end in the system killing the
   // process (the host application with it): refuse it at once. About 2.2
@@ -357,10 +360,8 @@ Overlay Refiner::refine()
     std::snprintf(sizes, sizeof sizes,
       "about %.3g points, at least %.3g GB, and this machine has %.3g GB", 2.2 * forMaxEdge,
       need / 1e9, memory / 1e9);
-    throw Stop{ std::string(!sizeFromAreas ? "the maximum edge length is too small"
-                                           : "the maximum edge length or a region's maximum "
-                                             "triangle area is too small") +
-      " for this machine's memory: the mesh would need " + sizes };
+    throw Stop{ sizeBoundName() + " is too small for this machine's memory: the mesh would need " +
+      sizes };
   }
   // A size bound may ask for many more points than the input has: about 2.2
   // times forMaxEdge (measured on squares), so room for 2.5 times spares
@@ -523,9 +524,7 @@ void Refiner::refineTriangle(int t)
   {
     // So small a triangle is too long only for a size bound that small.
     if (sizeBoundRefines(a, b, d, std::max({ dist2(a, b), dist2(b, d), dist2(d, a) })))
-      throw Stop{ std::string(sizeFromAreas
-                      ? "the maximum edge length or a region's maximum triangle area"
-                      : "the maximum edge length") +
+      throw Stop{ sizeBoundName() +
           " is too small for double precision at these coordinates (edges below about 1e-14 of "
           "the coordinate magnitude): use a larger one, or move the input nearer the origin",
         true, c };
