@@ -1042,7 +1042,14 @@ void Mesher::meshRounds(Work& w)
     for (Segment& s : segments)
       s = { overlay.inputVertex[s[0]], overlay.inputVertex[s[1]] };
     run.phase("stitch", 0.62, 0.7); // compaction done: the walks
-    Walk walk = walkSegments(ov, overlay, segments, sinTheta1, run);
+    // Where segments overlap, the piece kept carries the data of the one
+    // that comes first in the input; the hull's edges (past the working
+    // segments) come last.
+    Array<int> firstInInputOrder(segments.size(), std::numeric_limits<int>::max());
+    for (std::size_t s = 0; s < w.segmentOrigin.size(); ++s)
+      if (w.segmentOrigin[s] >= 0)
+        firstInInputOrder[s] = w.segmentOrigin[s];
+    Walk walk = walkSegments(ov, overlay, segments, sinTheta1, run, nullptr, &firstInInputOrder);
     st.secondsStitch += since(t);
     if (!walk.segmentCrossings.empty())
     {

@@ -126,13 +126,13 @@ public:
   {}
 
   void walk(int segment, int a, int b);
-  void findSegmentCrossings();
+  void findSegmentCrossings(const Array<int>* rank);
 
 private:
   int firstStep(int cur, int b, int& l, int& r, int& tri);
   bool ahead(const Point& from, const Point& x, const Point& B) const;
   void addCrossing(int edge, int piece, const Point& A, const Point& B);
-  void markDuplicates();
+  void markDuplicates(const Array<int>* rank);
 
   const OverlayEdges& ov;
   const Array<Point>& P;
@@ -345,16 +345,17 @@ Point intersection(const Point& a, const Point& b, const Point& c, const Point& 
   return p;
 }
 
-void Walker::markDuplicates()
+void Walker::markDuplicates(const Array<int>* rank)
 {
   // Overlapping collinear segments were split at each other's endpoints, so
-  // their shared parts are identical pieces: keep the first in segment order.
+  // their shared parts are identical pieces: keep the first in rank order.
   Array<std::array<int, 4>> keys;
   keys.reserve(out.pieces.size());
   for (int i = 0; i < static_cast<int>(out.pieces.size()); ++i)
   {
     const Piece& p = out.pieces[i];
-    keys.push_back({ std::min(p.v0, p.v1), std::max(p.v0, p.v1), p.segment, i });
+    const int r = rank ? (*rank)[p.segment] : p.segment;
+    keys.push_back({ std::min(p.v0, p.v1), std::max(p.v0, p.v1), r, i });
   }
   std::sort(keys.begin(), keys.end());
   for (std::size_t k = 1; k < keys.size(); ++k)
@@ -362,14 +363,15 @@ void Walker::markDuplicates()
     if (keys[k][0] == keys[k - 1][0] && keys[k][1] == keys[k - 1][1])
     {
       out.pieces[keys[k][3]].duplicate = true;
-      out.overlaps.push_back({ keys[k - 1][2], keys[k][2], keys[k][0], keys[k][1] });
+      out.overlaps.push_back({ out.pieces[keys[k - 1][3]].segment, out.pieces[keys[k][3]].segment,
+        keys[k][0], keys[k][1] });
     }
   }
 }
 
-void Walker::findSegmentCrossings()
+void Walker::findSegmentCrossings(const Array<int>* rank)
 {
-  markDuplicates();
+  markDuplicates(rank);
   auto record = [&](int pa, int pb, const Point& p) {
     const int a = out.pieces[pa].segment, b = out.pieces[pb].segment;
     out.segmentCrossings.push_back({ std::min(a, b), std::max(a, b), p });
@@ -473,7 +475,7 @@ Array<int> walkOrder(const Array<Segment>& segments, std::size_t vertexCount)
 } // namespace
 
 Walk walkSegments(const OverlayEdges& ov, const Overlay& overlay, const Array<Segment>& segments,
-  double sinTheta1, RunContext& run, const Array<int>* order)
+  double sinTheta1, RunContext& run, const Array<int>* order, const Array<int>* rank)
 {
   Walk out;
   Walker walker(ov, overlay, sinTheta1, out);
@@ -491,7 +493,7 @@ Walk walkSegments(const OverlayEdges& ov, const Overlay& overlay, const Array<Se
     walker.walk(s, segments[s][0], segments[s][1]);
     run.tick(double(k) / double(segments.size()), 256);
   }
-  walker.findSegmentCrossings();
+  walker.findSegmentCrossings(rank);
   return out;
 }
 

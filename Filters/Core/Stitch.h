@@ -105,16 +105,19 @@ struct Walk
   Array<SegmentCrossing> segmentCrossings;
   std::size_t splitsAtInputVertices = 0;
   /// Per duplicate piece: the segment whose piece is kept, the duplicate's
-  /// segment (the larger index), and the overlay vertices the piece runs between.
+  /// segment (the later in rank), and the overlay vertices the piece runs between.
   Array<std::array<int, 4>> overlaps;
 };
 
 /// Walk every segment (endpoints given as overlay vertices) through the overlay,
 /// in the given order (a permutation of the segment indices) or, by default,
 /// in the spatial order of their smaller vertex. The stitched graph does not
-/// depend on the order.
+/// depend on the order. Where pieces of segments overlap, the piece of the
+/// segment with the smallest rank is kept (ranks per segment; by default the
+/// index), so that it carries that segment's data.
 Walk walkSegments(const OverlayEdges& ov, const Overlay& overlay, const Array<Segment>& segments,
-  double sinTheta1, RunContext& run, const Array<int>* order = nullptr);
+  double sinTheta1, RunContext& run, const Array<int>* order = nullptr,
+  const Array<int>* rank = nullptr);
 
 /// Sides of a planar-graph edge that lie in a face still to be completed.
 enum OpenSide : std::uint8_t

@@ -528,6 +528,46 @@ TEST(Mesher, OverlappingSegmentsAreMeshedOnceAndSaidSo)
   }
 }
 
+TEST(Mesher, AnOverlapCarriesTheFirstInputSegment)
+{
+  // Found by a Triangle user's review: where segments overlap, the piece met
+  // took the segment that cleaning sorted first, by vertex index, so a .edge
+  // marker or InputCellId came from a later segment, not the first as
+  // documented (and as Triangle keeps). Segments along y = 0: 0 from x = 0
+  // to 2, 1 from 0 to 4 (over 0), 2 from 1 to 3 (over both), 3 from 3 to 4.
+  Pslg p;
+  p.points = { { 0, 0 }, { 4, 0 }, { 4, 4 }, { 0, 4 }, { 2, 0 }, { 1, 0 }, { 3, 0 } };
+  p.segments = { { 0, 4 }, { 0, 1 }, { 5, 6 }, { 6, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 } };
+  for (Domain d : { Domain::Auto, Domain::Hull, Domain::Box })
+  {
+    Options o;
+    o.domain = d;
+    const Result r = meshAndValidate(p, "overlapping segments, first wins", o);
+    ASSERT_TRUE(r.ok) << r.error;
+    int checked = 0;
+    for (const Edge& e : r.edges)
+    {
+      const Point& a = r.edgeVertices[e.a];
+      const Point& b = r.edgeVertices[e.b];
+      if (e.segment < 0 || a.y != 0 || b.y != 0)
+        continue;
+      // The first input segment along y = 0 that holds the piece's middle.
+      const double mid = (a.x + b.x) / 2;
+      int first = -1;
+      for (int s = 0; s < 4 && first < 0; ++s)
+      {
+        const double x0 = p.points[p.segments[s][0]].x, x1 = p.points[p.segments[s][1]].x;
+        if (std::min(x0, x1) < mid && mid < std::max(x0, x1))
+          first = s;
+      }
+      EXPECT_EQ(e.segment, first) << "piece from x = " << a.x << " to " << b.x;
+      ++checked;
+    }
+    EXPECT_GE(checked, 4);
+    EXPECT_TRUE(mentions(r.warnings, "input segment 0 and input segment 1 overlap"));
+  }
+}
+
 TEST(Clean, TinySegmentsAmongCrossingsOfLongOnesAreRefusedAsBelowPrecision)
 {
   // Found by Properties.TinySegmentsAtCrossingsOfLongOnes at 400 seeds (seed
