@@ -1260,6 +1260,7 @@ void Mesher::meshRounds(Work& w)
         ": the region the direction +x from it enters (above, where a segment runs along +x) "
         "was removed; move the point into the hole to choose");
     run.phase("domain", 0.96, 1.0); // the output arrays
+    res.domain = domain;
     buildOutput(w, g, c, carve, overlay, edges, domain);
     if (options.keepEdges) // points splitting long edges are on none of them
       res.edgeVertices.resize(graphPoints);

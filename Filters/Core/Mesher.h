@@ -139,7 +139,10 @@ struct Result
   std::string error;                 ///< why ok is false (names the offending items)
   std::vector<std::string> warnings; ///< repairs made and input that was ignored
 
-  TriMesh mesh;                     ///< the conforming triangulation
+  TriMesh mesh; ///< the conforming triangulation
+  /// The domain the mesh covers: Enclosed, Hull or Box (what Auto chose, and
+  /// Box where a hull without area fell back to it).
+  Domain domain = Domain::Auto;
   Array<VertexOrigin> vertexOrigin; ///< per mesh vertex
   Array<int> regionId;              ///< per mesh triangle
   /// Per mesh triangle when the input has regional attributes (else empty): the

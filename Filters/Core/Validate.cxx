@@ -1102,6 +1102,124 @@ void checkConformity(
   }
 }
 
+/// The convex hull of the finite points, counter-clockwise, without collinear points (the
+/// validator's own: Andrew's monotone chain with exact orientation).
+std::vector<Point> convexHullOf(const Array<Point>& points)
+{
+  std::vector<Point> p;
+  for (const Point& q : points)
+    if (std::isfinite(q.x) && std::isfinite(q.y))
+      p.push_back(q);
+  std::sort(p.begin(), p.end(),
+    [](const Point& a, const Point& b) { return a.x != b.x ? a.x < b.x : a.y < b.y; });
+  p.erase(std::unique(p.begin(), p.end()), p.end());
+  if (p.size() < 3)
+    return p;
+  std::vector<Point> hull(2 * p.size());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) // lower hull
+  {
+    while (k >= 2 && orientSign(hull[k - 2], hull[k - 1], p[i]) <= 0)
+      --k;
+    hull[k++] = p[i];
+  }
+  for (std::size_t i = p.size() - 1, lower = k + 1; i-- > 0;) // upper hull
+  {
+    while (k >= lower && orientSign(hull[k - 2], hull[k - 1], p[i]) <= 0)
+      --k;
+    hull[k++] = p[i];
+  }
+  hull.resize(k - 1);
+  return hull;
+}
+
+/// Check 9a: every boundary edge of the mesh lies along an input segment or, as allowed, an
+/// edge of the input's convex hull or of the mesh's bounding rectangle (both ends within
+/// reach of it, plus rounding: the line between them then is too).
+void checkDomainBoundary(
+  const Pslg& input, const Mesh& m, DomainBoundary allowed, double reach, Errors& errors)
+{
+  std::vector<std::array<Point, 2>> lines;
+  const auto n = static_cast<int>(input.points.size());
+  for (const Segment& s : input.segments)
+    if (s[0] >= 0 && s[1] >= 0 && s[0] < n && s[1] < n)
+      lines.push_back({ input.points[s[0]], input.points[s[1]] });
+  if (allowed == DomainBoundary::SegmentsOrHull)
+  {
+    const std::vector<Point> hull = convexHullOf(input.points);
+    for (std::size_t i = 0; hull.size() >= 2 && i < hull.size(); ++i)
+      lines.push_back({ hull[i], hull[(i + 1) % hull.size()] });
+  }
+  if (allowed == DomainBoundary::SegmentsOrBox)
+  {
+    Box b{ std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+      -std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity() };
+    for (std::size_t v = 0; v < m.points.size(); ++v)
+      if (m.referenced[v])
+        b = { std::min(b.x0, m.at(v).x), std::min(b.y0, m.at(v).y), std::max(b.x1, m.at(v).x),
+          std::max(b.y1, m.at(v).y) };
+    const Point c[4] = { { b.x0, b.y0 }, { b.x1, b.y0 }, { b.x1, b.y1 }, { b.x0, b.y1 } };
+    for (int i = 0; i < 4; ++i)
+      lines.push_back({ c[i], c[(i + 1) % 4] });
+  }
+  std::vector<Box> boxes;
+  for (const auto& [a, b] : lines)
+  {
+    const Box x = boxOf(a, b);
+    boxes.push_back({ x.x0 - reach, x.y0 - reach, x.x1 + reach, x.y1 + reach });
+  }
+  const BoxTree tree(boxes);
+  for (int h : boundaryEdges(m))
+  {
+    const Point &p = m.at(m.vertex(h)), &q = m.at(m.nextVertex(h));
+    bool along = false;
+    tree.query(boxOf(p, q), [&](int i) {
+      const auto& [a, b] = lines[i];
+      along = along ||
+        (segmentDistance(p, a, b) <= reach + roundingSlack(a, b, p) &&
+          segmentDistance(q, a, b) <= reach + roundingSlack(a, b, q));
+    });
+    if (!along)
+      errors.add([&] {
+        return "boundary edge " + edgeName(m, h) + " from " + text(p) + " to " + text(q) +
+          " lies along no input segment" +
+          (allowed == DomainBoundary::SegmentsOrHull     ? " nor the convex hull"
+              : allowed == DomainBoundary::SegmentsOrBox ? " nor the bounding rectangle"
+                                                         : "") +
+          ": a triangle is missing inside the domain, or one lies beyond it";
+      });
+  }
+}
+
+/// Check 9b: no hole seed lies strictly inside a triangle.
+void checkHoles(const Pslg& input, const Mesh& m, Errors& errors)
+{
+  if (input.holes.empty())
+    return;
+  std::vector<Box> boxes;
+  std::vector<std::size_t> ids;
+  for (std::size_t t = 0; t < m.triangles.size(); ++t)
+    if (m.positive[t])
+    {
+      const auto p = m.corners(t);
+      boxes.push_back(boxOf(p[0], p[1], p[2]));
+      ids.push_back(t);
+    }
+  const BoxTree tree(boxes);
+  for (std::size_t k = 0; k < input.holes.size(); ++k)
+  {
+    const Point& h = input.holes[k];
+    tree.query(boxOf(h, h), [&](int i) {
+      const auto p = m.corners(ids[i]);
+      if (orientSign(p[0], p[1], h) > 0 && orientSign(p[1], p[2], h) > 0 &&
+        orientSign(p[2], p[0], h) > 0)
+        errors.add([&] {
+          return "hole seed " + std::to_string(k) + " " + text(h) + " lies in " + m.name(ids[i]);
+        });
+    });
+  }
+}
+
 } // namespace
 
 namespace
@@ -1190,6 +1308,8 @@ ValidationReport validate(const Pslg& input, const Array<Point>& vertices,
     o.maxEdgeLength = std::ldexp(options.maxEdgeLength, -e);
     o.snapTolerance = std::ldexp(options.snapTolerance, -e);
     o.chainOffset = std::ldexp(options.chainOffset, -e);
+    for (Point& h : in.holes)
+      h = { std::ldexp(h.x, -e), std::ldexp(h.y, -e) };
     ValidationReport r = validate(in, scaled(vertices, e), triangles, o);
     if (!r.ok)
       r.errors.push_back("(coordinates in these messages are scaled by 2^" + std::to_string(-e) +
@@ -1214,6 +1334,11 @@ ValidationReport validate(const Pslg& input, const Array<Point>& vertices,
   if (options.checkConformity)
     checkConformity(options.snapTolerance > 0 ? snapped(input, options.snapTolerance) : input, m,
       map, options.chainOffset, errors); // 6
+  if (options.boundary != DomainBoundary::Unchecked)
+    checkDomainBoundary(
+      input, m, options.boundary, options.snapTolerance + options.chainOffset, errors); // 9a
+  if (options.checkHoles)
+    checkHoles(input, m, errors); // 9b
   return report;
 }
 

@@ -12,6 +12,15 @@
 namespace osm
 {
 
+/// What the mesh's boundary may run along (check 9).
+enum class DomainBoundary
+{
+  Unchecked,      ///< anything
+  Segments,       ///< input segments only (the enclosed domain)
+  SegmentsOrHull, ///< input segments or the convex hull of the input points
+  SegmentsOrBox   ///< input segments or the mesh's own bounding rectangle
+};
+
 struct ValidationOptions
 {
   double maxAngleDeg = 170.0; ///< every angle must be at most this
@@ -43,6 +52,12 @@ struct ValidationOptions
   double chainOffset = 0.0;
   /// Also check that every input point is a mesh vertex. Off when holes may remove some.
   bool requireAllInputVertices = true;
+  /// Check 9, the domain: every boundary edge of the mesh lies along what this allows
+  /// (within the rounding allowance, plus snapTolerance and chainOffset), so that no
+  /// triangle is missing inside the domain and none lies beyond it.
+  DomainBoundary boundary = DomainBoundary::Unchecked;
+  /// Check 9, the holes: no hole seed (Pslg::holes) lies strictly inside a triangle.
+  bool checkHoles = false;
   /// Keep at most this many messages in ValidationReport::errors (all are still counted).
   std::size_t maxErrorMessages = 50;
 };
@@ -60,8 +75,8 @@ struct ValidationReport
 /// Checks, strictly and independently of the mesher: index validity, exact positive
 /// orientation, manifold and consistently oriented edges, a non-overlapping cover (vertex fans,
 /// boundary edges, vertices inside triangles, pairwise overlap for small meshes), no coincident
-/// mesh vertices, input points present, input segments conforming, the angle bound, and the
-/// edge length bound if one is given.
+/// mesh vertices, input points present, input segments conforming, the angle bound, the
+/// edge length bound if one is given, and if asked the domain's boundary and holes.
 /// O(n log n) beyond the brute-force limit; ok is false iff errorCount > 0.
 ValidationReport validate(const Pslg& input, const Array<Point>& vertices,
   const Array<Triangle>& triangles, const ValidationOptions& options = {});

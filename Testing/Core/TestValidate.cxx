@@ -465,6 +465,111 @@ TEST(Validate, GridWithHolesPasses)
   EXPECT_TRUE(osm::validate(g.input, g.points, g.triangles, boundaryOnly).ok);
 }
 
+TEST(Validate, HolesInTheGridFailTheDomainCheckUnlessTheyAreInTheInput)
+{
+  // A review found that the cover check alone passes the grid with holes
+  // above, whose input is the outer square only: a mesher that dropped those
+  // triangles would pass. With the domain checked it fails, and passes when
+  // the input's segments bound the holes.
+  Grid g = makeGrid(20, 0.15, 9);
+  removeSquares(g, 20, { { 15, 15 } });
+  ValidationOptions o;
+  o.boundary = osm::DomainBoundary::Segments;
+  const auto r = osm::validate(g.input, g.points, g.triangles, o);
+  EXPECT_FALSE(r.ok);
+  EXPECT_TRUE(mentions(r, "lies along no input segment: a triangle is missing inside the domain"))
+    << dump(r);
+  EXPECT_EQ(r.errorCount, 4u); // the square's four sides
+  const int n = 20;
+  const auto id = [n](int i, int j) { return j * (n + 1) + i; };
+  Pslg bounded = g.input;
+  for (const auto& [i, j] :
+    std::vector<std::pair<int, int>>{ { 15, 15 }, { 16, 15 }, { 16, 16 }, { 15, 16 } })
+    bounded.points.push_back(g.points[id(i, j)]);
+  for (int k = 0; k < 4; ++k)
+    bounded.segments.push_back({ 4 + k, 4 + (k + 1) % 4 });
+  const auto fixed = osm::validate(bounded, g.points, g.triangles, o);
+  EXPECT_TRUE(fixed.ok) << dump(fixed);
+  // The hull allows the outer square, not the holes.
+  o.boundary = osm::DomainBoundary::SegmentsOrHull;
+  EXPECT_FALSE(osm::validate(g.input, g.points, g.triangles, o).ok);
+}
+
+TEST(Validate, ATriangleBeyondTheDomainFails)
+{
+  // The unit square's mesh plus a separate triangle: its edges lie along no
+  // segment, and beyond the hull of the input points (the square's corners).
+  Array<Point> points = kSquare;
+  points.insert(points.end(), { { 3, 0 }, { 4, 0 }, { 3, 1 } });
+  Array<Triangle> triangles = kSquareTriangles;
+  triangles.push_back({ 4, 5, 6 });
+  Pslg input;
+  input.points = points;
+  input.points.resize(4);
+  input.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 } };
+  ValidationOptions o;
+  o.requireAllInputVertices = false;
+  o.boundary = osm::DomainBoundary::Segments;
+  EXPECT_EQ(osm::validate(input, points, triangles, o).errorCount, 3u);
+  o.boundary = osm::DomainBoundary::SegmentsOrHull;
+  EXPECT_EQ(osm::validate(input, points, triangles, o).errorCount, 3u);
+  // The bounding rectangle of every vertex holds the far triangle's bottom
+  // edge (y = 0), not its other two.
+  o.boundary = osm::DomainBoundary::SegmentsOrBox;
+  EXPECT_EQ(osm::validate(input, points, triangles, o).errorCount, 2u);
+  triangles.pop_back();
+  for (auto b : { osm::DomainBoundary::Segments, osm::DomainBoundary::SegmentsOrHull,
+         osm::DomainBoundary::SegmentsOrBox })
+  {
+    o.boundary = b;
+    EXPECT_TRUE(osm::validate(input, points, triangles, o).ok);
+  }
+}
+
+TEST(Validate, TheHullDomainsBoundaryMayRunAlongTheHullBetweenSegments)
+{
+  // Free points at the square's corners and one segment across it: the
+  // mesh of the hull has boundary edges on the hull only, and a boundary
+  // edge cut short of a hull corner fails.
+  Pslg input;
+  input.points = kSquare;
+  input.points.push_back({ 0.5, 0.5 });
+  input.segments = { { 0, 4 } };
+  const Array<Point> points = input.points;
+  const Array<Triangle> whole = { { 0, 1, 4 }, { 1, 2, 4 }, { 2, 3, 4 }, { 3, 0, 4 } };
+  ValidationOptions o;
+  o.boundary = osm::DomainBoundary::SegmentsOrHull;
+  EXPECT_TRUE(osm::validate(input, points, whole, o).ok);
+  const Array<Triangle> missing = { { 0, 1, 4 }, { 1, 2, 4 }, { 2, 3, 4 } };
+  const auto r = osm::validate(input, points, missing, o);
+  EXPECT_EQ(r.errorCount, 1u) << dump(r); // (3, 4): (0, 4) is a segment
+  EXPECT_TRUE(mentions(r, "nor the convex hull")) << dump(r);
+}
+
+TEST(Validate, AHoleSeedInsideATriangleFails)
+{
+  // A square with a square hole, meshed with the hole filled: the seed lies
+  // inside a triangle. On an edge it is in no triangle's interior.
+  Pslg input;
+  input.points = { { 0, 0 }, { 3, 0 }, { 3, 3 }, { 0, 3 }, { 1, 1 }, { 2, 1 }, { 2, 2 }, { 1, 2 } };
+  input.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 }, { 4, 5 }, { 5, 6 }, { 6, 7 },
+    { 7, 4 } };
+  input.holes = { { 1.25, 1.5 } };
+  const Array<Triangle> ring = { { 0, 1, 5 }, { 0, 5, 4 }, { 1, 2, 6 }, { 1, 6, 5 }, { 2, 3, 7 },
+    { 2, 7, 6 }, { 3, 0, 4 }, { 3, 4, 7 } };
+  Array<Triangle> filled = ring;
+  filled.insert(filled.end(), { { 4, 5, 6 }, { 4, 6, 7 } });
+  ValidationOptions o;
+  o.checkHoles = true;
+  o.boundary = osm::DomainBoundary::Segments;
+  EXPECT_TRUE(osm::validate(input, input.points, ring, o).ok);
+  const auto r = osm::validate(input, input.points, filled, o);
+  EXPECT_EQ(r.errorCount, 1u) << dump(r);
+  EXPECT_TRUE(mentions(r, "hole seed 0 (1.25, 1.5) lies in triangle 9")) << dump(r);
+  input.holes = { { 1.5, 1.5 } }; // on the diagonal (4, 6)
+  EXPECT_TRUE(osm::validate(input, input.points, filled, o).ok);
+}
+
 TEST(Validate, JitteredGridPasses)
 {
   const Grid g = makeGrid(200, 0.15, 7);
