@@ -32,14 +32,17 @@ struct Options
   /// circumradius at most Γ times the distance from each corner to its
   /// nearest neighbour, Lemma 2's premise). By default the overlay bounds
   /// radius / shortest edge only (the corners' own triangle), as Delaunay
-  /// refinement does: up to 12 times fewer triangles on the real inputs, whose
+  /// refinement does: up to 12.5 times fewer triangles on the real inputs, whose
   /// meshes all stay below 150°, but no proof; a mesh from it with an angle
   /// above the bound (or remeshAboveDeg) is made again from a gap-ratio
   /// overlay, with a warning. True: the gap-ratio overlay at once.
   bool gapRatioOverlay = false;
   /// The largest angle above which a mesh from the radius-edge overlay is
-  /// made again from a gap-ratio one; 0: the bound 180° − θ2. (Not with
-  /// minAngleDeg above 30, where nothing is proven.)
+  /// made again from a gap-ratio one; 0: the bound 180° − θ2; at most 180.
+  /// (Not with minAngleDeg above 30, where nothing is proven, nor where the
+  /// second mesh, at 13 times the first's triangles, would not fit in this
+  /// machine's memory: a warning says so.) The statistics are the second
+  /// mesh's, but SecondsTotal counts both.
   double remeshAboveDeg = 0.0;
   /// If > 0, no output edge is longer: overlay triangles with a longer edge
   /// are refined further, and the few longer diagonals that completion makes
@@ -82,6 +85,8 @@ class Progress
 public:
   virtual ~Progress() = default;
   /// fraction in [0, 1] over the whole run; phase names the current phase.
+  /// Where the mesh is made again from a gap-ratio overlay (Options::
+  /// gapRatioOverlay), the second run reports from 0 again.
   virtual void report(double fraction, const char* phase) = 0;
   /// Polled regularly; returning true makes mesh() stop with the error "aborted".
   virtual bool aborted() { return false; }

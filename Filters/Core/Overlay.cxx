@@ -36,6 +36,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <limits>
 #include <new>
 #include <string>
@@ -86,14 +87,34 @@ double offCenterHeight(double gamma)
 
 } // namespace
 
+namespace
+{
+
+/// A control group's memory limit from one of its files (cgroup v2's
+/// memory.max, v1's memory.limit_in_bytes), or 0: none, or no such file.
+double cgroupLimit(const char* path)
+{
+  std::ifstream in(path);
+  double limit = 0;
+  return in >> limit && limit > 0 ? limit : 0.0; // "max" reads as no number
+}
+
+} // namespace
+
 double physicalMemoryBytes()
 {
-#if defined(__unix__)
+  double memory = 0;
+#if defined(__unix__) || defined(__APPLE__)
   const long pages = sysconf(_SC_PHYS_PAGES), size = sysconf(_SC_PAGE_SIZE);
   if (pages > 0 && size > 0)
-    return double(pages) * double(size);
+    memory = double(pages) * double(size);
 #endif
-  return 0.0;
+  // In a container the limit is its control group's, not the host's memory.
+  for (const char* path :
+    { "/sys/fs/cgroup/memory.max", "/sys/fs/cgroup/memory/memory.limit_in_bytes" })
+    if (const double limit = cgroupLimit(path); limit > 0 && (memory == 0 || limit < memory))
+      memory = limit;
+  return memory;
 }
 
 namespace
@@ -350,18 +371,18 @@ Overlay Refiner::refine()
   }
   // A mesh this machine cannot hold would end in the system killing the
   // process (the host application with it): refuse it at once. About 2.2
-  // points per forMaxEdge (below), 2 triangles per point, and 100 bytes per
-  // triangle: the core's own peak is 75, osm-mesh's whole process 99 to 154
-  // (a review's la.poly at 0.003, 2.7e8 triangles, was killed at 23 GB).
-  if (const double memory = physicalMemoryBytes(), need = 2.2 * forMaxEdge * 2 * 100;
+  // points per forMaxEdge (below), 2 triangles per point, and
+  // kBytesPerTriangle (a review's la.poly at 0.003, 2.7e8 triangles, was
+  // killed at 23 GB; another's at 0.0032 was let through at 150 bytes).
+  if (const double memory = physicalMemoryBytes(), need = 2.2 * forMaxEdge * 2 * kBytesPerTriangle;
       memory > 0 && need > memory)
   {
-    char sizes[96];
+    char sizes[112];
     std::snprintf(sizes, sizeof sizes,
       "about %.3g points, at least %.3g GB, and this machine has %.3g GB", 2.2 * forMaxEdge,
       need / 1e9, memory / 1e9);
-    throw Stop{ sizeBoundName() + " is too small for this machine's memory: the mesh would need " +
-      sizes };
+    throw Stop{ sizeBoundName() +
+      " is too small for this machine's memory: the overlay would need " + sizes };
   }
   // A size bound may ask for many more points than the input has: about 2.2
   // times forMaxEdge (measured on squares), so room for 2.5 times spares
@@ -380,9 +401,12 @@ Overlay Refiner::refine()
     throw Stop{ "the overlay needs more than the allowed " + std::to_string(steinerCap) +
       " Steiner points: the " + std::to_string(kBoxCorners) +
       " corners of its padding box count among them" };
-  hardCap = steinerCap > 0
-    ? steinerCap
-    : 1000 * input.size() + 1000000 + static_cast<std::size_t>(8 * forMaxEdge);
+  // The gap-ratio overlay grades far more slowly around close points (a
+  // review: about 4,000 Steiner points per decade of spread around each
+  // close pair, against 200), so its cap per point is 100 times larger.
+  hardCap = steinerCap > 0 ? steinerCap
+                           : (gapRatio ? 100000 : 1000) * input.size() + 1000000 +
+      static_cast<std::size_t>(8 * forMaxEdge);
   enqueueIfNeeded(0);
   enqueueIfNeeded(1);
   while (!queue.empty())
@@ -466,6 +490,9 @@ void Refiner::countSteiner()
     throw Stop{ "the overlay refinement exceeded " + std::to_string(hardCap) +
       (beyondGuarantee ? " Steiner points without ending: with a minimum angle above 30 degrees "
                          "it need not end; use 30 degrees or less"
+          : gapRatio   ? " Steiner points: the gap-ratio overlay grades slowly around input points "
+                         "much closer together than the rest, and these are too many; without it "
+                         "(the default overlay) such input needs far fewer"
                        : " Steiner points, which suggests a numerical problem with this input") };
 }
 

@@ -63,9 +63,16 @@ struct Overlay
 /// Steiner points (OverlayOptions::maxSteinerPoints) counts them.
 constexpr std::size_t kBoxCorners = 4;
 
-/// The machine's physical memory in bytes, or 0 where unknown: a size bound
-/// asking for a mesh beyond it is refused before refining.
+/// The machine's physical memory in bytes, or its control group's limit
+/// where lower (a container), or 0 where unknown: a size bound asking for a
+/// mesh beyond it is refused before refining. Not the memory free now, which
+/// changes from run to run.
 double physicalMemoryBytes();
+
+/// What a process holding a mesh takes per output triangle, at most, as
+/// measured: the core's own peak 75 bytes, osm-mesh's whole process 99 to
+/// 154 (a review measured 150 on la.poly with a size bound).
+constexpr double kBytesPerTriangle = 150;
 
 /// Mesh the points (distinct, finite) alone; segments are ignored here.
 Overlay buildOverlay(const Array<Point>& points, const OverlayOptions& options, RunContext& run);

@@ -10,6 +10,9 @@
 namespace osm
 {
 
+/// The error of a run the user aborted (Progress::aborted).
+inline constexpr const char* kAbortedByTheUser = "aborted by the user";
+
 /// Thrown inside the core only, caught by mesh(): the user aborted or a cap was hit.
 struct Stop
 {
@@ -69,7 +72,7 @@ public:
     lastFraction = fraction;
     progress->report(phaseBegin + (phaseEnd - phaseBegin) * fraction, phaseName);
     if (progress->aborted())
-      throw Stop{ "aborted by the user" };
+      throw Stop{ kAbortedByTheUser };
   }
   /// Cheap call for inner loops: reports every 'every' calls.
   void tick(double fraction, unsigned every = 4096)

@@ -459,14 +459,19 @@ TEST(Mesher, AMeshBeyondTheMachinesMemoryIsRefusedAtOnce)
     GTEST_SKIP() << "this machine's memory: " << memory;
   Options o;
   o.maxEdgeLength = std::sqrt(1 / (0.8660254037844386 * 4e8));
-  const auto start = std::chrono::steady_clock::now();
-  const Result r = mesh(square(), o);
+  // Refused before refining: the progress never goes past the overlay's start.
+  struct Furthest : Progress
+  {
+    double furthest = 0;
+    void report(double fraction, const char*) override { furthest = std::max(furthest, fraction); }
+  } progress;
+  const Result r = mesh(square(), o, &progress);
   ASSERT_FALSE(r.ok);
-  EXPECT_NE(r.error.find("the maximum edge length is too small for this machine's memory"),
+  EXPECT_NE(r.error.find("the maximum edge length is too small for this machine's memory: the "
+                         "overlay would need about"),
     std::string::npos)
     << r.error;
-  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0)
-    << "refused before refining";
+  EXPECT_LE(progress.furthest, 0.02);
 }
 
 TEST(Mesher, AnEmptyEnclosedDomainSaysWhy)
@@ -2304,6 +2309,44 @@ TEST(Mesher, AnglesThatRoundingPutsAboveTheBoundAreWarnedAbout)
       above, mentions(again.warnings, "it was made again from an overlay of gap-ratio quality"));
     EXPECT_FALSE(mentions(again.warnings, "exceed the largest-angle bound"));
     EXPECT_TRUE(meshAndValidate(moved, "made again", o).ok);
+  }
+}
+
+TEST(Mesher, TheSecondMeshHonoursAnAbortAndItsAngleIsChecked)
+{
+  // Found by a review: an abort during the mesh made again from a gap-ratio
+  // overlay was turned into a warning, and the first mesh returned as if
+  // nothing had been asked; and remeshAboveDeg took any value.
+  Options o;
+  o.remeshAboveDeg = 60; // every mesh of the square is made again
+  const Result twice = mesh(square(), o);
+  ASSERT_TRUE(twice.ok) << twice.error;
+  EXPECT_TRUE(twice.stats.gapRatioOverlay);
+  // Abort once the second run has started: its progress begins at 0 again.
+  struct AbortSecondRun : Progress
+  {
+    double last = 0;
+    bool second = false;
+    void report(double fraction, const char*) override
+    {
+      second = second || fraction < last;
+      last = fraction;
+    }
+    bool aborted() override { return second; }
+  } progress;
+  const Result aborted = mesh(square(), o, &progress);
+  EXPECT_TRUE(progress.second);
+  EXPECT_FALSE(aborted.ok);
+  EXPECT_EQ(aborted.error, "aborted by the user");
+  for (double bad : { -1.0, 180.5, std::nan("") })
+  {
+    o.remeshAboveDeg = bad;
+    const Result r = mesh(square(), o);
+    EXPECT_FALSE(r.ok) << bad;
+    EXPECT_NE(r.error.find("the angle above which to mesh again must be between 0 (the bound) "
+                           "and 180 degrees"),
+      std::string::npos)
+      << r.error;
   }
 }
 
