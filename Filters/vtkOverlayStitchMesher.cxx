@@ -79,14 +79,18 @@ bool AbortRequested(vtkAlgorithm* filter)
 /// output's own arrays (the statistics, EdgeClassNames) win a name clash.
 /// Arrays without values are left out: a parallel run's gather cannot carry
 /// them (OverlayStitchPieceToSend), and the outputs are the serial run's.
+/// So is the reader's FileFirstIndex, the numbering of the file the input
+/// came from: the outputs number from 0, as VTK does, and a mesh written
+/// and read again must not claim its file's numbering (a user review).
 void PassFieldData(vtkFieldData* in, vtkPolyData* output)
 {
   vtkFieldData* out = output->GetFieldData();
   for (int a = 0; in && a < in->GetNumberOfArrays(); ++a)
   {
     vtkAbstractArray* array = in->GetAbstractArray(a);
-    if (array->GetNumberOfTuples() > 0 &&
-      (!array->GetName() || !out->GetAbstractArray(array->GetName())))
+    const char* name = array->GetName();
+    if (array->GetNumberOfTuples() > 0 && !(name && std::strcmp(name, "FileFirstIndex") == 0) &&
+      (!name || !out->GetAbstractArray(name)))
     {
       out->AddArray(array);
     }

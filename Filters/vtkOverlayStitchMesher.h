@@ -101,8 +101,9 @@ public:
    * θ1, the smallest angle of the phase-1 overlay mesh, in degrees (1 to 35,
    * default 30). The output's largest angle is bounded by 180° − θ2, where θ2
    * shrinks with θ1: 30° gives about 170°. Above 30° nothing is guaranteed:
-   * the mesh grows several times larger, and from about 32.5° the refinement
-   * may not end (an error after its cap on Steiner points).
+   * the mesh grows several times larger, and from about 32.5° (31.7° with
+   * GapRatioOverlay) the refinement may not end (an error after its cap on
+   * Steiner points).
    */
   vtkSetClampMacro(MinimumAngle, double, 1.0, 35.0);
   vtkGetMacro(MinimumAngle, double);
@@ -189,7 +190,7 @@ public:
    * overlay of gap-ratio quality (every triangle's circumradius at most
    * Gamma times the distance from each corner to its nearest neighbour).
    * Off (the default), the overlay bounds radius / shortest edge, as
-   * Delaunay refinement does: up to 12 times fewer triangles on real inputs,
+   * Delaunay refinement does: up to 12.5 times fewer triangles on real inputs,
    * all meshed below 150 degrees, but no proof; a mesh from it with an angle
    * above the bound is made again from a gap-ratio overlay, with a warning
    * (statistic GapRatioOverlay 1). On: the gap-ratio overlay at once.

@@ -87,7 +87,9 @@ INPUT                  Triangle .poly (holes honoured) or .node file, or
                        hull or box
   --min-angle DEG      theta1, the overlay's smallest angle: 1 to 35 (default 30;
                        above 30 no guarantee: the mesh grows fast, and from
-                       about 32.5 the refinement may not end)
+                       about 32.5 (31.7 with --gap-ratio) the refinement may
+                       not end). Not Triangle's -q: the output's smallest
+                       angle is not bounded (input angles stay), its largest is
   --gamma G            the overlay's radius/edge bound instead:
                        theta1 = asin(1/(2G)), G from 0.8718 to 28.64
   --max-edge H         no edge longer than H: refine the overlay, split the
@@ -109,7 +111,7 @@ INPUT                  Triangle .poly (holes honoured) or .node file, or
                        with a warning)
   --gap-ratio          refine the overlay to the paper's gap-ratio quality,
                        the premise of its proof of the bound, at once (up to
-                       12 times the triangles on real inputs; default: the
+                       12.5 times the triangles on real inputs; default: the
                        radius/edge quality, and a mesh from it with an angle
                        above the bound is made again from a gap-ratio overlay)
   --no-point-data      do not carry the input's point data (a .poly's vertex
@@ -387,14 +389,20 @@ bool ListsNoVertices(const std::string& path)
 {
   std::ifstream file(path);
   std::string line;
-  while (std::getline(file, line))
+  for (bool first = true; std::getline(file, line); first = false)
   {
+    if (first && line.compare(0, 3, "\xEF\xBB\xBF") == 0)
+    {
+      line.erase(0, 3); // a UTF-8 byte order mark, which the reader skips too
+    }
     const std::size_t start = line.find_first_not_of(" \t\r");
     if (start == std::string::npos || line[start] == '#')
     {
       continue;
     }
-    return std::strtoll(line.c_str() + start, nullptr, 10) == 0;
+    char* end = nullptr;
+    const long long count = std::strtoll(line.c_str() + start, &end, 10);
+    return end != line.c_str() + start && count == 0;
   }
   return false;
 }

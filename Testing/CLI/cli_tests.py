@@ -789,6 +789,15 @@ def group_errors():
     expect_error([poly, "-o", points], 2, ["points.node", "the .node file the input reads its vertices from"],
                  "-o naming the .node file beside a .poly input")
     check(read_bytes(points) == before, "the .node file beside the input is left as it was")
+    # A .poly that lists its vertices, after a UTF-8 byte order mark, reads
+    # no .node: one of the same name is an output like any other (a user
+    # review: it was refused as the input's vertices).
+    bom = out("bom.poly")
+    with open(bom, "wb") as f:
+        f.write(b"\xef\xbb\xbf4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n")
+    shutil.copy(data("split_pslg.node"), out("bom.node"))
+    mesh_ok(bom, "-o", out("bom.node"), what="a .poly with a byte order mark, -o its own .node name")
+    check(read_bytes(out("bom.node")).startswith(b"4 2 0 1\n"), "the .node written is the mesh's")
     expect_error([poly, "-o", out("twice.vtp"), "--svg", os.path.join(ARGS.out, ".", "twice.vtp")],
                  2, ["twice.vtp", "written twice"], "-o and --svg naming the same file")
     check(not os.path.exists(out("twice.vtp")), "a file named twice is not written")
