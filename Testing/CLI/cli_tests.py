@@ -187,7 +187,8 @@ def group_options():
         v, t, _ = read_triangle_files(out("d-" + domain))
         areas[domain] = total_area(v, t)
         validate(square, out("d-%s.node" % domain), "--allow-missing",
-                 what="--domain %s mesh is valid" % domain)
+                 "--domain", "enclosed" if domain == "auto" else domain,
+                 what="--domain %s mesh is valid, its boundary and hole too" % domain)
     check(abs(areas["enclosed"] - 96.0) < 1e-9, "--domain enclosed: area 100 - 4 (hole)",
           str(areas["enclosed"]))
     check(read_bytes(out("d-auto.node")) == read_bytes(out("d-enclosed.node")) and

@@ -4,7 +4,7 @@
 // Test helper for the osm-mesh tests and the consumer test.
 //
 //   osm_cli_helper validate INPUT MESH [--allow-missing] [--max-angle A] [--max-edge H]
-//                   [--area A]
+//                   [--area A] [--domain D]
 //     Reads the input PSLG (.poly/.node with the core's reader, .vtp/.vtk
 //     with VTK's readers: lines, polylines and polygon edges are segments)
 //     and a mesh (.vtp, .vtu, .vtk with VTK's readers, or Triangle's
@@ -13,7 +13,10 @@
 //     their coordinates; every input point must be present unless
 //     --allow-missing (holes and the enclosed domain leave points out).
 //     With --max-edge, no edge may be longer than H; with --area, the
-//     triangles' total area must also be A (holes honoured).
+//     triangles' total area must also be A (holes honoured); with --domain
+//     (enclosed, hull or box), the mesh's boundary must run along the input
+//     segments (or the hull's or the mesh's bounding rectangle's edges) and
+//     no hole seed may lie inside a triangle (the validator's check 9).
 //     Prints one summary line; exit 0 iff the mesh is valid.
 //
 //   osm_cli_helper reader DATA_DIR OUT_DIR
@@ -270,11 +273,17 @@ int Validate(int argc, char* argv[])
 {
   if (argc < 4)
   {
-    Die("usage: validate INPUT MESH [--allow-missing] [--max-angle A] [--max-edge H] [--area A]");
+    Die("usage: validate INPUT MESH [--allow-missing] [--max-angle A] [--max-edge H] [--area A] "
+        "[--domain D]");
   }
   bool allowMissing = false;
   double expectedArea = -1.0;
   osm::ValidationOptions options;
+  osm::ValidationOptions domain; // check 9 alone, on the whole input
+  domain.maxAngleDeg = 180.0;
+  domain.checkConformity = false;
+  domain.requireAllInputVertices = false;
+  domain.bruteForceOverlapLimit = 0;
   for (int i = 4; i < argc; ++i)
   {
     const std::string arg = argv[i];
@@ -293,6 +302,27 @@ int Validate(int argc, char* argv[])
     else if (arg == "--area" && i + 1 < argc)
     {
       expectedArea = std::atof(argv[++i]);
+    }
+    else if (arg == "--domain" && i + 1 < argc)
+    {
+      const std::string d = argv[++i];
+      domain.checkHoles = true;
+      if (d == "enclosed")
+      {
+        domain.boundary = osm::DomainBoundary::Segments;
+      }
+      else if (d == "hull")
+      {
+        domain.boundary = osm::DomainBoundary::SegmentsOrHull;
+      }
+      else if (d == "box")
+      {
+        domain.boundary = osm::DomainBoundary::SegmentsOrBox;
+      }
+      else
+      {
+        Die("unknown domain " + d);
+      }
     }
     else
     {
@@ -353,6 +383,18 @@ int Validate(int argc, char* argv[])
   {
     std::cout << "  " << e << "\n";
   }
+  bool ok = report.ok;
+  if (domain.checkHoles)
+  {
+    const osm::ValidationReport d = osm::validate(input, mesh.vertices, mesh.triangles, domain);
+    std::cout << (d.ok ? "ok" : "FAIL") << ": the domain's boundary and " << input.holes.size()
+              << " hole seed(s)\n";
+    for (const std::string& e : d.errors)
+    {
+      std::cout << "  " << e << "\n";
+    }
+    ok = ok && d.ok;
+  }
   if (expectedArea >= 0.0)
   {
     double area = 0.0;
@@ -366,9 +408,9 @@ int Validate(int argc, char* argv[])
     const bool same = std::abs(area - expectedArea) <= 1e-9 * std::max(1.0, expectedArea);
     std::cout << (same ? "ok" : "FAIL") << ": area " << area << ", expected " << expectedArea
               << "\n";
-    return report.ok && same ? 0 : 1;
+    return ok && same ? 0 : 1;
   }
-  return report.ok ? 0 : 1;
+  return ok ? 0 : 1;
 }
 
 int Reference(int argc, char* argv[])
