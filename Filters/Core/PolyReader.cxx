@@ -343,7 +343,15 @@ private:
             " announced, " + std::to_string(i) + " found");
       setItem(nullptr, 0);
       if (!readItem(i))
+      {
+        // A short line where an item was due is most often the next
+        // section's header: the count announced more items than follow.
+        if (lines_.tokens().size() < 3)
+          out_.error += " (line " + std::to_string(lines_.line()) + " is read as " + section + " " +
+            std::to_string(i + 1) + " of the " + std::to_string(n) + " " + plural + " line " +
+            std::to_string(headerLine) + " announces: does the file list fewer than it announces?)";
         return false;
+      }
     }
     return true;
   }

@@ -1162,18 +1162,25 @@ void checkDomainBoundary(
     for (int i = 0; i < 4; ++i)
       lines.push_back({ c[i], c[(i + 1) % 4] });
   }
+  // Boxes grown by the reach and the rounding allowance (roundingSlack's
+  // terms from each side: the line's, and the edge's own coordinates').
+  const auto grown = [](const Box& x, double by) {
+    return Box{ x.x0 - by, x.y0 - by, x.x1 + by, x.y1 + by };
+  };
+  const auto ulps = [](const Point& a, const Point& b) {
+    return 16 * std::numeric_limits<double>::epsilon() *
+      std::max({ std::fabs(a.x), std::fabs(a.y), std::fabs(b.x), std::fabs(b.y) });
+  };
   std::vector<Box> boxes;
   for (const auto& [a, b] : lines)
-  {
-    const Box x = boxOf(a, b);
-    boxes.push_back({ x.x0 - reach, x.y0 - reach, x.x1 + reach, x.y1 + reach });
-  }
+    boxes.push_back(
+      grown(boxOf(a, b), reach + 1e-9 * std::hypot(b.x - a.x, b.y - a.y) + ulps(a, b)));
   const BoxTree tree(boxes);
   for (int h : boundaryEdges(m))
   {
     const Point &p = m.at(m.vertex(h)), &q = m.at(m.nextVertex(h));
     bool along = false;
-    tree.query(boxOf(p, q), [&](int i) {
+    tree.query(grown(boxOf(p, q), ulps(p, q)), [&](int i) {
       const auto& [a, b] = lines[i];
       along = along ||
         (segmentDistance(p, a, b) <= reach + roundingSlack(a, b, p) &&

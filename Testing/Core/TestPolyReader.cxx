@@ -415,6 +415,20 @@ TEST(PolyReaderErrors, TruncatedSectionsSayWhatWasExpectedAndFound)
     "vertex section truncated: 3 vertices announced, 1 found"));
 }
 
+TEST(PolyReaderErrors, ACountAboveTheItemsListedSaysSo)
+{
+  // Found by a Triangle user's review: 5 segments announced and 4 listed
+  // read the holes' count line as a segment, and the error named a segment
+  // 0 that the file does not have, with no word of the count.
+  EXPECT_TRUE(failsAt(
+    poly("4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n5 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n"), "t.poly:11",
+    "missing first endpoint of segment 0 (line 11 is read as segment 5 of the 5 segments line 6 "
+    "announces: does the file list fewer than it announces?)"));
+  EXPECT_TRUE(failsAt(poly("4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n4 0\n1 1 2\n2 2 3\n3 3 "
+                           "4\n4 4 1\n2\n1 0.5 0.5\n0\n"),
+    "t.poly:13", "(line 13 is read as hole 2 of the 2 holes line 11 announces"));
+}
+
 TEST(PolyReaderErrors, MissingSegmentSection)
 {
   EXPECT_TRUE(failsAt(poly("3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n# end\n"), "t.poly:5",

@@ -546,6 +546,29 @@ TEST(Validate, TheHullDomainsBoundaryMayRunAlongTheHullBetweenSegments)
   EXPECT_TRUE(mentions(r, "nor the convex hull")) << dump(r);
 }
 
+TEST(Validate, ABoundaryEdgeWithinRoundingOfATinyHullEdgeIsAlongIt)
+{
+  // Found by fuzzing the domain check: the hull's bottom edge runs from
+  // (1, -1.5e-48) to (13, 0), and the mesh's boundary along it through
+  // crossings rounded to y = 1.1e-16, which the box test of the lines left
+  // out (their boxes were not grown by the rounding allowance).
+  Pslg input;
+  input.points = { { 0, 0 }, { 1, -1.5390887117594296e-48 }, { 13, 0 }, { 13, 5 }, { 0, 5 } };
+  Array<Point> points = input.points;
+  points.insert(points.end(),
+    { { 3.0234804000625357, 1.1102230246251565e-16 },
+      { 4.52691707195536, 1.1102230246251565e-16 } });
+  const Array<Triangle> triangles = { { 0, 1, 4 }, { 1, 5, 4 }, { 5, 6, 4 }, { 6, 3, 4 },
+    { 6, 2, 3 } };
+  ValidationOptions o;
+  o.boundary = osm::DomainBoundary::SegmentsOrHull;
+  const auto r = osm::validate(input, points, triangles, o);
+  EXPECT_TRUE(r.ok) << dump(r);
+  // 1e-6 above the edge is no rounding.
+  points[5].y = points[6].y = 1e-6;
+  EXPECT_FALSE(osm::validate(input, points, triangles, o).ok);
+}
+
 TEST(Validate, AHoleSeedInsideATriangleFails)
 {
   // A square with a square hole, meshed with the hole filled: the seed lies

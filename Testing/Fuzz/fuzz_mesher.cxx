@@ -52,9 +52,32 @@ private:
   std::size_t pos = 0;
 };
 
+/// The input and options of the run in progress, written out on a failure
+/// so that it can be reproduced without decoding the fuzzer's bytes.
+const osm::Pslg* currentInput = nullptr;
+const osm::Options* currentOptions = nullptr;
+
 void fail(const char* what, const std::string& detail)
 {
   std::fprintf(stderr, "fuzz_mesher: %s: %s\n", what, detail.c_str());
+  if (const osm::Pslg* p = currentInput)
+  {
+    std::fprintf(stderr, "the input, as a .poly counting from 0:\n%zu 2 0 0\n", p->points.size());
+    for (std::size_t i = 0; i < p->points.size(); ++i)
+      std::fprintf(stderr, "%zu %.17g %.17g\n", i, p->points[i].x, p->points[i].y);
+    std::fprintf(stderr, "%zu 0\n", p->segments.size());
+    for (std::size_t i = 0; i < p->segments.size(); ++i)
+      std::fprintf(stderr, "%zu %d %d\n", i, p->segments[i][0], p->segments[i][1]);
+    std::fprintf(stderr, "%zu\n", p->holes.size());
+    for (std::size_t i = 0; i < p->holes.size(); ++i)
+      std::fprintf(stderr, "%zu %.17g %.17g\n", i, p->holes[i].x, p->holes[i].y);
+  }
+  if (const osm::Options* o = currentOptions)
+    std::fprintf(stderr,
+      "options: domain %d, minAngleDeg %.17g, maxEdgeLength %.17g, mergeTolerance %.17g, "
+      "resolveCrossings %d, gapRatioOverlay %d, regionAreas %d\n",
+      static_cast<int>(o->domain), o->minAngleDeg, o->maxEdgeLength, o->mergeTolerance,
+      o->resolveCrossings, o->gapRatioOverlay, o->regionAreas);
   std::abort();
 }
 
@@ -207,6 +230,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   o.gapRatioOverlay = in.byte() % 4 == 1;
   if (o.gapRatioOverlay)
     o.maxSteinerPoints = 10000;
+  currentInput = &p;
+  currentOptions = &o;
   const osm::Result r = osm::mesh(p, o);
   if (!r.ok)
     return 0; // refused: the message is checked by the unit tests
@@ -274,6 +299,26 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const osm::ValidationReport rep = osm::validate(present, r.mesh.vertices, r.mesh.triangles, vo);
   if (!rep.ok)
     fail("invalid mesh", rep.errors.empty() ? "" : rep.errors.front());
+  // The domain, against the whole input (segments whose points it left out
+  // bound it too): its boundary along the segments (or the hull's or box's
+  // edges), and no hole seed covered unless a merge moved one across a segment.
+  osm::ValidationOptions dom;
+  dom.maxAngleDeg = 180;
+  dom.checkConformity = false;
+  dom.requireAllInputVertices = false;
+  dom.bruteForceOverlapLimit = 0;
+  dom.snapTolerance = o.mergeTolerance;
+  dom.chainOffset = vo.chainOffset;
+  dom.boundary = r.domain == osm::Domain::Enclosed ? osm::DomainBoundary::Segments
+    : r.domain == osm::Domain::Hull                ? osm::DomainBoundary::SegmentsOrHull
+                                                   : osm::DomainBoundary::SegmentsOrBox;
+  dom.checkHoles = true;
+  for (const std::string& w : r.warnings)
+    dom.checkHoles =
+      dom.checkHoles && w.find("seed(s) now lie on the other side") == std::string::npos;
+  const osm::ValidationReport d = osm::validate(p, r.mesh.vertices, r.mesh.triangles, dom);
+  if (!d.ok)
+    fail("mesh beyond or short of its domain", d.errors.empty() ? "" : d.errors.front());
   checkInterpolation(p, r, o, extent);
   return 0;
 }
