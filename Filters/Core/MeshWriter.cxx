@@ -3,9 +3,12 @@
 #include "TriangleMarkers.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <string>
+#include <system_error>
 #include <vector>
 
 namespace osm
@@ -59,9 +62,30 @@ std::string writeTriangleFiles(const std::string& base, const Result& r, const N
     (!data.edgeMarkers.empty() && data.edgeMarkers.size() != r.edges.size()))
     return "internal error: vertex attributes or markers for " + base +
       ".node do not match its vertices";
-  std::ofstream node(base + ".node"), ele(base + ".ele"), edge(base + ".edge");
-  if (!node || !ele || !edge)
-    return "cannot write " + base + ".node/.ele/.edge";
+  // Opened one by one, so that a failure names its file and reason; the
+  // files already created are removed (a user review: empty ones were left).
+  const std::string names[3] = { base + ".node", base + ".ele", base + ".edge" };
+  std::ofstream files[3];
+  const auto removeAll = [&] {
+    for (int k = 0; k < 3; ++k)
+      if (files[k].is_open())
+      {
+        files[k].close();
+        std::remove(names[k].c_str());
+      }
+  };
+  for (int k = 0; k < 3; ++k)
+  {
+    errno = 0;
+    files[k].open(names[k]);
+    if (!files[k])
+    {
+      const std::string why = errno != 0 ? std::generic_category().message(errno) : "failed";
+      removeAll();
+      return "cannot write " + names[k] + ": " + why;
+    }
+  }
+  std::ofstream &node = files[0], &ele = files[1], &edge = files[2];
   const MeshEdges edges(r.mesh);
   const std::vector<int> marker = inputMarkers(r, edges, data.edgeMarkers, 0);
   const std::size_t first = data.firstIndex == 0 ? 0 : 1;
@@ -103,7 +127,14 @@ std::string writeTriangleFiles(const std::string& base, const Result& r, const N
   for (std::size_t e = 0; e < edges.size(); ++e)
     edge << e + first << ' ' << edges.lower(e) + first << ' ' << edges.higher(e) + first << ' '
          << boundaryMarker(marker[e], edges.onBoundary(e)) << '\n';
-  return node && ele && edge ? std::string() : "error while writing " + base + ".node/.ele/.edge";
+  node.close();
+  ele.close();
+  edge.close();
+  if (node && ele && edge)
+    return std::string();
+  for (const std::string& name : names)
+    std::remove(name.c_str());
+  return "error while writing " + base + ".node/.ele/.edge (a full disk?): removed them";
 }
 
 void writeSvg(std::ostream& out, const Result& r)

@@ -163,7 +163,19 @@ TEST(MeshWriter, TriangleBoundaryMarkersWithoutData)
 
 TEST(MeshWriter, UnwritablePathGivesAReason)
 {
-  EXPECT_NE(writeTriangleFiles("/nonexistent-dir/x", squareWithSlit()), "");
+  EXPECT_EQ(writeTriangleFiles("/nonexistent-dir/x", squareWithSlit()),
+    "cannot write /nonexistent-dir/x.node: No such file or directory");
+  // Found by a user review: with a directory named x.edge the message gave
+  // no reason, and empty x.node and x.ele were left behind.
+  const fs::path dir = fs::temp_directory_path() / "osm-writer-unwritable";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "x.edge");
+  const std::string base = (dir / "x").string();
+  EXPECT_EQ(
+    writeTriangleFiles(base, squareWithSlit()), "cannot write " + base + ".edge: Is a directory");
+  EXPECT_FALSE(fs::exists(base + ".node"));
+  EXPECT_FALSE(fs::exists(base + ".ele"));
+  fs::remove_all(dir);
 }
 
 TEST(MeshWriter, SvgAndJson)
