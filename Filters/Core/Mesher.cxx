@@ -24,6 +24,7 @@
 #include <limits>
 #include <new>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace osm
@@ -581,6 +582,75 @@ std::string crossingError(
   if (crossings.size() > 1)
     msg += " (and at least " + std::to_string(crossings.size() - 1) + " more crossing pair(s))";
   return msg;
+}
+
+/// Why the auto domain meshed the hull where the segments look meant to
+/// enclose a region (a user review: an outline that missed closing by 1e-9,
+/// or by its last segment, was meshed as its hull without a word): two
+/// segment ends that meet no other segment lie within 1e-6 of the extent of
+/// each other, or the segments form one open chain of three or more. Names
+/// the user's points; "" otherwise.
+std::string openOutlineWarning(
+  const Work& w, const Pslg& input, const Array<int>& pointOf, const PointFormat& format)
+{
+  Array<int> degree(w.points.size(), 0);
+  for (const Segment& s : w.segments)
+    ++degree[s[0]], ++degree[s[1]];
+  Array<int> ends;
+  std::size_t touched = 0;
+  for (std::size_t v = 0; v < degree.size(); ++v)
+  {
+    touched += degree[v] > 0;
+    if (degree[v] == 1)
+      ends.push_back(static_cast<int>(v));
+  }
+  const auto user = [&](int v) {
+    return std::find(pointOf.begin(), pointOf.end(), v) - pointOf.begin();
+  };
+  const auto name = [&](int v) {
+    return "point " + std::to_string(user(v)) + " at " + formatPoint(input.points[user(v)], format);
+  };
+  // The nearest two ends within reach, by cells of that size.
+  const Bounds b = boundsOf(w.points);
+  const double reach = 1e-6 * std::max(b.width(), b.height());
+  std::unordered_map<std::uint64_t, Array<int>> cells;
+  const auto cell = [&](const Point& p, int dx, int dy) {
+    const auto i = static_cast<std::int64_t>((p.x - b.lo.x) / reach) + dx; // at most 1e6 + 1
+    const auto j = static_cast<std::int64_t>((p.y - b.lo.y) / reach) + dy;
+    return static_cast<std::uint64_t>(i + 1) << 32 | static_cast<std::uint64_t>(j + 1);
+  };
+  int bestA = -1, bestB = -1;
+  double best = reach;
+  for (int v : ends)
+  {
+    const Point& p = w.points[v];
+    for (int dx = -1; reach > 0 && dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy)
+        if (const auto it = cells.find(cell(p, dx, dy)); it != cells.end())
+          for (int u : it->second)
+            if (const double d = std::sqrt(dist2(p, w.points[u])); d <= best)
+              best = d, bestA = u, bestB = v;
+    if (reach > 0)
+      cells[cell(p, 0, 0)].push_back(v);
+  }
+  const std::string hull = ": the segments enclose no region, so the auto domain meshes the "
+                           "convex hull of the points (the hull domain does so without this "
+                           "warning)";
+  if (bestA >= 0)
+  {
+    const Point &p = input.points[user(bestA)], &q = input.points[user(bestB)];
+    return "segment ends at " + name(bestA) + " and " + name(bestB) + " meet no other segment, " +
+      formatNumber(std::hypot(p.x - q.x, p.y - q.y)) + " apart" + hull +
+      "; a merge tolerance that large joins them (osm-mesh --merge-tolerance, the filter's "
+      "MergeTolerance)";
+  }
+  const bool oneChain = ends.size() == 2 && w.segments.size() >= 3 &&
+    w.segments.size() + 1 == touched &&
+    std::all_of(degree.begin(), degree.end(), [](int d) { return d <= 2; });
+  if (oneChain)
+    return "the segments form one open chain, from " + name(ends[0]) + " to " + name(ends[1]) +
+      hull + "; a segment joining the chain's ends would enclose the region inside it";
+  return "";
 }
 
 class Mesher
@@ -1263,6 +1333,10 @@ void Mesher::meshRounds(Work& w)
         formatPoint(input.holes[carve.seedsOnSegments.front()], options.pointFormat) +
         ": the region the direction +x from it enters (above, where a segment runs along +x) "
         "was removed; move the point into the hole to choose");
+    if (options.domain == Domain::Auto && domain == Domain::Hull && st.crossingsSplit == 0)
+      if (std::string open = openOutlineWarning(w, input, clean.pointOf, options.pointFormat);
+          !open.empty())
+        res.warnings.push_back(std::move(open));
     run.phase("domain", 0.96, 1.0); // the output arrays
     res.domain = domain;
     buildOutput(w, g, c, carve, overlay, edges, domain);
@@ -1346,7 +1420,8 @@ void Mesher::warnAboutRegionSeeds(const Carving& carve)
       ": their attributes are given to no triangle");
   if (overridden > 0)
     res.warnings.push_back(std::to_string(overridden) +
-      " region point(s) share their region with a later one, whose attribute and maximum area the "
+      " region point(s) share their region with a later one, whose attribute and maximum area "
+      "the "
       "region takes "
       "(as Triangle does), e.g. region " +
       std::to_string(firstOverridden) + " at " +

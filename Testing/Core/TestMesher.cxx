@@ -474,6 +474,41 @@ TEST(Mesher, AMeshBeyondTheMachinesMemoryIsRefusedAtOnce)
   EXPECT_LE(progress.furthest, 0.02);
 }
 
+TEST(Mesher, AnOutlineThatDoesNotCloseIsSaidToBeMeshedAsItsHull)
+{
+  // Found by a Triangle user's review: an L-shaped outline whose last point
+  // missed the first by 1e-9, or that lacked its last segment, was meshed
+  // as its convex hull (area 14, not 12) without a word.
+  Pslg gap;
+  gap.points = { { 0, 0 }, { 4, 0 }, { 4, 2 }, { 2, 2 }, { 2, 4 }, { 0, 4 }, { 0, 1e-9 } };
+  for (int i = 0; i < 6; ++i)
+    gap.segments.push_back({ i, i + 1 });
+  Result r = meshAndValidate(gap, "an outline 1e-9 short of closing");
+  EXPECT_NEAR(area(r.mesh), 16 - 4 * 0.5 * 1, 1e-6); // the hull: the notch's triangle filled
+  EXPECT_TRUE(mentions(r.warnings,
+    "segment ends at point 0 at (0, 0) and point 6 at (0, 1e-09) meet no other segment, 1e-09 "
+    "apart: the segments enclose no region, so the auto domain meshes the convex hull"));
+  Options joined;
+  joined.mergeTolerance = 1e-9;
+  r = meshAndValidate(gap, "the same outline, joined", joined);
+  EXPECT_NEAR(area(r.mesh), 12, 1e-6);
+  EXPECT_FALSE(mentions(r.warnings, "meet no other segment"));
+  Pslg open = gap;
+  open.points.pop_back();
+  open.segments.pop_back();
+  r = meshAndValidate(open, "an outline without its last segment");
+  EXPECT_TRUE(mentions(
+    r.warnings, "the segments form one open chain, from point 0 at (0, 0) to point 5 at (0, 4)"));
+  // Asked for the hull, or given segments that are not one chain: no word.
+  Options hull;
+  hull.domain = Domain::Hull;
+  EXPECT_TRUE(meshAndValidate(open, "the hull asked for", hull).warnings.empty());
+  open.segments.pop_back();
+  open.segments.erase(open.segments.begin());
+  open.segments.push_back({ 0, 5 });
+  EXPECT_FALSE(mentions(mesh(open).warnings, "open chain"));
+}
+
 TEST(Mesher, AnEmptyEnclosedDomainSaysWhy)
 {
   // Found by a user review: an open path in the enclosed domain gave an
