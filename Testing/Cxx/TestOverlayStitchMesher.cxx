@@ -21,6 +21,7 @@
 #include "vtkStringArray.h"
 
 #include "HugePages.h"
+#include "Validate.h"
 
 #include <algorithm>
 #include <cmath>
@@ -99,6 +100,55 @@ vtkSmartPointer<vtkPolyData> MakeInput(double z)
   input->SetPoints(points);
   input->SetLines(lines);
   return input;
+}
+
+/// The input's points (x, y) and segments (every line cell's consecutive points).
+osm::Pslg PslgOf(vtkPolyData* input)
+{
+  osm::Pslg pslg;
+  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    input->GetPoint(i, p);
+    pslg.points.push_back({ p[0], p[1] });
+  }
+  vtkCellArray* lines = input->GetLines();
+  vtkIdType n = 0;
+  const vtkIdType* ids = nullptr;
+  for (lines->InitTraversal(); lines->GetNextCell(n, ids);)
+  {
+    for (vtkIdType k = 0; k + 1 < n; ++k)
+    {
+      pslg.segments.push_back({ static_cast<int>(ids[k]), static_cast<int>(ids[k + 1]) });
+    }
+  }
+  return pslg;
+}
+
+osm::Array<osm::Point> PointsOf(vtkPolyData* mesh)
+{
+  osm::Array<osm::Point> points;
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    mesh->GetPoint(i, p);
+    points.push_back({ p[0], p[1] });
+  }
+  return points;
+}
+
+osm::Array<osm::Triangle> TrianglesOf(vtkPolyData* mesh)
+{
+  osm::Array<osm::Triangle> triangles;
+  vtkCellArray* polys = mesh->GetPolys();
+  vtkIdType n = 0;
+  const vtkIdType* ids = nullptr;
+  for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
+  {
+    triangles.push_back({ static_cast<int>(ids[0]), static_cast<int>(ids[1]),
+      n == 3 ? static_cast<int>(ids[2]) : -1 });
+  }
+  return triangles;
 }
 
 vtkDataArray* ArrayOf(vtkFieldData* data, const char* name, vtkIdType tuples)
@@ -181,6 +231,33 @@ int TestContract()
   {
     Check(count->GetTuple1(0) == static_cast<double>(triangles),
       "statistic OutputTriangles matches the mesh");
+  }
+
+  // The core's independent validator on the filter's output: the input's
+  // segments conform, every input point is a vertex, the domain is the
+  // square (the slit and wedge inside), and no angle exceeds the bound.
+  {
+    const osm::Pslg pslg = PslgOf(input);
+    osm::ValidationOptions options;
+    options.maxAngleDeg = 169.953;
+    options.boundary = osm::DomainBoundary::Segments;
+    options.checkHoles = true;
+    const osm::ValidationReport report =
+      osm::validate(pslg, PointsOf(mesh), TrianglesOf(mesh), options);
+    Check(report.ok,
+      "the mesh passes the validator" + (report.errors.empty() ? "" : ": " + report.errors[0]));
+    // The overlay: a triangulation of the points and the padded box (left
+    // coarse far from the input, so no angle is checked).
+    osm::Pslg points;
+    points.points = pslg.points;
+    options.checkConformity = false;
+    options.maxAngleDeg = 180.0;
+    options.boundary = osm::DomainBoundary::SegmentsOrBox;
+    const osm::ValidationReport overlayReport = osm::validate(points,
+      PointsOf(mesher->GetOverlayOutput()), TrianglesOf(mesher->GetOverlayOutput()), options);
+    Check(overlayReport.ok,
+      "the overlay passes the validator" +
+        (overlayReport.errors.empty() ? "" : ": " + overlayReport.errors[0]));
   }
 
   // Port 1, Edges.
