@@ -23,7 +23,12 @@ enum class DomainBoundary
 
 struct ValidationOptions
 {
-  double maxAngleDeg = 170.0; ///< every angle must be at most this
+  /// Every angle must be at most this. Angles are measured in double precision
+  /// (atan2 of a cross and a dot product): within about 1e-13 degrees, so an
+  /// angle closer than that to the bound may be judged either way (a review
+  /// found 455 of 200,000 triangles within 1e-13 rad of 170 misjudged). The
+  /// mesher's bound, 169.95 degrees at 30, lies far from such a margin.
+  double maxAngleDeg = 170.0;
   double maxEdgeLength = 0.0; ///< if > 0, every edge must be at most this long
   /// Require the triangles to cover the whole region enclosed by their boundary
   /// without overlap. Brute-force pairwise overlap check up to this many triangles.
@@ -72,7 +77,7 @@ struct ValidationReport
   std::size_t triangles = 0;
 };
 
-/// Checks, strictly and independently of the mesher: index validity, exact positive
+/// Checks, independently of the mesher: index validity, exact positive
 /// orientation, manifold and consistently oriented edges, a non-overlapping cover (vertex fans,
 /// boundary edges, vertices inside triangles, pairwise overlap for small meshes), no coincident
 /// mesh vertices, input points present, input segments conforming, the angle bound, the
