@@ -587,9 +587,9 @@ std::string crossingError(
 /// Why the auto domain meshed the hull where the segments look meant to
 /// enclose a region (a user review: an outline that missed closing by 1e-9,
 /// or by its last segment, was meshed as its hull without a word): two
-/// segment ends that meet no other segment lie within 1e-6 of the extent of
-/// each other, or the segments form one open chain of three or more. Names
-/// the user's points; "" otherwise.
+/// segment ends that meet no other segment (of at most 1,000 such) lie
+/// within 1e-6 of the extent of each other, or the segments form one open
+/// chain of three or more. Names the user's points; "" otherwise.
 std::string openOutlineWarning(
   const Work& w, const Pslg& input, const Array<int>& pointOf, const PointFormat& format)
 {
@@ -610,7 +610,11 @@ std::string openOutlineWarning(
   const auto name = [&](int v) {
     return "point " + std::to_string(user(v)) + " at " + formatPoint(input.points[user(v)], format);
   };
-  // The nearest two ends within reach, by cells of that size.
+  // The nearest two ends within reach, by cells of that size; not among
+  // more than 1,000 ends (a soup of segments, not an outline), where the
+  // search would cost a few percent of the mesh.
+  if (ends.size() > 1000)
+    return "";
   const Bounds b = boundsOf(w.points);
   const double reach = 1e-6 * std::max(b.width(), b.height());
   std::unordered_map<std::uint64_t, Array<int>> cells;
