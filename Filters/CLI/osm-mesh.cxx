@@ -11,6 +11,7 @@
 #include "vtkCellType.h"
 #include "vtkDataArray.h"
 #include "vtkDataObject.h"
+#include "vtkErrorCode.h"
 #include "vtkFieldData.h"
 #include "vtkIdTypeArray.h"
 #include "vtkLogger.h"
@@ -221,6 +222,14 @@ public:
   }
   void DisplayWarningText(const char* text) override { this->Warn(text); }
   void DisplayGenericWarningText(const char* text) override { this->Warn(text); }
+
+  bool HasErrors() const { return this->Errors > 0; }
+  /// Forgets the errors reported so far.
+  void Reset()
+  {
+    this->Errors = 0;
+    this->FirstError.clear();
+  }
 
   /// Fails with the first error, if any was reported since the last call,
   /// after prefix (e.g. "cannot read 'a.vtp': ").
@@ -1022,6 +1031,8 @@ void WriteMesh(const std::string& path, vtkPolyData* mesh, vtkPolyData* edges, v
     return;
   }
   vtkSmartPointer<vtkPolyData> clean = WithoutTimings(mesh);
+  unsigned long code = vtkErrorCode::NoError;
+  errno = 0;
   if (ext == ".vtp")
   {
     vtkNew<vtkXMLPolyDataWriter> writer;
@@ -1029,6 +1040,7 @@ void WriteMesh(const std::string& path, vtkPolyData* mesh, vtkPolyData* edges, v
     writer->SetFileName(path.c_str());
     writer->SetCompressionLevel(kZLibLevel);
     ok = writer->Write();
+    code = writer->GetErrorCode();
   }
   else if (ext == ".vtu")
   {
@@ -1037,6 +1049,7 @@ void WriteMesh(const std::string& path, vtkPolyData* mesh, vtkPolyData* edges, v
     writer->SetFileName(path.c_str());
     writer->SetCompressionLevel(kZLibLevel);
     ok = writer->Write();
+    code = writer->GetErrorCode();
   }
   else
   {
@@ -1047,11 +1060,22 @@ void WriteMesh(const std::string& path, vtkPolyData* mesh, vtkPolyData* edges, v
     // move the input's points.
     writer->SetFileTypeToBinary();
     ok = writer->Write();
+    code = writer->GetErrorCode();
   }
-  window->Check("cannot write '" + path + "': ", "the writer failed");
-  if (!ok)
+  if (!ok || code != vtkErrorCode::NoError || window->HasErrors())
   {
-    Fail("cannot write '" + path + "'");
+    // Say why in a line, not VTK's pipeline report, and leave no partial
+    // file (a review: a full disk left one, with that report).
+    const int error = errno;
+    window->Reset();
+    std::error_code ec;
+    const bool removed =
+      std::filesystem::is_regular_file(path, ec) && std::remove(path.c_str()) == 0;
+    const std::string why = code == vtkErrorCode::OutOfDiskSpaceError
+      ? std::string("out of disk space, or over the file size limit")
+      : error != 0 ? std::generic_category().message(error)
+                   : "the writer failed (VTK error code " + std::to_string(code) + ")";
+    Fail("cannot write '" + path + "': " + why + (removed ? " (the partial file is removed)" : ""));
   }
 }
 

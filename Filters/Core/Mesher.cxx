@@ -1761,6 +1761,7 @@ Result mesh(const Pslg& input, const Options& options, Progress* progress)
   {
     r.warnings.push_back(
       why + ", and making it again from a gap-ratio overlay failed: " + again.error);
+    r.stats.secondsTotal += again.stats.secondsTotal;
     return r;
   }
   again.stats.secondsTotal += r.stats.secondsTotal; // the first mesh's time counts too

@@ -146,7 +146,8 @@ struct Result
 
   TriMesh mesh; ///< the conforming triangulation
   /// The domain the mesh covers: Enclosed, Hull or Box (what Auto chose, and
-  /// Box where a hull without area fell back to it).
+  /// Box where a hull without area fell back to it); Auto where nothing was
+  /// meshed (no points, or an error).
   Domain domain = Domain::Auto;
   Array<VertexOrigin> vertexOrigin; ///< per mesh vertex
   Array<int> regionId;              ///< per mesh triangle

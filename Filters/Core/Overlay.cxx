@@ -27,6 +27,7 @@
 
 #include "Overlay.h"
 
+#include "Clean.h"
 #include "HugePages.h"
 #include "Predicates.h"
 #include "Series.h"
@@ -41,7 +42,7 @@
 #include <new>
 #include <string>
 
-#if defined(__unix__)
+#if defined(__unix__) || defined(__APPLE__)
 #include <unistd.h>
 #endif
 
@@ -99,6 +100,43 @@ double cgroupLimit(const char* path)
   return in >> limit && limit > 0 ? limit : 0.0; // "max" reads as no number
 }
 
+/// The tightest memory limit on this process's control group and its
+/// ancestors (named in /proc/self/cgroup: "0::path" for cgroup v2, whose
+/// files are memory.max; "N:...memory...:path" for v1's memory controller),
+/// or 0: none, or not Linux. A container, a systemd scope or a batch job
+/// limits the process there, not at the host's memory.
+double cgroupMemoryLimit()
+{
+  std::ifstream self("/proc/self/cgroup");
+  double tightest = 0;
+  std::string line;
+  while (std::getline(self, line))
+  {
+    const std::size_t a = line.find(':'), b = line.find(':', a + 1);
+    if (a == std::string::npos || b == std::string::npos)
+      continue;
+    const std::string controllers = "," + line.substr(a + 1, b - a - 1) + ",";
+    const bool v2 = controllers == ",,", v1 = controllers.find(",memory,") != std::string::npos;
+    if (!v2 && !v1)
+      continue;
+    const std::string root = v2 ? "/sys/fs/cgroup" : "/sys/fs/cgroup/memory";
+    const std::string file = v2 ? "/memory.max" : "/memory.limit_in_bytes";
+    // The group, then each ancestor up to the root of the hierarchy.
+    for (std::string path = line.substr(b + 1);;)
+    {
+      while (!path.empty() && path.back() == '/')
+        path.pop_back();
+      if (const double limit = cgroupLimit((root + path + file).c_str());
+          limit > 0 && (tightest == 0 || limit < tightest))
+        tightest = limit;
+      if (path.empty())
+        break;
+      path.erase(path.rfind('/') == std::string::npos ? 0 : path.rfind('/'));
+    }
+  }
+  return tightest;
+}
+
 } // namespace
 
 double physicalMemoryBytes()
@@ -109,11 +147,9 @@ double physicalMemoryBytes()
   if (pages > 0 && size > 0)
     memory = double(pages) * double(size);
 #endif
-  // In a container the limit is its control group's, not the host's memory.
-  for (const char* path :
-    { "/sys/fs/cgroup/memory.max", "/sys/fs/cgroup/memory/memory.limit_in_bytes" })
-    if (const double limit = cgroupLimit(path); limit > 0 && (memory == 0 || limit < memory))
-      memory = limit;
+  // v1's "no limit" is a huge number, above the physical memory: ignored.
+  if (const double limit = cgroupMemoryLimit(); limit > 0 && (memory == 0 || limit < memory))
+    memory = limit;
   return memory;
 }
 
@@ -264,6 +300,7 @@ private:
   SizeQueue<Item> queue;
   std::size_t inserted = 0;
   std::size_t hardCap = 0;
+  double capFromMemory = 0; ///< the memory that set hardCap, if it did
   double lastProgress = 0;
   /// With gapRatio, per mesh vertex: the squared distance to its nearest
   /// neighbour among the inserted vertices (Definition 2's r).
@@ -407,6 +444,19 @@ Overlay Refiner::refine()
   hardCap = steinerCap > 0 ? steinerCap
                            : (gapRatio ? 100000 : 1000) * input.size() + 1000000 +
       static_cast<std::size_t>(8 * forMaxEdge);
+  // Nor more than this machine's memory holds (2 triangles per point), so
+  // that a runaway ends in this error rather than the system killing the
+  // process: a review's Constrained_Sweden.poly at 34 degrees with the
+  // gap-ratio overlay had a cap of 2.6e8 points, about 50 GB.
+  if (const double memory = physicalMemoryBytes(); memory > 0 && steinerCap == 0)
+  {
+    const double holds = memory / (2 * kBytesPerTriangle);
+    if (holds < double(hardCap))
+    {
+      hardCap = static_cast<std::size_t>(holds);
+      capFromMemory = memory;
+    }
+  }
   enqueueIfNeeded(0);
   enqueueIfNeeded(1);
   while (!queue.empty())
@@ -488,12 +538,17 @@ void Refiner::countSteiner()
       " Steiner points; raise the cap or coarsen the input" };
   if (out.steinerPoints > hardCap)
     throw Stop{ "the overlay refinement exceeded " + std::to_string(hardCap) +
-      (beyondGuarantee ? " Steiner points without ending: with a minimum angle above 30 degrees "
-                         "it need not end; use 30 degrees or less"
-          : gapRatio   ? " Steiner points: the gap-ratio overlay grades slowly around input points "
-                         "much closer together than the rest, and these are too many; without it "
-                         "(the default overlay) such input needs far fewer"
-                       : " Steiner points, which suggests a numerical problem with this input") };
+      (capFromMemory > 0 ? " Steiner points, as many as this machine's memory (" +
+            roughNumber(capFromMemory / 1e9) + " GB) holds" +
+            (beyondGuarantee ? ": with a minimum angle above 30 degrees it need not end"
+                             : ": the input needs a larger machine, or a Steiner point cap")
+          : beyondGuarantee
+          ? " Steiner points without ending: with a minimum angle above 30 degrees "
+            "it need not end; use 30 degrees or less"
+          : gapRatio ? " Steiner points: the gap-ratio overlay grades slowly around input points "
+                       "much closer together than the rest, and these are too many; without it "
+                       "(the default overlay) such input needs far fewer"
+                     : " Steiner points, which suggests a numerical problem with this input") };
 }
 
 Point Refiner::steinerPoint(int t, const Point& circumcenter) const

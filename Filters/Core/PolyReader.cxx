@@ -344,9 +344,9 @@ private:
       setItem(nullptr, 0);
       if (!readItem(i))
       {
-        // A short line where an item was due is most often the next
-        // section's header: the count announced more items than follow.
-        if (lines_.tokens().size() < 3)
+        // A bare number where an item was due is most often the next
+        // section's count: the count announced more items than follow.
+        if (lines_.tokens().size() == 1)
           out_.error += " (line " + std::to_string(lines_.line()) + " is read as " + section + " " +
             std::to_string(i + 1) + " of the " + std::to_string(n) + " " + plural + " line " +
             std::to_string(headerLine) + " announces: does the file list fewer than it announces?)";

@@ -1198,8 +1198,11 @@ void checkDomainBoundary(
   }
 }
 
-/// Check 9b: no hole seed lies strictly inside a triangle.
-void checkHoles(const Pslg& input, const Mesh& m, Errors& errors)
+/// Check 9b: no hole seed lies in a (closed) triangle, unless it lies on an input segment
+/// within the rounding allowance plus reach: the mesher then removes the region on one side
+/// (with a warning), and the edges along the segment run between rounded points, so the seed
+/// may fall inside a kept triangle beside them.
+void checkHoles(const Pslg& input, const Mesh& m, double reach, Errors& errors)
 {
   if (input.holes.empty())
     return;
@@ -1213,17 +1216,30 @@ void checkHoles(const Pslg& input, const Mesh& m, Errors& errors)
       ids.push_back(t);
     }
   const BoxTree tree(boxes);
+  const auto n = static_cast<int>(input.points.size());
+  const auto onASegment = [&](const Point& h) {
+    for (const Segment& s : input.segments)
+      if (s[0] >= 0 && s[1] >= 0 && s[0] < n && s[1] < n)
+      {
+        const Point &a = input.points[s[0]], &b = input.points[s[1]];
+        if (segmentDistance(h, a, b) <= reach + roundingSlack(a, b, h))
+          return true;
+      }
+    return false;
+  };
   for (std::size_t k = 0; k < input.holes.size(); ++k)
   {
     const Point& h = input.holes[k];
+    std::optional<std::size_t> in;
     tree.query(boxOf(h, h), [&](int i) {
       const auto p = m.corners(ids[i]);
-      if (orientSign(p[0], p[1], h) > 0 && orientSign(p[1], p[2], h) > 0 &&
-        orientSign(p[2], p[0], h) > 0)
-        errors.add([&] {
-          return "hole seed " + std::to_string(k) + " " + text(h) + " lies in " + m.name(ids[i]);
-        });
+      if (!in && inClosedTriangle(p[0], p[1], p[2], h))
+        in = ids[i];
     });
+    if (in && !onASegment(h))
+      errors.add([&] {
+        return "hole seed " + std::to_string(k) + " " + text(h) + " lies in " + m.name(*in);
+      });
   }
 }
 
@@ -1345,7 +1361,7 @@ ValidationReport validate(const Pslg& input, const Array<Point>& vertices,
     checkDomainBoundary(
       input, m, options.boundary, options.snapTolerance + options.chainOffset, errors); // 9a
   if (options.checkHoles)
-    checkHoles(input, m, errors); // 9b
+    checkHoles(input, m, options.snapTolerance + options.chainOffset, errors); // 9b
   return report;
 }
 

@@ -58,10 +58,14 @@ struct ValidationOptions
   /// Also check that every input point is a mesh vertex. Off when holes may remove some.
   bool requireAllInputVertices = true;
   /// Check 9, the domain: every boundary edge of the mesh lies along what this allows
-  /// (within the rounding allowance, plus snapTolerance and chainOffset), so that no
-  /// triangle is missing inside the domain and none lies beyond it.
+  /// (within the rounding allowance, plus snapTolerance and chainOffset): a triangle
+  /// missing inside a region bounded by segments, or one beyond them, leaves such an edge.
+  /// A whole region missing, bounded by segments all round, is not seen (the hole seeds
+  /// below and the tests' areas are what see it).
   DomainBoundary boundary = DomainBoundary::Unchecked;
-  /// Check 9, the holes: no hole seed (Pslg::holes) lies strictly inside a triangle.
+  /// Check 9, the holes: no hole seed (Pslg::holes) lies in a closed triangle, unless it
+  /// lies on an input segment (within the rounding allowance, plus snapTolerance and
+  /// chainOffset), where the mesher removes one side and keeps the other.
   bool checkHoles = false;
   /// Keep at most this many messages in ValidationReport::errors (all are still counted).
   std::size_t maxErrorMessages = 50;

@@ -189,6 +189,18 @@ def group_options():
         validate(square, out("d-%s.node" % domain), "--allow-missing",
                  "--domain", "enclosed" if domain == "auto" else domain,
                  what="--domain %s mesh is valid, its boundary and hole too" % domain)
+    # The domain check can fail: the same square meshed without its hole
+    # (a review: a seed on the filling's diagonal passed).
+    with open(square) as f:
+        text = f.read()
+    filled = out("filled.poly")
+    with open(filled, "w") as f:
+        f.write(text.replace("1\n1 5 5\n", "0\n"))
+    mesh_ok(filled, "-o", out("filled.node"))
+    p = subprocess.run([ARGS.helper, "validate", square, out("filled.node"), "--allow-missing",
+                        "--domain", "enclosed"], capture_output=True, text=True, timeout=600)
+    check(p.returncode == 1 and "hole seed 0 (5, 5) lies in triangle" in p.stdout,
+          "the square meshed without its hole fails the domain check", p.stdout[-500:])
     check(abs(areas["enclosed"] - 96.0) < 1e-9, "--domain enclosed: area 100 - 4 (hole)",
           str(areas["enclosed"]))
     check(read_bytes(out("d-auto.node")) == read_bytes(out("d-enclosed.node")) and
@@ -733,6 +745,30 @@ def group_errors():
                  "unwritable .node output")
     expect_error([data("square_hole.poly"), "--svg", out("no/such/dir/x.svg")], 1, ["x.svg"],
                  "unwritable --svg output")
+    # A write that fails half way (a full disk, here a file size limit) says
+    # why in one line and leaves no partial file (a review: VTK's pipeline
+    # report, and a partial file left behind).
+    os.makedirs(out("dir.vtp"), exist_ok=True)
+    expect_error([data("square_hole.poly"), "-o", out("dir.vtp")], 1,
+                 ["cannot write '%s': Is a directory" % out("dir.vtp")], "a directory as output")
+    check(os.path.isdir(out("dir.vtp")), "the directory is left as it was")
+
+    def small_files():
+        import resource
+        import signal
+        signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+        resource.setrlimit(resource.RLIMIT_FSIZE, (200, 200))
+    full = ("File too large", "out of disk space, or over the file size limit")
+    for ext, whys in ((".vtp", full), (".vtu", full), (".vtk", full),
+                      (".node", ("error while writing",))):
+        target = out("limited" + ext)
+        p = subprocess.run([ARGS.cli, data("square_hole.poly"), "-o", target],
+                           capture_output=True, text=True, timeout=600, preexec_fn=small_files)
+        errors = [l for l in p.stderr.splitlines() if not l.startswith("osm-mesh: warning: ")]
+        check(p.returncode == 1 and len(errors) == 1 and any(w in errors[0] for w in whys),
+              "a %s write over the file size limit fails in one line" % ext, p.stderr[-400:])
+        left = [f for f in os.listdir(ARGS.out) if f.startswith("limited")]
+        check(not left, "no partial %s file is left" % ext, str(left))
 
     square = data("square_hole.poly")
     bad = [

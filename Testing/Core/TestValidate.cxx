@@ -589,8 +589,14 @@ TEST(Validate, AHoleSeedInsideATriangleFails)
   const auto r = osm::validate(input, input.points, filled, o);
   EXPECT_EQ(r.errorCount, 1u) << dump(r);
   EXPECT_TRUE(mentions(r, "hole seed 0 (1.25, 1.5) lies in triangle 9")) << dump(r);
-  input.holes = { { 1.5, 1.5 } }; // on the diagonal (4, 6)
+  // A seed on the filling's diagonal (4, 6), as at a hole's centre, is in
+  // it too (a review: it passed); one on a segment is not judged, as the
+  // mesher removes one side of it and keeps the other.
+  input.holes = { { 1.5, 1.5 } };
+  EXPECT_EQ(osm::validate(input, input.points, filled, o).errorCount, 1u);
+  input.holes = { { 1.5, 1 } };
   EXPECT_TRUE(osm::validate(input, input.points, filled, o).ok);
+  EXPECT_TRUE(osm::validate(input, input.points, ring, o).ok);
 }
 
 TEST(Validate, JitteredGridPasses)

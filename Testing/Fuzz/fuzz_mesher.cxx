@@ -71,13 +71,17 @@ void fail(const char* what, const std::string& detail)
     std::fprintf(stderr, "%zu\n", p->holes.size());
     for (std::size_t i = 0; i < p->holes.size(); ++i)
       std::fprintf(stderr, "%zu %.17g %.17g\n", i, p->holes[i].x, p->holes[i].y);
+    std::fprintf(stderr, "%zu\n", p->regions.size());
+    for (std::size_t i = 0; i < p->regions.size(); ++i)
+      std::fprintf(stderr, "%zu %.17g %.17g %.17g %.17g\n", i, p->regions[i].seed.x,
+        p->regions[i].seed.y, p->regions[i].attribute, p->regions[i].maxArea);
   }
   if (const osm::Options* o = currentOptions)
     std::fprintf(stderr,
       "options: domain %d, minAngleDeg %.17g, maxEdgeLength %.17g, mergeTolerance %.17g, "
-      "resolveCrossings %d, gapRatioOverlay %d, regionAreas %d\n",
+      "resolveCrossings %d, gapRatioOverlay %d, regionAreas %d, maxSteinerPoints %zu\n",
       static_cast<int>(o->domain), o->minAngleDeg, o->maxEdgeLength, o->mergeTolerance,
-      o->resolveCrossings, o->gapRatioOverlay, o->regionAreas);
+      o->resolveCrossings, o->gapRatioOverlay, o->regionAreas, o->maxSteinerPoints);
   std::abort();
 }
 
