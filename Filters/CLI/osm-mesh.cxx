@@ -1031,6 +1031,23 @@ void WriteMesh(const std::string& path, vtkPolyData* mesh, vtkPolyData* edges, v
     return;
   }
   vtkSmartPointer<vtkPolyData> clean = WithoutTimings(mesh);
+  // What is at the path now (through a symbolic link, the file it names):
+  // on a failure only a file this write made or changed is removed.
+  std::error_code ec;
+  std::filesystem::path target = path;
+  for (int links = 0; links < 40 && std::filesystem::is_symlink(target, ec); ++links)
+  {
+    const std::filesystem::path next = std::filesystem::read_symlink(target, ec);
+    target = next.is_absolute() ? next : target.parent_path() / next;
+  }
+  const auto stamp = [&target] {
+    std::error_code e;
+    const auto size = std::filesystem::file_size(target, e);
+    const auto time = std::filesystem::last_write_time(target, e);
+    return std::make_pair(e ? std::uintmax_t(-1) : size, time);
+  };
+  const bool existed = !ec && std::filesystem::exists(target, ec);
+  const auto before = stamp();
   unsigned long code = vtkErrorCode::NoError;
   errno = 0;
   if (ext == ".vtp")
@@ -1068,9 +1085,8 @@ void WriteMesh(const std::string& path, vtkPolyData* mesh, vtkPolyData* edges, v
     // file (a review: a full disk left one, with that report).
     const int error = errno;
     window->Reset();
-    std::error_code ec;
-    const bool removed =
-      std::filesystem::is_regular_file(path, ec) && std::remove(path.c_str()) == 0;
+    const bool removed = !target.empty() && std::filesystem::is_regular_file(target, ec) &&
+      (!existed || stamp() != before) && std::filesystem::remove(target, ec);
     const std::string why = code == vtkErrorCode::OutOfDiskSpaceError
       ? std::string("out of disk space, or over the file size limit")
       : error != 0 ? std::generic_category().message(error)

@@ -587,15 +587,28 @@ std::string crossingError(
 /// Why the auto domain meshed the hull where the segments look meant to
 /// enclose a region (a user review: an outline that missed closing by 1e-9,
 /// or by its last segment, was meshed as its hull without a word): two
-/// segment ends that meet no other segment (of at most 1,000 such) lie
-/// within 1e-6 of the extent of each other, or the segments form one open
-/// chain of three or more. Names the user's points; "" otherwise.
+/// segment ends that meet no other segment (of at most 1,000 such), joined
+/// by a path of two or more segments, lie within 1e-6 of the extent of each
+/// other, so that joining them closes a loop; or the segments form one open
+/// chain of three or more that is not straight. Names the user's points; ""
+/// otherwise.
 std::string openOutlineWarning(
   const Work& w, const Pslg& input, const Array<int>& pointOf, const PointFormat& format)
 {
-  Array<int> degree(w.points.size(), 0);
+  // Degrees, and the segments' connected components (union-find).
+  Array<int> degree(w.points.size(), 0), parent(w.points.size());
+  for (std::size_t v = 0; v < parent.size(); ++v)
+    parent[v] = static_cast<int>(v);
+  const auto root = [&](int v) {
+    while (parent[v] != v)
+      v = parent[v] = parent[parent[v]];
+    return v;
+  };
   for (const Segment& s : w.segments)
+  {
     ++degree[s[0]], ++degree[s[1]];
+    parent[root(s[0])] = root(s[1]);
+  }
   Array<int> ends;
   std::size_t touched = 0;
   for (std::size_t v = 0; v < degree.size(); ++v)
@@ -610,11 +623,18 @@ std::string openOutlineWarning(
   const auto name = [&](int v) {
     return "point " + std::to_string(user(v)) + " at " + formatPoint(input.points[user(v)], format);
   };
-  // The nearest two ends within reach, by cells of that size; not among
-  // more than 1,000 ends (a soup of segments, not an outline), where the
-  // search would cost a few percent of the mesh.
+  const std::string hull = ": the segments enclose no region, so the auto domain meshes the "
+                           "convex hull of the points (the hull domain does so without this "
+                           "warning)";
+  // A soup of segments, not an outline: the search would cost a few percent.
   if (ends.size() > 1000)
     return "";
+  // The nearest two ends within reach that a path of two or more segments
+  // joins (not the two ends of one segment), by cells of that size.
+  Array<int> adjacentEnd(w.points.size(), -1); // an isolated segment's other end
+  for (const Segment& s : w.segments)
+    if (degree[s[0]] == 1 && degree[s[1]] == 1)
+      adjacentEnd[s[0]] = s[1], adjacentEnd[s[1]] = s[0];
   const Bounds b = boundsOf(w.points);
   const double reach = 1e-6 * std::max(b.width(), b.height());
   std::unordered_map<std::uint64_t, Array<int>> cells;
@@ -632,28 +652,33 @@ std::string openOutlineWarning(
       for (int dy = -1; dy <= 1; ++dy)
         if (const auto it = cells.find(cell(p, dx, dy)); it != cells.end())
           for (int u : it->second)
-            if (const double d = std::sqrt(dist2(p, w.points[u])); d <= best)
+            if (const double d = std::sqrt(dist2(p, w.points[u]));
+                d <= best && root(u) == root(v) && adjacentEnd[u] != v)
               best = d, bestA = u, bestB = v;
     if (reach > 0)
       cells[cell(p, 0, 0)].push_back(v);
   }
-  const std::string hull = ": the segments enclose no region, so the auto domain meshes the "
-                           "convex hull of the points (the hull domain does so without this "
-                           "warning)";
   if (bestA >= 0)
   {
     const Point &p = input.points[user(bestA)], &q = input.points[user(bestB)];
     return "segment ends at " + name(bestA) + " and " + name(bestB) + " meet no other segment, " +
-      formatNumber(std::hypot(p.x - q.x, p.y - q.y)) + " apart" + hull +
+      formatNumber(std::hypot(p.x - q.x, p.y - q.y)) +
+      " apart, and joined they would close a loop" + hull +
       "; a merge tolerance that large joins them (osm-mesh --merge-tolerance, the filter's "
       "MergeTolerance)";
   }
   const bool oneChain = ends.size() == 2 && w.segments.size() >= 3 &&
     w.segments.size() + 1 == touched &&
     std::all_of(degree.begin(), degree.end(), [](int d) { return d <= 2; });
-  if (oneChain)
+  const auto straight = [&] {
+    const Point &a = w.points[ends[0]], &c = w.points[ends[1]];
+    return std::all_of(w.segments.begin(), w.segments.end(), [&](const Segment& s) {
+      return orient2d(a, c, w.points[s[0]]) == 0 && orient2d(a, c, w.points[s[1]]) == 0;
+    });
+  };
+  if (oneChain && !straight())
     return "the segments form one open chain, from " + name(ends[0]) + " to " + name(ends[1]) +
-      hull + "; a segment joining the chain's ends would enclose the region inside it";
+      hull;
   return "";
 }
 

@@ -448,7 +448,8 @@ Overlay Refiner::refine()
   // that a runaway ends in this error rather than the system killing the
   // process: a review's Constrained_Sweden.poly at 34 degrees with the
   // gap-ratio overlay had a cap of 2.6e8 points, about 50 GB.
-  if (const double memory = physicalMemoryBytes(); memory > 0 && steinerCap == 0)
+  // A caller's cap too: no cap makes a run fit.
+  if (const double memory = physicalMemoryBytes(); memory > 0)
   {
     const double holds = memory / (2 * kBytesPerTriangle);
     if (holds < double(hardCap))
@@ -541,7 +542,7 @@ void Refiner::countSteiner()
       (capFromMemory > 0 ? " Steiner points, as many as this machine's memory (" +
             roughNumber(capFromMemory / 1e9) + " GB) holds" +
             (beyondGuarantee ? ": with a minimum angle above 30 degrees it need not end"
-                             : ": the input needs a larger machine, or a Steiner point cap")
+                             : ": the input needs a larger machine")
           : beyondGuarantee
           ? " Steiner points without ending: with a minimum angle above 30 degrees "
             "it need not end; use 30 degrees or less"

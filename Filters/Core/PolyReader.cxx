@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -344,9 +345,10 @@ private:
       setItem(nullptr, 0);
       if (!readItem(i))
       {
-        // A bare number where an item was due is most often the next
-        // section's count: the count announced more items than follow.
-        if (lines_.tokens().size() == 1)
+        // A line like the next section's header where an item was due (a
+        // bare count; after the vertices, "<#segments> [<markers>]") most
+        // often is that header: the count announced more items than follow.
+        if (lines_.tokens().size() <= (std::strcmp(section, "vertex") == 0 ? 2u : 1u))
           out_.error += " (line " + std::to_string(lines_.line()) + " is read as " + section + " " +
             std::to_string(i + 1) + " of the " + std::to_string(n) + " " + plural + " line " +
             std::to_string(headerLine) + " announces: does the file list fewer than it announces?)";

@@ -769,6 +769,16 @@ def group_errors():
               "a %s write over the file size limit fails in one line" % ext, p.stderr[-400:])
         left = [f for f in os.listdir(ARGS.out) if f.startswith("limited")]
         check(not left, "no partial %s file is left" % ext, str(left))
+    # Through a symbolic link the partial file is the link's target: it goes,
+    # the link stays (a review: the link went, the partial target stayed).
+    for name in ("linked.vtp", "linked-target.vtp"):
+        if os.path.lexists(out(name)):
+            os.remove(out(name))
+    os.symlink("linked-target.vtp", out("linked.vtp"))
+    subprocess.run([ARGS.cli, data("square_hole.poly"), "-o", out("linked.vtp")],
+                   capture_output=True, text=True, timeout=600, preexec_fn=small_files)
+    check(os.path.islink(out("linked.vtp")) and not os.path.exists(out("linked-target.vtp")),
+          "a write through a link that fails removes the partial target, not the link")
 
     square = data("square_hole.poly")
     bad = [

@@ -487,7 +487,8 @@ TEST(Mesher, AnOutlineThatDoesNotCloseIsSaidToBeMeshedAsItsHull)
   EXPECT_NEAR(area(r.mesh), 16 - 4 * 0.5 * 1, 1e-6); // the hull: the notch's triangle filled
   EXPECT_TRUE(mentions(r.warnings,
     "segment ends at point 0 at (0, 0) and point 6 at (0, 1e-09) meet no other segment, 1e-09 "
-    "apart: the segments enclose no region, so the auto domain meshes the convex hull"));
+    "apart, and joined they would close a loop: the segments enclose no region, so the auto "
+    "domain meshes the convex hull"));
   Options joined;
   joined.mergeTolerance = 1e-9;
   r = meshAndValidate(gap, "the same outline, joined", joined);
@@ -507,6 +508,23 @@ TEST(Mesher, AnOutlineThatDoesNotCloseIsSaidToBeMeshedAsItsHull)
   open.segments.erase(open.segments.begin());
   open.segments.push_back({ 0, 5 });
   EXPECT_FALSE(mentions(mesh(open).warnings, "open chain"));
+  // A review of the warning: no word where joining the ends closes nothing.
+  // A short segment among points: its two ends are near, but one segment.
+  Pslg isolated;
+  isolated.points = { { 0, 0 }, { 1000, 0 }, { 1000, 1000 }, { 0, 1000 }, { 500, 500 },
+    { 500.0005, 500 } };
+  isolated.segments = { { 4, 5 } };
+  EXPECT_FALSE(mentions(mesh(isolated).warnings, "meet no other segment"));
+  // Two pieces of an L apart at its corner: joined, they make a path.
+  Pslg pieces;
+  pieces.points = { { 0, 0 }, { 4, 0 }, { 4, 2 }, { 4, 2 + 1e-7 }, { 2, 2 }, { 2, 4 } };
+  pieces.segments = { { 0, 1 }, { 1, 2 }, { 3, 4 }, { 4, 5 } };
+  EXPECT_FALSE(mentions(mesh(pieces).warnings, "meet no other segment"));
+  // A straight chain encloses nothing whatever closes it.
+  Pslg line;
+  line.points = { { 0, 0 }, { 1, 0 }, { 2, 0 }, { 3, 0 }, { 1, 5 } };
+  line.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 } };
+  EXPECT_FALSE(mentions(mesh(line).warnings, "open chain"));
 }
 
 TEST(Mesher, AnEmptyEnclosedDomainSaysWhy)

@@ -235,13 +235,13 @@ int TestContract()
 
   // The core's independent validator on the filter's output: the input's
   // segments conform, every input point is a vertex, the domain is the
-  // square (the slit and wedge inside), and no angle exceeds the bound.
+  // square (the slit and wedge inside; no holes), and no angle exceeds the
+  // bound.
   {
     const osm::Pslg pslg = PslgOf(input);
     osm::ValidationOptions options;
     options.maxAngleDeg = 169.953;
     options.boundary = osm::DomainBoundary::Segments;
-    options.checkHoles = true;
     const osm::ValidationReport report =
       osm::validate(pslg, PointsOf(mesh), TrianglesOf(mesh), options);
     Check(report.ok,
