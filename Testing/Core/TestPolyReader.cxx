@@ -428,8 +428,8 @@ TEST(PolyReaderErrors, ACountAboveTheItemsListedSaysSo)
                            "4\n4 4 1\n2\n1 0.5 0.5\n0\n"),
     "t.poly:13", "(line 13 is read as hole 2 of the 2 holes line 11 announces"));
   // After the vertices the next header is "<#segments> [<markers>]".
-  EXPECT_TRUE(failsAt(poly("5 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n4 1\n1 1 2 0\n"),
-    "t.poly:6", "(line 6 is read as vertex 5 of the 5 vertices line 1 announces"));
+  EXPECT_TRUE(failsAt(poly("5 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n4 1\n1 1 2 0\n"), "t.poly:6",
+    "(line 6 is read as vertex 5 of the 5 vertices line 1 announces"));
   // A malformed segment in a section of the right length gets no such hint.
   const PolyFile bad = poly("4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n2 0\n1 1 2\n2 2\n0\n");
   EXPECT_TRUE(failsAt(bad, "t.poly:8", "missing second endpoint of segment 2"));
