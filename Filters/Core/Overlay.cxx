@@ -141,16 +141,21 @@ double cgroupMemoryLimit()
 
 double physicalMemoryBytes()
 {
-  double memory = 0;
+  // Read once per process: the files cost more than meshing a small input
+  // (every call read /proc/self/cgroup and the limits along its path).
+  static const double once = [] {
+    double memory = 0;
 #if defined(__unix__) || defined(__APPLE__)
-  const long pages = sysconf(_SC_PHYS_PAGES), size = sysconf(_SC_PAGE_SIZE);
-  if (pages > 0 && size > 0)
-    memory = double(pages) * double(size);
+    const long pages = sysconf(_SC_PHYS_PAGES), size = sysconf(_SC_PAGE_SIZE);
+    if (pages > 0 && size > 0)
+      memory = double(pages) * double(size);
 #endif
-  // v1's "no limit" is a huge number, above the physical memory: ignored.
-  if (const double limit = cgroupMemoryLimit(); limit > 0 && (memory == 0 || limit < memory))
-    memory = limit;
-  return memory;
+    // v1's "no limit" is a huge number, above the physical memory: ignored.
+    if (const double limit = cgroupMemoryLimit(); limit > 0 && (memory == 0 || limit < memory))
+      memory = limit;
+    return memory;
+  }();
+  return once;
 }
 
 namespace

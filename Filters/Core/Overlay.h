@@ -66,7 +66,7 @@ constexpr std::size_t kBoxCorners = 4;
 /// The machine's physical memory in bytes, or its control group's limit
 /// where lower (a container), or 0 where unknown: a size bound asking for a
 /// mesh beyond it is refused before refining. Not the memory free now, which
-/// changes from run to run.
+/// changes from run to run. Read at the first call, once per process.
 double physicalMemoryBytes();
 
 /// What a process holding a mesh takes per output triangle, at most, as
