@@ -2311,6 +2311,31 @@ TEST(Domain, ChainsBendWhereSegmentsTheDomainCutsJoinedTheirCrossing)
   }
 }
 
+TEST(Domain, ASegmentWhoseEndJoinedAPointOutsideTheDomainBoundsItFromThere)
+{
+  // Found by CI's fuzzer run: at a merge tolerance of 3.19, point 7 (3, 9)
+  // joins point 2 (0, 8), which lies outside the enclosed domain, and
+  // segment 7-14 then runs from (0, 8), bent through points 1 and 11. The
+  // validator, given point 7 where it was, saw boundary edge (4, 6)-(5, 2)
+  // 3.5 off every segment; given it where cleaning merged it, none.
+  Pslg p;
+  p.points = { { 0, 14 }, { 4, 6 }, { 0, 8 }, { 15, 5 }, { 15, 4 }, { 8, 5 }, { 2, 0 }, { 3, 9 },
+    { 4, 5 }, { 31.857142857142858, 1 }, { 13, 5 }, { 5, 2 }, { 8, 3 }, { 9, 14 }, { 12, 0 },
+    { 3, 10 } };
+  p.segments = { { 14, 12 }, { 0, 0 }, { 7, 14 }, { 15, 9 }, { 5, 0 }, { 14, 4 }, { 6, 0 },
+    { 8, 15 } };
+  p.holes = { { 2, 0 }, { 3, 9 } };
+  Options o;
+  o.domain = Domain::Enclosed;
+  o.minAngleDeg = 21;
+  o.mergeTolerance = 3.1857142857142859;
+  const Result r = meshAndValidate(p, "fuzzer's input", o);
+  ASSERT_TRUE(r.ok) << r.error;
+  EXPECT_EQ(r.inputVertex[7], -1); // with point 2, outside the domain
+  EXPECT_EQ(r.inputVertex[11], r.inputVertex[12]);
+  EXPECT_GT(r.mesh.triangles.size(), 0u);
+}
+
 TEST(Mesher, AnglesThatRoundingPutsAboveTheBoundAreWarnedAbout)
 {
   // Found by a review: eight lines nearly through one point, missing it by

@@ -2,6 +2,7 @@
 // independent validator as the oracle. Coordinates come mostly from a small
 // integer grid so duplicates, collinear points, T-junctions, overlaps and
 // crossings are frequent; some are raw doubles to reach extreme values.
+#include "Clean.h"
 #include "Geometry.h"
 #include "Interpolation.h"
 #include "Mesher.h"
@@ -320,19 +321,20 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (const std::string& w : r.warnings)
     dom.checkHoles =
       dom.checkHoles && w.find("seed(s) now lie on the other side") == std::string::npos;
-  // Each point where it was merged to (a merge moves a segment's end, and
-  // snapping then bends it, each by up to the tolerance).
+  // Each point where merging put it, whether the domain kept it or not (a
+  // merge moves a segment's end, and snapping then bends it by up to the
+  // tolerance): cleaning's own merge, so that a segment whose end joined a
+  // point outside the domain runs where the mesher saw it (CI's run found a
+  // boundary edge 3.5 off a segment whose end had joined one 3.2 away).
   osm::Pslg whole = p;
+  osm::CleanPslg merged;
+  osm::Statistics ignored;
+  std::vector<std::string> ignoredWarnings;
+  if (!osm::cleanPslg(p, merged, ignored, ignoredWarnings, o.mergeTolerance).empty())
+    fail("input refused by cleaning but meshed", "");
   for (std::size_t i = 0; i < p.points.size(); ++i)
-    if (r.inputVertex[i] >= 0)
-      whole.points[i] = r.mesh.vertices[r.inputVertex[i]];
-  // Not with a merge tolerance: joins, snaps and later rounds' crossings
-  // bend segments by several tolerances (CI's run found a boundary 4 off a
-  // segment at 3.2), more than the check allows; meshAndValidate's inputs
-  // check those cases with their own margins.
-  const osm::ValidationReport d = o.mergeTolerance > 0
-    ? osm::ValidationReport{}
-    : osm::validate(whole, r.mesh.vertices, r.mesh.triangles, dom);
+    whole.points[i] = merged.points[merged.pointOf[i]];
+  const osm::ValidationReport d = osm::validate(whole, r.mesh.vertices, r.mesh.triangles, dom);
   if (!d.ok)
     fail("mesh beyond or short of its domain", d.errors.empty() ? "" : d.errors.front());
   checkInterpolation(p, r, o, extent);
