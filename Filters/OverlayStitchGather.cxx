@@ -3,6 +3,7 @@
 #include "OverlayStitchGather.h"
 
 #include "OverlayStitchArrays.h"
+#include "OverlayStitchUnstructured.h"
 
 #include "vtkAbstractArray.h"
 #include "vtkCellArray.h"
@@ -22,6 +23,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkUnsignedCharArray.h"
+#include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
 #include <array>
@@ -569,9 +571,13 @@ vtkSmartPointer<vtkPolyData> WithBlockIds(
   const auto index = static_cast<vtkIdType>(flatIndex);
   const vtkIdType cells = block->GetNumberOfCells(), points = block->GetNumberOfPoints();
   copy->GetCellData()->AddArray(IdArray(OverlayStitchBlockIdName, cells, index));
-  copy->GetCellData()->AddArray(IdArray(OverlayStitchSourceCellIdName, cells, -1));
   copy->GetPointData()->AddArray(IdArray(OverlayStitchBlockIdName, points, index));
-  copy->GetPointData()->AddArray(IdArray(OverlayStitchSourcePointIdName, points, -1));
+  // A block read from an unstructured grid carries its grid's ids already.
+  if (!block->GetCellData()->GetArray(OverlayStitchSourceCellIdName))
+  {
+    copy->GetCellData()->AddArray(IdArray(OverlayStitchSourceCellIdName, cells, -1));
+    copy->GetPointData()->AddArray(IdArray(OverlayStitchSourcePointIdName, points, -1));
+  }
   return WithoutGhostCells(copy, true, "block " + std::to_string(flatIndex), notes);
 }
 
@@ -1040,6 +1046,17 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombineBlocks(vtkCompositeDataSet* inp
     if (auto* polyData = vtkPolyData::SafeDownCast(leaf))
     {
       blocks.emplace_back(WithBlockIds(polyData, it->GetCurrentFlatIndex(), notes));
+    }
+    else if (auto* grid = vtkUnstructuredGrid::SafeDownCast(leaf))
+    {
+      const std::string where = "block " + std::to_string(it->GetCurrentFlatIndex());
+      std::string ignoredCells;
+      auto read = OverlayStitchPolyDataOf(grid, true, where, ignoredCells);
+      if (!ignoredCells.empty())
+      {
+        notes.push_back({ {}, ignoredCells });
+      }
+      blocks.emplace_back(WithBlockIds(read, it->GetCurrentFlatIndex(), notes));
     }
     else if (vtkDataSet* other = vtkDataSet::SafeDownCast(leaf))
     {

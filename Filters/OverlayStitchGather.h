@@ -164,8 +164,11 @@ void OverlayStitchToSourceIds(vtkDataSetAttributes* in, const char* sourceIdName
 /// copies). A single polydata leaf is
 /// returned as a shallow copy, so that it meshes as it would on its own. Each
 /// block's cells and points get the arrays above.
-/// `ignored` receives the class names of non-empty leaves that are not
-/// polydata, one entry per leaf; `summary`, if given, what the combination did.
+/// Unstructured grid leaves are read as polydata (OverlayStitchUnstructured.h),
+/// their cells keeping their ids in the grid, and the cells of other types
+/// they leave out noted in the summary. `ignored` receives the class names of
+/// non-empty leaves of other types, one entry per leaf; `summary`, if given,
+/// what the combination did.
 vtkSmartPointer<vtkPolyData> OverlayStitchCombineBlocks(vtkCompositeDataSet* input,
   std::vector<std::string>& ignored, OverlayStitchGatherSummary* summary = nullptr);
 

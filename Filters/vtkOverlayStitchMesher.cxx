@@ -27,6 +27,7 @@
 #include "vtkStringArray.h"
 #include "vtkTypeInt32Array.h"
 #include "vtkUnsignedCharArray.h"
+#include "vtkUnstructuredGrid.h"
 #include "vtkVersionMacros.h"
 
 #include "Geometry.h"
@@ -36,6 +37,7 @@
 #include "OverlayStitchCellData.h"
 #include "OverlayStitchGather.h"
 #include "OverlayStitchPointData.h"
+#include "OverlayStitchUnstructured.h"
 #include "Plane.h"
 #include "Pslg.h"
 #include "Statistics.h"
@@ -910,6 +912,7 @@ int vtkOverlayStitchMesher::FillInputPortInformation(int port, vtkInformation* i
     // seams, and under MPI the ranks would gather once per local block, a
     // different number of times each, and hang.
     info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+    info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkUnstructuredGrid");
     info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkCompositeDataSet");
     return 1;
   }
@@ -928,6 +931,19 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   } progressTextReset{ this };
   vtkDataObject* inputObject = vtkDataObject::GetData(inputVector[0], 0);
   vtkSmartPointer<vtkPolyData> local = vtkPolyData::SafeDownCast(inputObject);
+  if (auto* grid = vtkUnstructuredGrid::SafeDownCast(inputObject))
+  {
+    // Its cells' ids, as polydata renumbers them, only in a serial run: a
+    // rank's piece of a single dataset has ids of its own (as for ghost cells).
+    vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+    std::string ignoredCells;
+    local = OverlayStitchPolyDataOf(
+      grid, !controller || controller->GetNumberOfProcesses() <= 1, std::string(), ignoredCells);
+    if (!ignoredCells.empty())
+    {
+      vtkWarningMacro(<< ignoredCells);
+    }
+  }
   vtkPolyData* mesh = vtkPolyData::GetData(outputVector, 0);
   vtkPolyData* edges = vtkPolyData::GetData(outputVector, 1);
   vtkPolyData* overlay = vtkPolyData::GetData(outputVector, 2);
@@ -938,7 +954,7 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   }
   // Outputs stay empty unless meshing succeeds.
   ClearOutputs({ mesh, edges, overlay });
-  // A composite input is one graph: this rank's polydata blocks, combined.
+  // A composite input is one graph: this rank's polydata (and grid) blocks, combined.
   OverlayStitchGatherSummary combination;
   if (auto* composite = vtkCompositeDataSet::SafeDownCast(inputObject))
   {
@@ -947,9 +963,11 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
     if (!ignoredBlocks.empty())
     {
       vtkWarningMacro(<< "Ignored " << ignoredBlocks.size()
-                      << " block(s) of the composite input that are not polydata (the first: "
+                      << " block(s) of the composite input that are neither polydata nor "
+                         "unstructured grids (the first: "
                       << ignoredBlocks.front()
-                      << "); segments come from the polydata blocks, which are meshed together.");
+                      << "); segments come from the polydata and unstructured grid blocks, "
+                         "which are meshed together.");
     }
   }
   // Parallel runs (pvbatch, pvserver): every rank takes part in gathering the whole input

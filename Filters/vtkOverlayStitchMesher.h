@@ -5,7 +5,10 @@
  * @brief   triangulate planar line data so that no angle exceeds about 170 degrees
  *
  * vtkOverlayStitchMesher meshes a Planar Straight Line Graph given as
- * vtkPolyData with Overlay Stitch Meshing (OSM). Line and polyline cells
+ * vtkPolyData (or vtkUnstructuredGrid, whose vertex, line, polyline,
+ * triangle, quad, pixel, polygon and strip cells are read as polydata's, and
+ * whose other cells are ignored with a warning naming the first) with
+ * Overlay Stitch Meshing (OSM). Line and polyline cells
  * become segments between consecutive points, polygon cells contribute their
  * closed edge loops, vertex cells (and every other input point) are meshed as
  * isolated points. Triangle strips, empty cells, lines with fewer than 2
@@ -255,7 +258,9 @@ public:
    * files: a subsegment's nonzero marker, else 1 on the mesh's boundary
    * (holes' included), else 0.
    * Where segments of several cells overlap, a subsegment takes the first
-   * cell's. For a composite input, InputCellId is the cell's id in its block
+   * cell's. For an unstructured grid, InputCellId is the cell's id in the
+   * grid (in a serial run; in a parallel one, in polydata's numbering of the
+   * rank's piece). For a composite input, InputCellId is the cell's id in its block
    * and "InputBlockId" the block's flat index (-1 where no cell is named);
    * in a parallel run where a rank holds only part of a block, the id in
    * that part.

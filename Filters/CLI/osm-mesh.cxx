@@ -27,8 +27,10 @@
 #include "vtkSmartPointer.h"
 #include "vtkTrianglePolyReader.h"
 #include "vtkUnstructuredGrid.h"
+#include "vtkUnstructuredGridReader.h"
 #include "vtkXMLPolyDataReader.h"
 #include "vtkXMLPolyDataWriter.h"
+#include "vtkXMLUnstructuredGridReader.h"
 #include "vtkXMLUnstructuredGridWriter.h"
 
 #include "Clean.h" // formatNumber
@@ -75,8 +77,9 @@ triangulation in which no angle exceeds 180 - theta2 degrees (about 170 at
 the default --min-angle 30).
 
 INPUT                  Triangle .poly (holes honoured) or .node file, or
-                       .vtp / .vtk polydata (lines and polylines are
-                       segments, polygons give their edges, every point kept)
+                       .vtp / .vtu / .vtk polydata or unstructured grid
+                       (lines and polylines are segments, polygons give
+                       their edges, every point kept; volumes ignored)
   -o, --output FILE    write the mesh, in the format of FILE's extension:
                        .vtp, .vtu (VTK XML, zlib level 1), .vtk (legacy VTK),
                        or .node (Triangle: FILE.node, .ele and .edge side by
@@ -663,9 +666,10 @@ bool ParseArguments(int argc, char* argv[], Arguments& args)
   }
 
   const std::string in = Extension(args.input);
-  if (in != ".poly" && in != ".node" && in != ".vtp" && in != ".vtk")
+  if (in != ".poly" && in != ".node" && in != ".vtp" && in != ".vtu" && in != ".vtk")
   {
-    Fail("cannot read '" + args.input + "': the input must end in .poly, .node, .vtp or .vtk", 2);
+    Fail("cannot read '" + args.input + "': the input must end in .poly, .node, .vtp, .vtu or .vtk",
+      2);
   }
   if (!args.output.empty())
   {
@@ -704,13 +708,25 @@ vtkSmartPointer<vtkAlgorithm> MakeReader(const std::string& path)
     reader->SetFileName(path.c_str());
     return reader;
   }
+  if (ext == ".vtu")
+  {
+    auto reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+    reader->SetFileName(path.c_str());
+    return reader;
+  }
   auto reader = vtkSmartPointer<vtkPolyDataReader>::New();
   reader->SetFileName(path.c_str());
-  if (!reader->IsFilePolyData())
+  if (reader->IsFilePolyData())
   {
-    Fail("'" + path + "' is not a legacy VTK polydata file");
+    return reader;
   }
-  return reader;
+  auto grid = vtkSmartPointer<vtkUnstructuredGridReader>::New();
+  grid->SetFileName(path.c_str());
+  if (!grid->IsFileUnstructuredGrid())
+  {
+    Fail("'" + path + "' is not a legacy VTK polydata or unstructured grid file");
+  }
+  return grid;
 }
 
 /// A copy of the mesh without the run's timings (field data "Seconds*"), so

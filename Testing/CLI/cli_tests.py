@@ -609,6 +609,44 @@ def group_inputs():
                     [[0, 1, 2, 3, 0], [4, 5]])
     mesh_ok(vtp, "-o", out("slit.vtu"))
     validate(vtp, out("slit.vtu"), what="a .vtp polyline input meshed, every point kept, valid")
+    # The same as an unstructured grid, .vtu and legacy .vtk, with a tetra
+    # (ignored, said) and the slit first: the same mesh.
+    slit = stats_of(vtp, "-o", out("slit-again.vtp"))
+    grid_points = [(0, 0, 0), (3, 0, 0), (3, 2, 0), (0, 2, 0), (0.5, 1, 0), (2.5, 1.2, 0)]
+    grid_cells = [(10, [0, 1, 2, 3]), (3, [4, 5]), (4, [0, 1, 2, 3, 0])]  # tetra, line, polyline
+    vtu = out("slit.vtu")
+    with open(vtu, "w") as f:
+        f.write('<?xml version="1.0"?>\n<VTKFile type="UnstructuredGrid" version="0.1" '
+                'byte_order="LittleEndian">\n<UnstructuredGrid>\n<Piece NumberOfPoints="%d" '
+                'NumberOfCells="%d">\n<Points><DataArray type="Float64" NumberOfComponents="3" '
+                'format="ascii">%s</DataArray></Points>\n<Cells>\n'
+                '<DataArray type="Int64" Name="connectivity" format="ascii">%s</DataArray>\n'
+                '<DataArray type="Int64" Name="offsets" format="ascii">%s</DataArray>\n'
+                '<DataArray type="UInt8" Name="types" format="ascii">%s</DataArray>\n'
+                '</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n' % (
+                    len(grid_points), len(grid_cells),
+                    " ".join("%r %r %r" % p for p in grid_points),
+                    " ".join(str(i) for _, c in grid_cells for i in c),
+                    " ".join(str(sum(len(c) for _, c in grid_cells[:k + 1]))
+                             for k in range(len(grid_cells))),
+                    " ".join(str(t) for t, _ in grid_cells)))
+    legacy = out("slit-grid.vtk")
+    with open(legacy, "w") as f:
+        f.write("# vtk DataFile Version 3.0\nslit\nASCII\nDATASET UNSTRUCTURED_GRID\n"
+                "POINTS %d double\n" % len(grid_points))
+        f.write("".join("%r %r %r\n" % p for p in grid_points))
+        f.write("CELLS %d %d\n" % (len(grid_cells), sum(len(c) + 1 for _, c in grid_cells)))
+        f.write("".join("%d %s\n" % (len(c), " ".join(map(str, c))) for _, c in grid_cells))
+        f.write("CELL_TYPES %d\n%s\n" % (len(grid_cells), "\n".join(str(t) for t, _ in grid_cells)))
+    for grid in (vtu, legacy):
+        p = mesh_ok(grid, "-o", out("slit-grid.vtp"), "--stats")
+        s = json.loads(p.stdout) if p.returncode == 0 else {}
+        check(all(s.get(k) == slit.get(k) and k in s
+                  for k in ("InputPoints", "InputSegments", "OutputVertices", "OutputTriangles")) and
+              "Ignored 1 cell(s) of the unstructured grid, the first cell 0 (vtkTetra)" in p.stderr,
+              "an unstructured grid input (%s) meshes as the same lines in polydata, its tetra "
+              "ignored with a warning" % os.path.basename(grid),
+              str(s)[:300] + p.stderr[-300:])
     # .vtp polygons with cell data: the mesh's triangles take their polygon's
     # (PassCellData; its values are checked by vtk.OverlayStitchMesher.Input.polygon-data).
     land = out("land.vtp")
@@ -734,7 +772,8 @@ def group_errors():
           "NaN coordinate: the mesher's message names the NaN", p.stderr)
     not_polydata = write("grid.vtk", "# vtk DataFile Version 3.0\ngrid\nASCII\n"
                          "DATASET STRUCTURED_POINTS\nDIMENSIONS 2 2 1\nORIGIN 0 0 0\nSPACING 1 1 1\n")
-    expect_error([not_polydata], 1, ["not a legacy VTK polydata"], ".vtk that is not polydata")
+    expect_error([not_polydata], 1, ["not a legacy VTK polydata or unstructured grid"],
+                 ".vtk that is neither polydata nor an unstructured grid")
     garbage = write("garbage.vtp", "this is not XML\n")
     expect_error([garbage], 1, ["cannot read '%s': " % garbage, "XML"], "malformed .vtp")
     # An unwritable output.
@@ -808,7 +847,7 @@ def group_errors():
         ([square, "--no-resolve=yes"], ["--no-resolve takes no value"]),
         ([square, "--region-areas=1"], ["--region-areas takes no value"]),
         ([square, "-o", out("mesh.txt")], ["mesh.txt", ".vtp, .vtu, .vtk or .node"]),
-        ([out("input.txt")], ["input.txt", ".poly, .node, .vtp or .vtk"]),
+        ([out("input.txt")], ["input.txt", ".poly, .node, .vtp, .vtu or .vtk"]),
     ]
     for args, fragments in bad:
         expect_error(args, 2, fragments, "bad command line " + " ".join(

@@ -20,12 +20,14 @@
 //   point-data       the input's point data carried to the mesh (InterpolatePointData)
 //   cell-data        the input's cell data carried to the Edges output (PassCellData)
 //   polygon-data     the input polygons' cell data carried to the Mesh (PassCellData)
+//   unstructured-grid a grid's lines and polygons meshed, its other cells ignored, its ids kept
 // Every check prints "ok" or "FAILED"; the exit status is the number of failures (capped).
 #include "MesherTestUtils.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
+#include "vtkCellType.h"
 #include "vtkCommand.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
@@ -43,6 +45,7 @@
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkStringArray.h"
+#include "vtkStructuredGrid.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
@@ -728,15 +731,16 @@ int TestComposite()
 {
   // One graph in three blocks: the outer square, an inner square (a hole by
   // the seed in the inner block's field data) and a slit; and a block that is
-  // not polydata.
+  // neither polydata nor an unstructured grid (TestUnstructuredGrid meshes those).
   auto outer = Square();
   auto inner =
     MakeLines({ { 3, 3, 0 }, { 7, 3, 0 }, { 7, 7, 0 }, { 3, 7, 0 } }, { { 0, 1, 2, 3, 0 } });
   AddFieldHoles(inner, { { 5, 5, 0 } });
   auto slit = MakeLines({ { 0, 0, 0 }, { 2, 1, 0 } }, { { 0, 1 } });
-  vtkNew<vtkUnstructuredGrid> grid;
+  vtkNew<vtkStructuredGrid> grid;
   vtkNew<vtkPoints> gridPoints;
   gridPoints->InsertNextPoint(50, 50, 0);
+  grid->SetDimensions(1, 1, 1);
   grid->SetPoints(gridPoints);
   vtkNew<vtkMultiBlockDataSet> nested;
   nested->SetNumberOfBlocks(2);
@@ -767,8 +771,9 @@ int TestComposite()
   Check(HasVertex(mesh, 2, 1) && HasVertex(mesh, 0, 0),
     "the slit block's segment is in the mesh, its shared corner merged");
   Check(osmtest::LargestAngle(mesh) <= 170.0, "no angle above 170 degrees");
-  Check(h.Messages->HasWarning({ "Ignored 1 block", "not polydata", "vtkUnstructuredGrid" }),
-    "a warning names the block that is not polydata");
+  Check(h.Messages->HasWarning(
+          { "Ignored 1 block", "neither polydata nor unstructured grids", "vtkStructuredGrid" }),
+    "a warning names the block that is neither polydata nor an unstructured grid");
   Check(Statistic(mesh, "InputSegments") == 9,
     "9 input segments (4 + 4 + 1; the shared corner point is one point)");
 
@@ -806,7 +811,8 @@ int TestComposite()
   Check(none.NoError() && osmtest::AllOutputsEmpty(none.Mesher),
     "a multiblock without polydata gives empty outputs and no error");
   none.Messages->Print("grid only");
-  Check(none.Messages->HasWarning({ "not polydata" }), "with the warning about the block");
+  Check(none.Messages->HasWarning({ "neither polydata nor unstructured grids" }),
+    "with the warning about the block");
 
   // A block whose cell names a point it does not have: the error gives the
   // block's own ids (combined, the id would only be -1), and nothing is meshed.
@@ -2457,6 +2463,138 @@ int MeasurePolygons(int n)
 
 } // namespace
 
+/// An unstructured grid of mixed cells: a tetra (ignored), a vertex, a pixel
+/// (the hole's square, corners in axis order), the outer square as a
+/// polyline, a line (a slit) and a quadratic edge (ignored). Its cell data
+/// "Material" is 10 times the cell id.
+vtkSmartPointer<vtkUnstructuredGrid> MixedGrid()
+{
+  vtkNew<vtkPoints> points;
+  for (const Xyz& p : std::vector<Xyz>{ { 0, 0, 0 }, { 10, 0, 0 }, { 10, 10, 0 }, { 0, 10, 0 },
+         { 3, 3, 0 }, { 7, 3, 0 }, { 3, 7, 0 }, { 7, 7, 0 }, { 5, 1, 0 }, { 2, 1, 0 } })
+  {
+    points->InsertNextPoint(p.data());
+  }
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  grid->SetPoints(points);
+  const std::vector<std::pair<int, std::vector<vtkIdType>>> cells = { { VTK_TETRA, { 0, 1, 2, 3 } },
+    { VTK_VERTEX, { 8 } }, { VTK_PIXEL, { 4, 5, 6, 7 } }, { VTK_POLY_LINE, { 0, 1, 2, 3, 0 } },
+    { VTK_LINE, { 0, 9 } }, { VTK_QUADRATIC_EDGE, { 1, 2, 9 } } };
+  vtkNew<vtkIntArray> material;
+  material->SetName("Material");
+  for (const auto& [type, ids] : cells)
+  {
+    material->InsertNextValue(10 * static_cast<int>(grid->GetNumberOfCells()));
+    grid->InsertNextCell(type, static_cast<vtkIdType>(ids.size()), ids.data());
+  }
+  grid->GetCellData()->AddArray(material);
+  vtkNew<vtkDoubleArray> holes;
+  holes->SetName("HolePoints");
+  holes->SetNumberOfComponents(3);
+  holes->InsertNextTuple3(5, 5, 0);
+  grid->GetFieldData()->AddArray(holes);
+  return grid;
+}
+
+/// Per input edge of edges: whether its InputCellId is the cell it lies on in
+/// MixedGrid and its Material that cell's; returns the number wrong (or -1
+/// without the arrays) and counts the input edges in inputEdges.
+vtkIdType WrongGridCells(vtkPolyData* edges, vtkIdType& inputEdges)
+{
+  vtkCellData* cd = edges->GetCellData();
+  auto* ids = vtkIdTypeArray::SafeDownCast(cd->GetArray("InputCellId"));
+  auto* material = vtkIntArray::SafeDownCast(cd->GetArray("Material"));
+  vtkDataArray* isInput = cd->GetArray("Input");
+  if (!ids || !material || !isInput)
+  {
+    return -1;
+  }
+  vtkIdType wrong = 0;
+  inputEdges = 0;
+  for (vtkIdType e = 0; e < edges->GetNumberOfCells(); ++e)
+  {
+    if (isInput->GetComponent(e, 0) == 0)
+    {
+      continue;
+    }
+    ++inputEdges;
+    double a[3], b[3];
+    vtkIdList* pts = edges->GetCell(e)->GetPointIds();
+    edges->GetPoint(pts->GetId(0), a);
+    edges->GetPoint(pts->GetId(1), b);
+    const auto inHoleSquare = [](const double* p) {
+      return p[0] >= 3 && p[0] <= 7 && p[1] >= 3 && p[1] <= 7;
+    };
+    const bool onSlit = std::fabs(a[0] - 2 * a[1]) < 1e-12 && std::fabs(b[0] - 2 * b[1]) < 1e-12 &&
+      std::max(a[0], b[0]) <= 2;
+    const vtkIdType cell = inHoleSquare(a) && inHoleSquare(b) ? 2 : onSlit ? 4 : 3;
+    wrong += ids->GetValue(e) != cell || material->GetValue(e) != 10 * cell;
+  }
+  return wrong;
+}
+
+int TestUnstructuredGrid()
+{
+  auto grid = MixedGrid();
+  Harness h;
+  vtkPolyData* mesh = h.Run(grid, "unstructured grid");
+  const double area = osmtest::TotalArea(mesh);
+  Check(h.NoError() && std::fabs(area - 84.0) < 1e-9,
+    "an unstructured grid is meshed: its pixel is the hole's square, cut by the field data seed "
+    "(area " +
+      Num(area) + ", expected 84)");
+  Check(CentroidsInside(mesh, 3, 7) == 0 && HasVertex(mesh, 2, 1) && HasVertex(mesh, 5, 1),
+    "no triangle in the hole; the slit's end and the vertex cell's point are mesh vertices");
+  Check(Statistic(mesh, "InputSegments") == 9, "9 segments: 4 + 4 (the pixel's loop) + 1");
+  Check(h.Messages->HasWarning({ "Ignored 2 cell(s) of the unstructured grid, the first cell 0 "
+                                 "(vtkTetra)" }),
+    "one warning counts the tetra and the quadratic edge and names the first");
+  vtkIdType inputEdges = 0;
+  const vtkIdType wrong = WrongGridCells(h.Mesher->GetEdgesOutput(), inputEdges);
+  Check(wrong == 0 && inputEdges >= 9,
+    "the Edges' InputCellId is the grid's own cell id (polydata renumbers them) and its cell "
+    "data comes with it (" +
+      std::to_string(wrong) + " wrong of " + std::to_string(inputEdges) + ")");
+
+  // The same cells as polydata give the same mesh.
+  auto lines = MakeLines({ { 0, 0, 0 }, { 10, 0, 0 }, { 10, 10, 0 }, { 0, 10, 0 }, { 3, 3, 0 },
+                           { 7, 3, 0 }, { 3, 7, 0 }, { 7, 7, 0 }, { 5, 1, 0 }, { 2, 1, 0 } },
+    { { 4, 5, 7, 6, 4 }, { 0, 1, 2, 3, 0 }, { 0, 9 } });
+  AddFieldHoles(lines, { { 5, 5, 0 } });
+  Harness p;
+  vtkPolyData* reference = p.Run(lines, "the grid's cells as polydata lines");
+  Check(PointSet(reference) == PointSet(mesh) &&
+      reference->GetNumberOfPolys() == mesh->GetNumberOfPolys(),
+    "the same points and triangle count as the same cells given as polydata");
+
+  // A grid block of a multiblock: its cells keep their ids in the grid too.
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  blocks->SetNumberOfBlocks(2);
+  blocks->SetBlock(0, MakeLines({ { 12, 0, 0 }, { 14, 2, 0 } }, { { 0, 1 } }));
+  blocks->SetBlock(1, grid);
+  Harness b;
+  b.Mesher->SetDomainToHull();
+  mesh = b.Run(blocks, "a multiblock with a grid block");
+  Check(b.NoError() && mesh->GetNumberOfPolys() > 0 &&
+      b.Messages->HasWarning({ "Ignored 2 cell(s) of the unstructured grid block 2, the first "
+                               "cell 0 (vtkTetra)" }) &&
+      !b.Messages->HasWarning({ "neither polydata nor unstructured grids" }),
+    "a grid block is meshed with the others, its ignored cells named by block");
+  vtkPolyData* edges = b.Mesher->GetEdgesOutput();
+  auto* block = vtkIdTypeArray::SafeDownCast(edges->GetCellData()->GetArray("InputBlockId"));
+  auto* ids = vtkIdTypeArray::SafeDownCast(edges->GetCellData()->GetArray("InputCellId"));
+  vtkIdType gridEdges = 0, wrongBlock = 0;
+  for (vtkIdType e = 0; block && ids && e < edges->GetNumberOfCells(); ++e)
+  {
+    gridEdges += block->GetValue(e) == 2;
+    wrongBlock += block->GetValue(e) == 1 && ids->GetValue(e) != 0;
+  }
+  Check(block && ids && gridEdges >= 9 && wrongBlock == 0,
+    "InputBlockId 2 on the grid block's edges, the line block's cell 0 on its own (" +
+      std::to_string(gridEdges) + " grid edges, " + std::to_string(wrongBlock) + " wrong)");
+  return 0;
+}
+
 int main(int argc, char* argv[])
 {
   const std::string test = argc > 1 ? argv[1] : "";
@@ -2481,6 +2619,7 @@ int main(int argc, char* argv[])
     { "point-data", TestPointData },
     { "cell-data", TestCellData },
     { "polygon-data", TestPolygonData },
+    { "unstructured-grid", TestUnstructuredGrid },
   };
   const auto it = tests.find(test);
   if (it == tests.end())

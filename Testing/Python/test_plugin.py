@@ -119,6 +119,19 @@ def main(plugin, data_dir):
     check(math.isclose(area, 100 + spike, rel_tol=1e-6),
           "the mesh covers the enclosed region (area %.6f, expected %.6f)" % (area, 100 + spike))
 
+    # An unstructured grid of the same lines (Filters > Clean to Grid) is
+    # accepted, by the menu's input domain too, and meshes the same.
+    grid = CleantoGrid(Input=reader)
+    domain = mesher.GetProperty("Input").SMProperty.FindDomain("vtkSMDataTypeDomain")
+    check(fetch(grid, 0).IsA("vtkUnstructuredGrid") and domain is not None and
+          domain.IsInDomain(grid.SMProxy, 0) == 1,
+          "the filter's input domain accepts an unstructured grid")
+    from_grid = fetch(OverlayStitchMesher(Input=grid), 0)
+    check(from_grid.GetNumberOfCells() == triangles and
+          math.isclose(triangle_area(from_grid), area, rel_tol=1e-12),
+          "an unstructured grid of the same lines meshes the same (%d triangles, expected %d)" %
+          (from_grid.GetNumberOfCells(), triangles))
+
     # Port 1: the classified edges.
     edges = fetch(mesher, 1)
     print("Edges: %d lines" % edges.GetNumberOfCells())

@@ -1,0 +1,126 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026, the Overlay Stitch Meshing authors
+#include "OverlayStitchUnstructured.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkCellType.h"
+#include "vtkCellTypes.h"
+#include "vtkFieldData.h"
+#include "vtkIdList.h"
+#include "vtkIdTypeArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkUnstructuredGrid.h"
+
+#include "OverlayStitchGather.h"
+
+#include <array>
+#include <numeric>
+#include <utility>
+
+namespace
+{
+/// The polydata kind a cell type is read as: 0 verts, 1 lines, 2 polys,
+/// 3 strips (vtkPolyData's cell order), or -1 for none.
+int KindOf(int type)
+{
+  switch (type)
+  {
+    case VTK_VERTEX:
+    case VTK_POLY_VERTEX:
+      return 0;
+    case VTK_LINE:
+    case VTK_POLY_LINE:
+      return 1;
+    case VTK_TRIANGLE:
+    case VTK_QUAD:
+    case VTK_PIXEL:
+    case VTK_POLYGON:
+      return 2;
+    case VTK_TRIANGLE_STRIP:
+      return 3;
+    default:
+      return -1;
+  }
+}
+
+vtkSmartPointer<vtkIdTypeArray> Ids(const char* name, const vtkIdType* first, vtkIdType n)
+{
+  auto ids = vtkSmartPointer<vtkIdTypeArray>::New();
+  ids->SetName(name);
+  ids->SetNumberOfTuples(n);
+  std::copy(first, first + n, ids->GetPointer(0));
+  return ids;
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkPolyData> OverlayStitchPolyDataOf(
+  vtkUnstructuredGrid* grid, bool sourceIds, const std::string& where, std::string& ignored)
+{
+  ignored.clear();
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->SetPoints(grid->GetPoints());
+  out->GetPointData()->ShallowCopy(grid->GetPointData());
+  out->GetFieldData()->ShallowCopy(grid->GetFieldData());
+
+  std::array<vtkNew<vtkCellArray>, 4> cells;
+  std::array<std::vector<vtkIdType>, 4> order; // grid's cell ids, per kind
+  vtkIdType left = 0, first = -1;
+  int firstType = VTK_EMPTY_CELL;
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
+  {
+    const int type = grid->GetCellType(c);
+    const int kind = KindOf(type);
+    if (kind < 0)
+    {
+      first = left++ == 0 ? c : first;
+      firstType = first == c ? type : firstType;
+      continue;
+    }
+    grid->GetCellPoints(c, ids);
+    if (type == VTK_PIXEL && ids->GetNumberOfIds() == 4)
+    {
+      std::swap(*ids->GetPointer(2), *ids->GetPointer(3)); // pixels order their corners by axis
+    }
+    cells[kind]->InsertNextCell(ids);
+    order[kind].push_back(c);
+  }
+  out->SetVerts(cells[0]);
+  out->SetLines(cells[1]);
+  out->SetPolys(cells[2]);
+  out->SetStrips(cells[3]);
+
+  vtkNew<vtkIdList> from;
+  for (const std::vector<vtkIdType>& kind : order)
+  {
+    for (const vtkIdType c : kind)
+    {
+      from->InsertNextId(c);
+    }
+  }
+  vtkCellData* to = out->GetCellData();
+  to->CopyGlobalIdsOn();
+  to->CopyAllocate(grid->GetCellData(), from->GetNumberOfIds());
+  to->CopyData(grid->GetCellData(), from, vtkIdType(0));
+  if (sourceIds)
+  {
+    to->AddArray(Ids(OverlayStitchSourceCellIdName, from->GetPointer(0), from->GetNumberOfIds()));
+    std::vector<vtkIdType> points(static_cast<std::size_t>(grid->GetNumberOfPoints()));
+    std::iota(points.begin(), points.end(), vtkIdType(0));
+    out->GetPointData()->AddArray(
+      Ids(OverlayStitchSourcePointIdName, points.data(), static_cast<vtkIdType>(points.size())));
+  }
+  if (left > 0)
+  {
+    ignored = "Ignored " + std::to_string(left) + " cell(s) of the unstructured grid" +
+      (where.empty() ? "" : " " + where) + ", the first cell " + std::to_string(first) + " (" +
+      vtkCellTypes::GetClassNameFromTypeId(firstType) +
+      "): segments come from line, polyline and polygon cells (triangles, quads, pixels), "
+      "points from every cell and point.";
+  }
+  return out;
+}

@@ -1,0 +1,31 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026, the Overlay Stitch Meshing authors
+//
+// Internal to OverlayStitch::Filters (not installed): an unstructured grid
+// read as the polydata the filter meshes (a .vtu, or the blocks an Exodus or
+// Gmsh reader gives, hold their lines and polygons in one).
+#ifndef OverlayStitchUnstructured_h
+#define OverlayStitchUnstructured_h
+
+#include "vtkSmartPointer.h"
+
+#include <string>
+
+class vtkPolyData;
+class vtkUnstructuredGrid;
+
+/// grid as polydata: its points with their point data and its field data (the
+/// hole seeds), and each cell of a type polydata holds as the cell of its
+/// kind, with its cell data. Vertex and polyvertex cells become verts; line
+/// and polyline cells lines; triangle, quad, pixel (its corners put in loop
+/// order) and polygon cells polys; triangle strips strips. vtkPolyData
+/// numbers its cells by kind, so with sourceIds each cell carries its id in
+/// grid and each point its own (the arrays of OverlayStitchGather.h), which
+/// the outputs' InputCellId and the messages then give. Cells of other types
+/// (volumes, quadratic and higher-order cells, empty cells) are left out:
+/// ignored then names how many, the first by its id (in `where`, e.g. "block
+/// 3", or the input when empty) and its type; else it is cleared.
+vtkSmartPointer<vtkPolyData> OverlayStitchPolyDataOf(
+  vtkUnstructuredGrid* grid, bool sourceIds, const std::string& where, std::string& ignored);
+
+#endif
