@@ -595,20 +595,9 @@ std::string crossingError(
 std::string openOutlineWarning(
   const Work& w, const Pslg& input, const Array<int>& pointOf, const PointFormat& format)
 {
-  // Degrees, and the segments' connected components (union-find).
-  Array<int> degree(w.points.size(), 0), parent(w.points.size());
-  for (std::size_t v = 0; v < parent.size(); ++v)
-    parent[v] = static_cast<int>(v);
-  const auto root = [&](int v) {
-    while (parent[v] != v)
-      v = parent[v] = parent[parent[v]];
-    return v;
-  };
+  Array<int> degree(w.points.size(), 0);
   for (const Segment& s : w.segments)
-  {
     ++degree[s[0]], ++degree[s[1]];
-    parent[root(s[0])] = root(s[1]);
-  }
   Array<int> ends;
   std::size_t touched = 0;
   for (std::size_t v = 0; v < degree.size(); ++v)
@@ -629,6 +618,17 @@ std::string openOutlineWarning(
   // A soup of segments, not an outline: the search would cost a few percent.
   if (ends.size() > 1000)
     return "";
+  // The segments' connected components (union-find).
+  Array<int> parent(w.points.size());
+  for (std::size_t v = 0; v < parent.size(); ++v)
+    parent[v] = static_cast<int>(v);
+  const auto root = [&](int v) {
+    while (parent[v] != v)
+      v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for (const Segment& s : w.segments)
+    parent[root(s[0])] = root(s[1]);
   // The nearest two ends within reach that a path of two or more segments
   // joins (not the two ends of one segment), by cells of that size.
   Array<int> adjacentEnd(w.points.size(), -1); // an isolated segment's other end
