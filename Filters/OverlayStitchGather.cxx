@@ -255,7 +255,9 @@ struct InvalidCells
         (*bad >= 0 ? "point " + std::to_string(*bad) : std::string("a point that does not exist")) +
         ", but " +
         (PieceName ? std::string("that ") + PieceName
-                   : std::string(!inBlock.empty() ? "that block" : "the input")) +
+                   : std::string(source->GetCellData()->GetArray(OverlayStitchBlockIdName)
+                         ? "that block"
+                         : "the input")) +
         " has " + std::to_string(points) + " point(s)";
     }
   }
@@ -1039,6 +1041,7 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombineBlocks(vtkCompositeDataSet* inp
   ignored.clear();
   std::vector<OverlayStitchNote> notes;
   std::vector<vtkSmartPointer<vtkDataObject>> blocks;
+  vtkIdType gridCellsIgnored = 0;
   auto it = vtkSmartPointer<vtkCompositeDataIterator>::Take(input->NewIterator());
   for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
   {
@@ -1050,12 +1053,9 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombineBlocks(vtkCompositeDataSet* inp
     else if (auto* grid = vtkUnstructuredGrid::SafeDownCast(leaf))
     {
       const std::string where = "block " + std::to_string(it->GetCurrentFlatIndex());
-      std::string ignoredCells;
-      auto read = OverlayStitchPolyDataOf(grid, true, where, ignoredCells);
-      if (!ignoredCells.empty())
-      {
-        notes.push_back({ {}, ignoredCells });
-      }
+      vtkIdType ignoredCells = 0;
+      auto read = OverlayStitchPolyDataOf(grid, true, where, notes, ignoredCells);
+      gridCellsIgnored += ignoredCells;
       blocks.emplace_back(WithBlockIds(read, it->GetCurrentFlatIndex(), notes));
     }
     else if (vtkDataSet* other = vtkDataSet::SafeDownCast(leaf))
@@ -1072,6 +1072,7 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombineBlocks(vtkCompositeDataSet* inp
     if (summary)
     {
       summary->NotCarried = notes;
+      summary->IgnoredGridCells = gridCellsIgnored;
     }
     return only;
   }
@@ -1079,6 +1080,7 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombineBlocks(vtkCompositeDataSet* inp
   if (summary)
   {
     summary->NotCarried.insert(summary->NotCarried.begin(), notes.begin(), notes.end());
+    summary->IgnoredGridCells = gridCellsIgnored;
   }
   return combined;
 }

@@ -14,11 +14,12 @@
 #include "vtkPolyData.h"
 #include "vtkUnstructuredGrid.h"
 
-#include "OverlayStitchGather.h"
+#include "OverlayStitchArrays.h"
 
 #include <array>
 #include <numeric>
 #include <utility>
+#include <vector>
 
 namespace
 {
@@ -57,10 +58,9 @@ vtkSmartPointer<vtkIdTypeArray> Ids(const char* name, const vtkIdType* first, vt
 } // namespace
 
 //------------------------------------------------------------------------------
-vtkSmartPointer<vtkPolyData> OverlayStitchPolyDataOf(
-  vtkUnstructuredGrid* grid, bool sourceIds, const std::string& where, std::string& ignored)
+vtkSmartPointer<vtkPolyData> OverlayStitchPolyDataOf(vtkUnstructuredGrid* grid, bool sourceIds,
+  const std::string& where, std::vector<OverlayStitchNote>& notes, vtkIdType& ignoredCells)
 {
-  ignored.clear();
   auto out = vtkSmartPointer<vtkPolyData>::New();
   out->SetPoints(grid->GetPoints());
   out->GetPointData()->ShallowCopy(grid->GetPointData());
@@ -102,10 +102,26 @@ vtkSmartPointer<vtkPolyData> OverlayStitchPolyDataOf(
       from->InsertNextId(c);
     }
   }
+  // Arrays shorter than the cells cannot be reordered: left out, as the
+  // filter leaves out polydata's.
+  vtkNew<vtkCellData> whole;
+  whole->ShallowCopy(grid->GetCellData());
+  for (int a = whole->GetNumberOfArrays() - 1; a >= 0; --a)
+  {
+    vtkAbstractArray* array = whole->GetAbstractArray(a);
+    if (array->GetNumberOfTuples() < grid->GetNumberOfCells())
+    {
+      const char* name = array->GetName() ? array->GetName() : "(unnamed)";
+      notes.push_back({ { "cell", name },
+        OverlayStitchShortArrayNote(
+          "cell", name, array->GetNumberOfTuples(), grid->GetNumberOfCells(), where) });
+      whole->RemoveArray(a);
+    }
+  }
   vtkCellData* to = out->GetCellData();
   to->CopyGlobalIdsOn();
-  to->CopyAllocate(grid->GetCellData(), from->GetNumberOfIds());
-  to->CopyData(grid->GetCellData(), from, vtkIdType(0));
+  to->CopyAllocate(whole, from->GetNumberOfIds());
+  to->CopyData(whole, from, vtkIdType(0));
   if (sourceIds)
   {
     to->AddArray(Ids(OverlayStitchSourceCellIdName, from->GetPointer(0), from->GetNumberOfIds()));
@@ -114,13 +130,16 @@ vtkSmartPointer<vtkPolyData> OverlayStitchPolyDataOf(
     out->GetPointData()->AddArray(
       Ids(OverlayStitchSourcePointIdName, points.data(), static_cast<vtkIdType>(points.size())));
   }
+  ignoredCells = left;
   if (left > 0)
   {
-    ignored = "Ignored " + std::to_string(left) + " cell(s) of the unstructured grid" +
-      (where.empty() ? "" : " " + where) + ", the first cell " + std::to_string(first) + " (" +
-      vtkCellTypes::GetClassNameFromTypeId(firstType) +
-      "): segments come from line, polyline and polygon cells (triangles, quads, pixels), "
-      "points from every cell and point.";
+    notes.push_back({ {},
+      "Ignored " + std::to_string(left) + " cell(s) of " +
+        (where.empty() ? "the unstructured grid" : where + " (an unstructured grid)") +
+        ", the first cell " + std::to_string(first) + " (" +
+        vtkCellTypes::GetClassNameFromTypeId(firstType) +
+        "): segments come from line, polyline and polygon cells (triangles, quads, pixels), "
+        "points from every cell and point." });
   }
   return out;
 }

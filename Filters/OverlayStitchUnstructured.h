@@ -8,8 +8,12 @@
 #define OverlayStitchUnstructured_h
 
 #include "vtkSmartPointer.h"
+#include "vtkType.h" // for vtkIdType
+
+#include "OverlayStitchGather.h" // for OverlayStitchNote
 
 #include <string>
+#include <vector>
 
 class vtkPolyData;
 class vtkUnstructuredGrid;
@@ -22,10 +26,12 @@ class vtkUnstructuredGrid;
 /// numbers its cells by kind, so with sourceIds each cell carries its id in
 /// grid and each point its own (the arrays of OverlayStitchGather.h), which
 /// the outputs' InputCellId and the messages then give. Cells of other types
-/// (volumes, quadratic and higher-order cells, empty cells) are left out:
-/// ignored then names how many, the first by its id (in `where`, e.g. "block
-/// 3", or the input when empty) and its type; else it is cleared.
-vtkSmartPointer<vtkPolyData> OverlayStitchPolyDataOf(
-  vtkUnstructuredGrid* grid, bool sourceIds, const std::string& where, std::string& ignored);
+/// (volumes, quadratic and higher-order cells, empty cells) are left out and
+/// counted in ignoredCells; notes then receives a warning that names the
+/// first by its id (in `where`, e.g. "block 3", or the input when empty) and
+/// its type. Cell arrays shorter than the cells are left out too, each with a
+/// note (reordered, they would be misread).
+vtkSmartPointer<vtkPolyData> OverlayStitchPolyDataOf(vtkUnstructuredGrid* grid, bool sourceIds,
+  const std::string& where, std::vector<OverlayStitchNote>& notes, vtkIdType& ignoredCells);
 
 #endif

@@ -152,7 +152,10 @@ struct IgnoredCells
   vtkIdType Empty = 0;
   vtkIdType ShortLines = 0;
   vtkIdType ShortPolygons = 0;
-  vtkIdType First = -1; ///< the smallest id of an ignored cell
+  vtkIdType First = -1; ///< the first ignored cell (in the input the user gave)
+  /// For a single dataset, the ids its cells carry from the one the user gave
+  /// (an unstructured grid, one with ghost cells): the first is by those.
+  vtkIdTypeArray* OwnIds = nullptr;
 
   /// Counts cell `cellId` in `count` when `ignore`.
   void Note(bool ignore, vtkIdType& count, vtkIdType cellId)
@@ -160,8 +163,18 @@ struct IgnoredCells
     if (ignore)
     {
       ++count;
-      this->First = this->First < 0 ? cellId : std::min(this->First, cellId);
+      if (this->First < 0 || this->Own(cellId) < this->Own(this->First))
+      {
+        this->First = cellId;
+      }
     }
+  }
+
+  vtkIdType Own(vtkIdType cellId) const
+  {
+    return this->OwnIds && cellId < this->OwnIds->GetNumberOfTuples()
+      ? this->OwnIds->GetValue(cellId)
+      : cellId;
   }
 
   vtkIdType Total() const
@@ -931,17 +944,24 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   } progressTextReset{ this };
   vtkDataObject* inputObject = vtkDataObject::GetData(inputVector[0], 0);
   vtkSmartPointer<vtkPolyData> local = vtkPolyData::SafeDownCast(inputObject);
+  vtkIdType gridCellsIgnored = 0;
   if (auto* grid = vtkUnstructuredGrid::SafeDownCast(inputObject))
   {
     // Its cells' ids, as polydata renumbers them, only in a serial run: a
-    // rank's piece of a single dataset has ids of its own (as for ghost cells).
+    // rank's piece of a single dataset has ids of its own (as for ghost
+    // cells). Each rank says what it leaves out of its piece.
     vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
-    std::string ignoredCells;
-    local = OverlayStitchPolyDataOf(
-      grid, !controller || controller->GetNumberOfProcesses() <= 1, std::string(), ignoredCells);
-    if (!ignoredCells.empty())
+    const int ranks = controller ? controller->GetNumberOfProcesses() : 1;
+    const std::string where =
+      ranks > 1 ? "the piece of rank " + std::to_string(controller->GetLocalProcessId()) : "";
+    std::vector<OverlayStitchNote> notes;
+    local = OverlayStitchPolyDataOf(grid, ranks <= 1, where, notes, gridCellsIgnored);
+    for (const OverlayStitchNote& note : notes)
     {
-      vtkWarningMacro(<< ignoredCells);
+      if (Carries(note.Array.Kind, this->InterpolatePointData, this->PassCellData))
+      {
+        vtkWarningMacro(<< note.Text);
+      }
     }
   }
   vtkPolyData* mesh = vtkPolyData::GetData(outputVector, 0);
@@ -1038,7 +1058,8 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   const std::string numbering = !combined ? NumberingNote(input)
     : composite
     ? " (numbers of points, segments and cells in this message count through the combined "
-      "input: every polydata block, or every rank's piece, in turn; blocks are named by their "
+      "input: every polydata or unstructured grid block, or every rank's piece, in turn; blocks "
+      "are named by their "
       "flat index, as InputBlockId does)"
     : " (numbers of points, segments and cells in this message count through the combined "
       "input: every rank's piece in turn)";
@@ -1062,6 +1083,11 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
                     << map.z() << ", the mean z.");
   }
   IgnoredCells ignored;
+  if (!input->GetCellData()->GetArray(OverlayStitchBlockIdName))
+  {
+    ignored.OwnIds =
+      vtkIdTypeArray::SafeDownCast(input->GetCellData()->GetArray(OverlayStitchSourceCellIdName));
+  }
   osm::Array<SegmentSource> segmentSources;
   ReadSegments(input, pslg, segmentSources, ignored);
   if (ignored.Total() > 0)
@@ -1296,7 +1322,8 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
     array->SetValue(0, value);
     mesh->GetFieldData()->AddArray(array);
   };
-  addCount("IgnoredCells", static_cast<double>(ignored.Total()));
+  addCount("IgnoredCells",
+    static_cast<double>(ignored.Total() + gridCellsIgnored + combination.IgnoredGridCells));
   addCount("InputHolePoints", static_cast<double>(inputHoles));
   addCount("InputPlaneFitted", map.isFitted() ? 1.0 : 0.0);
   addCount("InputProjectedToXY", map.isProjected() ? 1.0 : 0.0);

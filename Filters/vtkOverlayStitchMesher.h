@@ -259,8 +259,9 @@ public:
    * (holes' included), else 0.
    * Where segments of several cells overlap, a subsegment takes the first
    * cell's. For an unstructured grid, InputCellId is the cell's id in the
-   * grid (in a serial run; in a parallel one, in polydata's numbering of the
-   * rank's piece). For a composite input, InputCellId is the cell's id in its block
+   * grid (in a serial run; distributed over the ranks of a parallel one, it
+   * numbers the cells of the gathered input, as for polydata). For a
+   * composite input, InputCellId is the cell's id in its block
    * and "InputBlockId" the block's flat index (-1 where no cell is named);
    * in a parallel run where a rank holds only part of a block, the id in
    * that part.

@@ -20,6 +20,7 @@
 #include "vtkOutputWindow.h"
 #include "vtkOverlayStitchMesher.h"
 #include "vtkPointData.h"
+#include "vtkPointSet.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataReader.h"
@@ -907,7 +908,7 @@ osm::NodeData NodeDataOf(vtkPolyData* mesh, vtkPolyData* edges)
 /// their own coordinates, attributes and markers (merged duplicates, points
 /// in holes: Triangle writes them unless -j), then the other vertices in the
 /// mesh's order; numbers from the input file's first index.
-void ToTriangleNumbering(osm::Result& r, osm::NodeData& data, vtkPolyData* mesh, vtkPolyData* input)
+void ToTriangleNumbering(osm::Result& r, osm::NodeData& data, vtkPolyData* mesh, vtkPointSet* input)
 {
   vtkDataArray* first = input->GetFieldData()->GetArray("FileFirstIndex");
   data.firstIndex =
@@ -1024,7 +1025,7 @@ void WarnNotInNodeFiles(vtkPolyData* mesh, const osm::NodeData& data, OsmOutputW
   }
 }
 
-void WriteMesh(const std::string& path, vtkPolyData* mesh, vtkPolyData* edges, vtkPolyData* input,
+void WriteMesh(const std::string& path, vtkPolyData* mesh, vtkPolyData* edges, vtkPointSet* input,
   OsmOutputWindow* window)
 {
   const std::string ext = Extension(path);
@@ -1243,7 +1244,7 @@ int Run(int argc, char* argv[], OsmOutputWindow* window)
   if (!args.output.empty())
   {
     WriteMesh(
-      args.output, mesh, edges, vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0)), window);
+      args.output, mesh, edges, vtkPointSet::SafeDownCast(reader->GetOutputDataObject(0)), window);
   }
   if (!args.svg.empty())
   {

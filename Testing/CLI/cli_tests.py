@@ -647,6 +647,15 @@ def group_inputs():
               "an unstructured grid input (%s) meshes as the same lines in polydata, its tetra "
               "ignored with a warning" % os.path.basename(grid),
               str(s)[:300] + p.stderr[-300:])
+        # Triangle's numbering: node i is input point i (found by a review:
+        # a grid's nodes came in the mesh's order).
+        mesh_ok(grid, "-o", out("slit-grid.node"))
+        with open(out("slit-grid.node")) as f:
+            rows = [l.split() for l in f.read().splitlines()[1:len(grid_points) + 1]]
+        check([(float(r[1]), float(r[2])) for r in rows] == [p[:2] for p in grid_points] and
+              rows[0][0] == "1",
+              "a .node output of an unstructured grid (%s) numbers node i as input point i, from 1"
+              % os.path.basename(grid), str(rows))
     # .vtp polygons with cell data: the mesh's triangles take their polygon's
     # (PassCellData; its values are checked by vtk.OverlayStitchMesher.Input.polygon-data).
     land = out("land.vtp")

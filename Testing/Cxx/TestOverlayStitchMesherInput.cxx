@@ -2549,12 +2549,56 @@ int TestUnstructuredGrid()
   Check(h.Messages->HasWarning({ "Ignored 2 cell(s) of the unstructured grid, the first cell 0 "
                                  "(vtkTetra)" }),
     "one warning counts the tetra and the quadratic edge and names the first");
+  Check(Statistic(mesh, "IgnoredCells") == 2, "the statistic IgnoredCells counts them");
   vtkIdType inputEdges = 0;
   const vtkIdType wrong = WrongGridCells(h.Mesher->GetEdgesOutput(), inputEdges);
   Check(wrong == 0 && inputEdges >= 9,
     "the Edges' InputCellId is the grid's own cell id (polydata renumbers them) and its cell "
     "data comes with it (" +
       std::to_string(wrong) + " wrong of " + std::to_string(inputEdges) + ")");
+
+  // Cell arrays shorter than the cells cannot be reordered: left out, said
+  // (found by a review: a string array of 1 value crashed the filter).
+  vtkNew<vtkStringArray> label;
+  label->SetName("Label");
+  label->InsertNextValue("one");
+  vtkNew<vtkIntArray> code;
+  code->SetName("Code");
+  code->InsertNextValue(7);
+  auto shortArrays = MixedGrid();
+  shortArrays->GetCellData()->AddArray(label);
+  shortArrays->GetCellData()->AddArray(code);
+  Harness sa;
+  mesh = sa.Run(shortArrays, "a grid with short cell arrays");
+  vtkCellData* edgeData = sa.Mesher->GetEdgesOutput()->GetCellData();
+  Check(sa.NoError() && mesh->GetNumberOfPolys() > 0 &&
+      sa.Messages->HasWarning({ "cell data array Label is not carried: it has 1 tuples for 6 "
+                                "cells" }) &&
+      sa.Messages->HasWarning({ "cell data array Code is not carried: it has 1 tuples for 6 "
+                                "cells" }) &&
+      !edgeData->GetAbstractArray("Label") && !edgeData->GetArray("Code") &&
+      edgeData->GetArray("Material"),
+    "a grid's cell arrays shorter than its cells are left out with a warning each, the others "
+    "carried");
+
+  // The first ignored cell is the grid's first (polydata puts lines before
+  // polygons), and a cell naming a missing point is the input's, not a block's.
+  vtkNew<vtkUnstructuredGrid> order;
+  order->SetPoints(grid->GetPoints());
+  const vtkIdType twoPoints[] = { 0, 1 }, quad[] = { 0, 1, 2, 3 }, missing[] = { 0, 99 };
+  order->InsertNextCell(VTK_POLYGON, 2, twoPoints);
+  order->InsertNextCell(VTK_LINE, 1, twoPoints);
+  order->InsertNextCell(VTK_QUAD, 4, quad);
+  Harness o;
+  o.Run(order, "a grid whose polygon and line give no segment");
+  Check(o.Messages->HasWarning({ "Ignored 2 input cell(s), the first cell 0 of the input" }),
+    "the first ignored cell is the grid's first");
+  order->InsertNextCell(VTK_LINE, 2, missing);
+  order->Modified();
+  o.Run(order, "a grid whose line names a missing point");
+  Check(o.Messages->HasError({ "cell 3 of the input refers to point 99, but the input has 10 "
+                               "point(s)" }),
+    "a grid's cell naming a missing point: said of the input, not of a block");
 
   // The same cells as polydata give the same mesh.
   auto lines = MakeLines({ { 0, 0, 0 }, { 10, 0, 0 }, { 10, 10, 0 }, { 0, 10, 0 }, { 3, 3, 0 },
@@ -2576,7 +2620,7 @@ int TestUnstructuredGrid()
   b.Mesher->SetDomainToHull();
   mesh = b.Run(blocks, "a multiblock with a grid block");
   Check(b.NoError() && mesh->GetNumberOfPolys() > 0 &&
-      b.Messages->HasWarning({ "Ignored 2 cell(s) of the unstructured grid block 2, the first "
+      b.Messages->HasWarning({ "Ignored 2 cell(s) of block 2 (an unstructured grid), the first "
                                "cell 0 (vtkTetra)" }) &&
       !b.Messages->HasWarning({ "neither polydata nor unstructured grids" }),
     "a grid block is meshed with the others, its ignored cells named by block");

@@ -126,6 +126,9 @@ def main(plugin, data_dir):
     check(fetch(grid, 0).IsA("vtkUnstructuredGrid") and domain is not None and
           domain.IsInDomain(grid.SMProxy, 0) == 1,
           "the filter's input domain accepts an unstructured grid")
+    group = GroupDatasets(Input=[reader, grid])
+    check(fetch(group, 0).IsA("vtkMultiBlockDataSet") and domain.IsInDomain(group.SMProxy, 0) == 1,
+          "and a multiblock of a polydata and an unstructured grid block")
     from_grid = fetch(OverlayStitchMesher(Input=grid), 0)
     check(from_grid.GetNumberOfCells() == triangles and
           math.isclose(triangle_area(from_grid), area, rel_tol=1e-12),
