@@ -1,7 +1,7 @@
 """Meshes one input with the Overlay Stitch Mesher under pvbatch (any number of
 MPI ranks) or, with --server, through a pvserver from pvpython.
 
-    [mpirun -np N] pvbatch mesh_parallel.py --plugin P --input in.vtp|in.pvtp|in.vtm --json out.json
+    [mpirun -np N] pvbatch mesh_parallel.py --plugin P --input in.vtp|in.pvtp|in.pvtu|in.vtm --json out.json
         [--mesh mesh.vtp] [--distribute none|one|all] [--server HOST:PORT] [--fail-first]
         [--pvtp mesh.pvtp] [--png shot.png]
 
@@ -68,6 +68,9 @@ def main():
     if args.input.endswith(".pvtp"):
         # A partitioned file: each rank reads its own pieces.
         source = XMLPartitionedPolydataReader(FileName=[args.input])
+    elif args.input.endswith(".pvtu"):
+        # The same as unstructured grids (vtkUnstructuredGrid input).
+        source = XMLPartitionedUnstructuredGridReader(FileName=[args.input])
     elif args.input.endswith(".vtm"):
         # A multiblock file: its blocks are spread over the ranks; the mesher
         # combines each rank's blocks, then gathers them.

@@ -7,16 +7,19 @@ Every input becomes line data in the convention of the project's .poly reader:
 points with z = 0, one 2-point line cell per segment, one vertex cell per point
 that is on no segment, and the field data "HolePoints" (3-component doubles).
 Single segments (not polylines) let a redistribution spread the lines evenly
-over the ranks. Prints one line per file written.
+over the ranks. The partitioned inputs are also written as unstructured grids
+(.pvtu), their lines first and their vertex cells last. Prints one line per
+file written.
 """
 import argparse
 import os
 import sys
 
-from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkIdTypeArray, vtkPoints, vtkUnsignedCharArray
-from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+from vtkmodules.vtkCommonCore import (vtkDoubleArray, vtkIdList, vtkIdTypeArray, vtkPoints,
+                                     vtkUnsignedCharArray)
+from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData, vtkUnstructuredGrid
 from vtkmodules.vtkIOLegacy import vtkPolyDataReader
-from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
+from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter, vtkXMLUnstructuredGridWriter
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Python"))
 from poly_rows import poly_rows  # noqa: E402
@@ -122,6 +125,26 @@ def write(data, path):
         data.GetFieldData().GetArray("HolePoints").GetNumberOfTuples()))
 
 
+def write_grid(data, path):
+    """data as an unstructured grid: its line cells, then its vertex cells (the
+    other order than polydata's), its point and field data."""
+    grid = vtkUnstructuredGrid()
+    grid.SetPoints(data.GetPoints())
+    grid.GetPointData().ShallowCopy(data.GetPointData())
+    grid.GetFieldData().ShallowCopy(data.GetFieldData())
+    ids = vtkIdList()
+    for cells in (data.GetLines(), data.GetVerts()):
+        cells.InitTraversal()
+        while cells.GetNextCell(ids):
+            grid.InsertNextCell(3 if ids.GetNumberOfIds() == 2 else 1, ids)
+    writer = vtkXMLUnstructuredGridWriter()
+    writer.SetFileName(path)
+    writer.SetInputData(grid)
+    writer.SetDataModeToBinary()
+    if not writer.Write():
+        sys.exit("cannot write " + path)
+
+
 def write_pieces(points, segments, holes, count, path, global_ids, ghosts=False):
     """A partitioned .pvtp: the segments in `count` slabs of x (each piece holds the
     points its cells use, so pieces repeat the points on their common boundary);
@@ -168,6 +191,8 @@ def write_pieces(points, segments, holes, count, path, global_ids, ghosts=False)
             data.GetCellData().AddArray(flags)
         name = "%s_%d.vtp" % (os.path.basename(base), k)
         write(data, os.path.join(os.path.dirname(path), name))
+        if not ghosts:
+            write_grid(data, os.path.join(os.path.dirname(path), name[:-4] + ".vtu"))
         sources.append(name)
     with open(path, "w") as f:
         f.write('<?xml version="1.0"?>\n<VTKFile type="PPolyData" version="1.0" '
@@ -193,6 +218,19 @@ def write_pieces(points, segments, holes, count, path, global_ids, ghosts=False)
                 f.write('  <DataSet index="%d" file="%s"/>\n' % (k, name))
             f.write(" </vtkMultiBlockDataSet>\n</VTKFile>\n")
         print("wrote %s.vtm: %d blocks" % (base, count))
+        # And as a partitioned unstructured grid.
+        with open(base + ".pvtu", "w") as f:
+            f.write('<?xml version="1.0"?>\n<VTKFile type="PUnstructuredGrid" version="1.0" '
+                    'byte_order="LittleEndian" header_type="UInt64">\n'
+                    ' <PUnstructuredGrid GhostLevel="0">\n'
+                    '  <PPoints><PDataArray type="Float64" NumberOfComponents="3"/></PPoints>\n')
+            if global_ids:
+                f.write('  <PPointData GlobalIds="GlobalPointIds">'
+                        '<PDataArray type="Int64" Name="GlobalPointIds"/></PPointData>\n')
+            for name in sources:
+                f.write('  <Piece Source="%s"/>\n' % (name[:-4] + ".vtu"))
+            f.write(" </PUnstructuredGrid>\n</VTKFile>\n")
+        print("wrote %s.pvtu: %d pieces" % (base, count))
 
 
 def main():

@@ -12,7 +12,7 @@ GROUP
 
 Each input is meshed once serially (pvbatch, one process), then under
 `mpirun -np 2` and `-np 3`, its lines genuinely spread over the ranks (a
-partitioned .pvtp read in parallel, with or without ghost cells, or ParaView's
+partitioned .pvtp (or .pvtu) read in parallel, with or without ghost cells, or ParaView's
 RedistributeDataSet). A parallel
 run passes when every rank held part of the input (its probe printed a cell
 count > 0), the statistics from the Mesh output's field data equal the serial
@@ -183,7 +183,7 @@ class Runner:
                 check("OSM-FAILED-RUN-CELLS [0, 0, 0]" in parallel["log"],
                       "%s: the run that failed on rank 0 left every output empty" % tag)
             self.compare(tag, serial, parallel, ranks, input_cells, distribute,
-                         spread=distribute != "none" or kind in ("pvtp", "vtm"))
+                         spread=distribute != "none" or kind in ("pvtp", "pvtu", "vtm"))
             if kind == "vtm":  # 3 blocks, flat indices 1 to 3; -1 off the segments
                 check(parallel["block_ids"] == [-1, 3],
                       "%s: the Edges name the input blocks -1..3 (InputBlockId), got %s" % (
@@ -213,6 +213,7 @@ def bundled(runner):
             (2, name + "-2.pvtp", "none", False),
             (3, name + "-3.pvtp", "none", True),
             (2, name + "-2g.pvtp", "none", False),  # with a layer of ghost cells
+            (2, name + "-2.pvtu", "none", False),  # the pieces as unstructured grids
             (2, name + ".vtp", "one", False),
             (3, name + ".vtp", "all", False),
             # A multiblock of three blocks: 2 on one rank and 1 on the other (each rank
