@@ -113,13 +113,16 @@ def square_with_hole():
     return points, segments, [(5.0, 5.0)]
 
 
-def write(data, path):
-    writer = vtkXMLPolyDataWriter()
+def write_with(writer, data, path):
     writer.SetFileName(path)
     writer.SetInputData(data)
     writer.SetDataModeToBinary()
     if not writer.Write():
         sys.exit("cannot write " + path)
+
+
+def write(data, path):
+    write_with(vtkXMLPolyDataWriter(), data, path)
     print("wrote %s: %d points, %d cells, %d hole seeds" % (
         path, data.GetNumberOfPoints(), data.GetNumberOfCells(),
         data.GetFieldData().GetArray("HolePoints").GetNumberOfTuples()))
@@ -137,12 +140,7 @@ def write_grid(data, path):
         cells.InitTraversal()
         while cells.GetNextCell(ids):
             grid.InsertNextCell(3 if ids.GetNumberOfIds() == 2 else 1, ids)
-    writer = vtkXMLUnstructuredGridWriter()
-    writer.SetFileName(path)
-    writer.SetInputData(grid)
-    writer.SetDataModeToBinary()
-    if not writer.Write():
-        sys.exit("cannot write " + path)
+    write_with(vtkXMLUnstructuredGridWriter(), grid, path)
 
 
 def write_pieces(points, segments, holes, count, path, global_ids, ghosts=False):
