@@ -608,6 +608,29 @@ const char* const OverlayStitchBlockIdName = "vtkOverlayStitchBlockId";
 const char* const OverlayStitchSourceCellIdName = "vtkOverlayStitchSourceCellId";
 const char* const OverlayStitchSourcePointIdName = "vtkOverlayStitchSourcePointId";
 const char* const OverlayStitchRankName = "vtkOverlayStitchRank";
+const char* const OverlayStitchIgnoredCellsName = "vtkOverlayStitchIgnoredCells";
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkPolyData> OverlayStitchWithIgnoredCells(vtkPolyData* piece, vtkIdType cells)
+{
+  auto copy = vtkSmartPointer<vtkPolyData>::New();
+  copy->ShallowCopy(piece);
+  vtkNew<vtkFieldData> field; // not the piece's own, which the copy shares
+  field->ShallowCopy(piece->GetFieldData());
+  field->AddArray(
+    IdArray(OverlayStitchIgnoredCellsName, 1, OverlayStitchIgnoredCells(piece) + cells));
+  copy->SetFieldData(field);
+  return copy;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType OverlayStitchIgnoredCells(vtkDataObject* data)
+{
+  auto* count = data ? vtkIdTypeArray::SafeDownCast(
+                         data->GetFieldData()->GetAbstractArray(OverlayStitchIgnoredCellsName))
+                     : nullptr;
+  return count && count->GetNumberOfTuples() == 1 ? count->GetValue(0) : 0;
+}
 
 //------------------------------------------------------------------------------
 vtkIdType OverlayStitchSourceId(vtkDataSetAttributes* data, const char* idName, vtkIdType i)
@@ -892,6 +915,7 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
   holes->SetName(HolePointsName);
   holes->SetNumberOfComponents(3);
   vtkFieldData* outField = combined->GetFieldData();
+  vtkIdType ignoredCells = 0;
   for (const auto& piece : pieces)
   {
     vtkFieldData* field = piece ? piece->GetFieldData() : nullptr;
@@ -899,6 +923,7 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
     {
       continue;
     }
+    ignoredCells += OverlayStitchIgnoredCells(piece);
     if (field->GetAbstractArray(HolePointsName))
     {
       anyHoles = true;
@@ -913,6 +938,10 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
         outField->AddArray(std::strcmp(name, HolePointsName) == 0 ? holes.Get() : array);
       }
     }
+  }
+  if (ignoredCells > 0)
+  {
+    outField->AddArray(IdArray(OverlayStitchIgnoredCellsName, 1, ignoredCells)); // the sum
   }
   if (anyHoles)
   {

@@ -132,6 +132,16 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
 extern const char* const OverlayStitchBlockIdName;
 extern const char* const OverlayStitchSourceCellIdName;
 extern const char* const OverlayStitchSourcePointIdName;
+/// A field data count of the input cells left out before the gather (an
+/// unstructured grid's cells of other types): combining pieces sums it.
+extern const char* const OverlayStitchIgnoredCellsName;
+
+/// A shallow copy of piece whose field data counts `cells` more left out.
+vtkSmartPointer<vtkPolyData> OverlayStitchWithIgnoredCells(vtkPolyData* piece, vtkIdType cells);
+
+/// The count OverlayStitchWithIgnoredCells put in data's field data, or 0.
+vtkIdType OverlayStitchIgnoredCells(vtkDataObject* data);
+
 /// In a parallel run, the rank each such cell and point came from (on the
 /// pieces that carry block ids): the ids in a block are those of the rank's
 /// part of it.

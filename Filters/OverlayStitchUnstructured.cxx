@@ -6,12 +6,14 @@
 #include "vtkCellData.h"
 #include "vtkCellType.h"
 #include "vtkCellTypes.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkFieldData.h"
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
 #include "OverlayStitchArrays.h"
@@ -71,10 +73,23 @@ vtkSmartPointer<vtkPolyData> OverlayStitchPolyDataOf(vtkUnstructuredGrid* grid, 
   vtkIdType left = 0, first = -1;
   int firstType = VTK_EMPTY_CELL;
   vtkNew<vtkIdList> ids;
+  // Ghost cells are copies of cells another piece holds, which says so.
+  auto* ghosts = vtkUnsignedCharArray::SafeDownCast(
+    grid->GetCellData()->GetArray(vtkDataSetAttributes::GhostArrayName()));
+  const auto isGhost = [ghosts](vtkIdType c) {
+    return ghosts && c < ghosts->GetNumberOfTuples() &&
+      (ghosts->GetValue(c) &
+        (vtkDataSetAttributes::DUPLICATECELL | vtkDataSetAttributes::HIDDENCELL |
+          vtkDataSetAttributes::REFINEDCELL)) != 0;
+  };
   for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
   {
     const int type = grid->GetCellType(c);
     const int kind = KindOf(type);
+    if (kind < 0 && isGhost(c))
+    {
+      continue;
+    }
     if (kind < 0)
     {
       first = left++ == 0 ? c : first;

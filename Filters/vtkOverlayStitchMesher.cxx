@@ -92,6 +92,7 @@ void PassFieldData(vtkFieldData* in, vtkPolyData* output)
     vtkAbstractArray* array = in->GetAbstractArray(a);
     const char* name = array->GetName();
     if (array->GetNumberOfTuples() > 0 && !(name && std::strcmp(name, "FileFirstIndex") == 0) &&
+      !(name && std::strcmp(name, OverlayStitchIgnoredCellsName) == 0) &&
       (!name || !out->GetAbstractArray(name)))
     {
       out->AddArray(array);
@@ -153,9 +154,11 @@ struct IgnoredCells
   vtkIdType ShortLines = 0;
   vtkIdType ShortPolygons = 0;
   vtkIdType First = -1; ///< the first ignored cell (in the input the user gave)
-  /// For a single dataset, the ids its cells carry from the one the user gave
-  /// (an unstructured grid, one with ghost cells): the first is by those.
+  /// The ids the cells carry from the dataset the user gave (an unstructured
+  /// grid renumbered as polydata, one with ghost cells) and their blocks: the
+  /// first is by those (block, then id), else by the input's cell ids.
   vtkIdTypeArray* OwnIds = nullptr;
+  vtkIdTypeArray* BlockIds = nullptr;
 
   /// Counts cell `cellId` in `count` when `ignore`.
   void Note(bool ignore, vtkIdType& count, vtkIdType cellId)
@@ -170,11 +173,13 @@ struct IgnoredCells
     }
   }
 
-  vtkIdType Own(vtkIdType cellId) const
+  std::pair<vtkIdType, vtkIdType> Own(vtkIdType cellId) const
   {
-    return this->OwnIds && cellId < this->OwnIds->GetNumberOfTuples()
-      ? this->OwnIds->GetValue(cellId)
-      : cellId;
+    const auto in = [cellId](vtkIdTypeArray* ids) {
+      return ids && cellId < ids->GetNumberOfTuples() ? ids->GetValue(cellId) : vtkIdType(-1);
+    };
+    const vtkIdType own = in(this->OwnIds);
+    return { in(this->BlockIds), own >= 0 ? own : cellId };
   }
 
   vtkIdType Total() const
@@ -434,6 +439,19 @@ std::string ArraysLeftOut(
     }
   }
   return names;
+}
+
+/// Warns of the notes about what combining or gathering left out, but for
+/// arrays the filter would not carry anyway.
+void WarnOf(vtkOverlayStitchMesher* filter, const std::vector<OverlayStitchNote>& notes)
+{
+  for (const OverlayStitchNote& note : notes)
+  {
+    if (Carries(note.Array.Kind, filter->GetInterpolatePointData(), filter->GetPassCellData()))
+    {
+      vtkWarningWithObjectMacro(filter, << note.Text);
+    }
+  }
 }
 
 /// Reads the input's cells into segments, counting the cells that give none.
@@ -956,13 +974,7 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
       ranks > 1 ? "the piece of rank " + std::to_string(controller->GetLocalProcessId()) : "";
     std::vector<OverlayStitchNote> notes;
     local = OverlayStitchPolyDataOf(grid, ranks <= 1, where, notes, gridCellsIgnored);
-    for (const OverlayStitchNote& note : notes)
-    {
-      if (Carries(note.Array.Kind, this->InterpolatePointData, this->PassCellData))
-      {
-        vtkWarningMacro(<< note.Text);
-      }
-    }
+    WarnOf(this, notes);
   }
   vtkPolyData* mesh = vtkPolyData::GetData(outputVector, 0);
   vtkPolyData* edges = vtkPolyData::GetData(outputVector, 1);
@@ -989,6 +1001,15 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
                       << "); segments come from the polydata and unstructured grid blocks, "
                          "which are meshed together.");
     }
+    // Said here, on the rank that holds the blocks: other ranks' notes do
+    // not reach rank 0.
+    WarnOf(this, combination.NotCarried);
+    gridCellsIgnored += combination.IgnoredGridCells;
+  }
+  // Grid cells left out are counted on every rank and summed by the gather.
+  if (local && gridCellsIgnored > 0)
+  {
+    local = OverlayStitchWithIgnoredCells(local, gridCellsIgnored);
   }
   // Parallel runs (pvbatch, pvserver): every rank takes part in gathering the whole input
   // on rank 0, which meshes it; the other ranks keep empty outputs (OverlayStitchGather.h).
@@ -1017,17 +1038,7 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
     vtkErrorMacro("No input polydata.");
     return 1;
   }
-  for (const OverlayStitchGatherSummary* summary : { &combination, &gather })
-  {
-    for (const OverlayStitchNote& note : summary->NotCarried)
-    {
-      // Only about arrays the filter would carry.
-      if (Carries(note.Array.Kind, this->InterpolatePointData, this->PassCellData))
-      {
-        vtkWarningMacro(<< note.Text);
-      }
-    }
-  }
+  WarnOf(this, gather.NotCarried);
   const std::string leftOut =
     ArraysLeftOut({ &combination, &gather }, this->InterpolatePointData, this->PassCellData);
   if (!leftOut.empty())
@@ -1083,11 +1094,10 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
                     << map.z() << ", the mean z.");
   }
   IgnoredCells ignored;
-  if (!input->GetCellData()->GetArray(OverlayStitchBlockIdName))
-  {
-    ignored.OwnIds =
-      vtkIdTypeArray::SafeDownCast(input->GetCellData()->GetArray(OverlayStitchSourceCellIdName));
-  }
+  ignored.OwnIds =
+    vtkIdTypeArray::SafeDownCast(input->GetCellData()->GetArray(OverlayStitchSourceCellIdName));
+  ignored.BlockIds =
+    vtkIdTypeArray::SafeDownCast(input->GetCellData()->GetArray(OverlayStitchBlockIdName));
   osm::Array<SegmentSource> segmentSources;
   ReadSegments(input, pslg, segmentSources, ignored);
   if (ignored.Total() > 0)
@@ -1322,8 +1332,7 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
     array->SetValue(0, value);
     mesh->GetFieldData()->AddArray(array);
   };
-  addCount("IgnoredCells",
-    static_cast<double>(ignored.Total() + gridCellsIgnored + combination.IgnoredGridCells));
+  addCount("IgnoredCells", static_cast<double>(ignored.Total() + OverlayStitchIgnoredCells(input)));
   addCount("InputHolePoints", static_cast<double>(inputHoles));
   addCount("InputPlaneFitted", map.isFitted() ? 1.0 : 0.0);
   addCount("InputProjectedToXY", map.isProjected() ? 1.0 : 0.0);

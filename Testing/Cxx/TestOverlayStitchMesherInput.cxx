@@ -2593,6 +2593,31 @@ int TestUnstructuredGrid()
   o.Run(order, "a grid whose polygon and line give no segment");
   Check(o.Messages->HasWarning({ "Ignored 2 input cell(s), the first cell 0 of the input" }),
     "the first ignored cell is the grid's first");
+  // In a block, the same (found by a second review: polydata's order decided there).
+  vtkNew<vtkMultiBlockDataSet> orderBlocks;
+  orderBlocks->SetNumberOfBlocks(2);
+  orderBlocks->SetBlock(0, MakeLines({ { 12, 0, 0 }, { 14, 2, 0 } }, { { 0, 1 } }));
+  orderBlocks->SetBlock(1, order);
+  o.Mesher->SetDomainToHull();
+  o.Run(orderBlocks, "the same grid as a block");
+  Check(o.Messages->HasWarning({ "Ignored 2 input cell(s), the first cell 0 of block 2" }),
+    "the first ignored cell of a grid block is the block's first");
+  o.Mesher->SetDomainToAuto();
+  // A ghost cell of another type is the other piece's to count (found by the
+  // second review: it was counted and named).
+  vtkNew<vtkUnsignedCharArray> ghosts;
+  ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
+  for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
+  {
+    ghosts->InsertNextValue(c == 0 ? vtkDataSetAttributes::DUPLICATECELL : 0);
+  }
+  auto ghostTetra = MixedGrid();
+  ghostTetra->GetCellData()->AddArray(ghosts);
+  vtkPolyData* ghostMesh = o.Run(ghostTetra, "a grid whose tetra is a ghost cell");
+  Check(o.NoError() && Statistic(ghostMesh, "IgnoredCells") == 1 &&
+      o.Messages->HasWarning({ "Ignored 1 cell(s) of the unstructured grid, the first cell 5 "
+                               "(vtkQuadraticEdge)" }),
+    "a ghost cell of another type is neither counted nor named");
   order->InsertNextCell(VTK_LINE, 2, missing);
   order->Modified();
   o.Run(order, "a grid whose line names a missing point");

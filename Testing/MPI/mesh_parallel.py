@@ -126,7 +126,8 @@ def main():
         .GetArrayInformation("RegionAttribute") is not None
     for name in ("InputPoints", "InputSegments", "DuplicatePointsMerged",
                  "DuplicateSegmentsMerged", "ZeroLengthSegmentsDropped", "OutputTriangles",
-                 "OutputVertices", "Regions", "MinAngleDeg", "MaxAngleDeg", "SecondsTotal"):
+                 "OutputVertices", "Regions", "MinAngleDeg", "MaxAngleDeg", "SecondsTotal",
+                 "IgnoredCells"):
         result["stats"][name] = field_value(mesh_port, name)
 
     if args.mesh:

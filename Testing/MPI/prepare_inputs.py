@@ -128,9 +128,10 @@ def write(data, path):
         data.GetFieldData().GetArray("HolePoints").GetNumberOfTuples()))
 
 
-def write_grid(data, path):
+def write_grid(data, path, tetra=False):
     """data as an unstructured grid: its line cells, then its vertex cells (the
-    other order than polydata's), its point and field data."""
+    other order than polydata's), its point and field data; with tetra, a
+    tetra on its first 4 points last (a cell the mesher ignores)."""
     grid = vtkUnstructuredGrid()
     grid.SetPoints(data.GetPoints())
     grid.GetPointData().ShallowCopy(data.GetPointData())
@@ -140,6 +141,8 @@ def write_grid(data, path):
         cells.InitTraversal()
         while cells.GetNextCell(ids):
             grid.InsertNextCell(3 if ids.GetNumberOfIds() == 2 else 1, ids)
+    if tetra:
+        grid.InsertNextCell(10, 4, [0, 1, 2, 3])
     write_with(vtkXMLUnstructuredGridWriter(), grid, path)
 
 
@@ -190,7 +193,10 @@ def write_pieces(points, segments, holes, count, path, global_ids, ghosts=False)
         name = "%s_%d.vtp" % (os.path.basename(base), k)
         write(data, os.path.join(os.path.dirname(path), name))
         if not ghosts:
-            write_grid(data, os.path.join(os.path.dirname(path), name[:-4] + ".vtu"))
+            # The last piece (with the hole seeds, read by rank 1 of 2) also
+            # holds a tetra, which that rank must say it ignores.
+            write_grid(data, os.path.join(os.path.dirname(path), name[:-4] + ".vtu"),
+                       tetra=k == count - 1)
         sources.append(name)
     with open(path, "w") as f:
         f.write('<?xml version="1.0"?>\n<VTKFile type="PPolyData" version="1.0" '

@@ -184,6 +184,12 @@ class Runner:
                       "%s: the run that failed on rank 0 left every output empty" % tag)
             self.compare(tag, serial, parallel, ranks, input_cells, distribute,
                          spread=distribute != "none" or kind in ("pvtp", "pvtu", "vtm"))
+            if kind == "pvtu":  # the last piece's tetra, ignored on the rank that read it
+                check(parallel["stats"].get("IgnoredCells") == 1 and re.search(
+                    r"Ignored 1 cell\(s\) of the piece of rank [1-9] \(an unstructured grid\), "
+                    r"the first cell \d+ \(vtkTetra\)", parallel["log"]),
+                      "%s: the tetra of rank 1's piece is counted in IgnoredCells (%s) and said "
+                      "by that rank" % (tag, parallel["stats"].get("IgnoredCells")))
             if kind == "vtm":  # 3 blocks, flat indices 1 to 3; -1 off the segments
                 check(parallel["block_ids"] == [-1, 3],
                       "%s: the Edges name the input blocks -1..3 (InputBlockId), got %s" % (
