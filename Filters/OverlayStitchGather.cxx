@@ -611,6 +611,18 @@ const char* const OverlayStitchRankName = "vtkOverlayStitchRank";
 const char* const OverlayStitchIgnoredCellsName = "vtkOverlayStitchIgnoredCells";
 
 //------------------------------------------------------------------------------
+vtkSmartPointer<vtkIdTypeArray> OverlayStitchIdArray(const char* name, vtkIdType n, vtkIdType value)
+{
+  return IdArray(name, n, value);
+}
+
+//------------------------------------------------------------------------------
+bool OverlayStitchIsGhostCell(vtkDataArray* ghosts, vtkIdType c)
+{
+  return IsGhostCell(ghosts, c);
+}
+
+//------------------------------------------------------------------------------
 vtkSmartPointer<vtkPolyData> OverlayStitchWithIgnoredCells(vtkPolyData* piece, vtkIdType cells)
 {
   auto copy = vtkSmartPointer<vtkPolyData>::New();
@@ -1070,7 +1082,6 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombineBlocks(vtkCompositeDataSet* inp
   ignored.clear();
   std::vector<OverlayStitchNote> notes;
   std::vector<vtkSmartPointer<vtkDataObject>> blocks;
-  vtkIdType gridCellsIgnored = 0;
   auto it = vtkSmartPointer<vtkCompositeDataIterator>::Take(input->NewIterator());
   for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
   {
@@ -1083,8 +1094,12 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombineBlocks(vtkCompositeDataSet* inp
     {
       const std::string where = "block " + std::to_string(it->GetCurrentFlatIndex());
       vtkIdType ignoredCells = 0;
-      auto read = OverlayStitchPolyDataOf(grid, true, where, notes, ignoredCells);
-      gridCellsIgnored += ignoredCells;
+      vtkSmartPointer<vtkPolyData> read =
+        OverlayStitchPolyDataOf(grid, true, where, notes, ignoredCells);
+      if (ignoredCells > 0)
+      {
+        read = OverlayStitchWithIgnoredCells(read, ignoredCells); // summed when combined
+      }
       blocks.emplace_back(WithBlockIds(read, it->GetCurrentFlatIndex(), notes));
     }
     else if (vtkDataSet* other = vtkDataSet::SafeDownCast(leaf))
@@ -1101,7 +1116,6 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombineBlocks(vtkCompositeDataSet* inp
     if (summary)
     {
       summary->NotCarried = notes;
-      summary->IgnoredGridCells = gridCellsIgnored;
     }
     return only;
   }
@@ -1109,7 +1123,6 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombineBlocks(vtkCompositeDataSet* inp
   if (summary)
   {
     summary->NotCarried.insert(summary->NotCarried.begin(), notes.begin(), notes.end());
-    summary->IgnoredGridCells = gridCellsIgnored;
   }
   return combined;
 }

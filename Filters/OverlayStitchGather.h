@@ -40,6 +40,7 @@
 #include <vector>
 
 class vtkCompositeDataSet;
+class vtkDataArray;
 class vtkDataObject;
 class vtkDataSetAttributes;
 class vtkIdTypeArray;
@@ -79,7 +80,6 @@ struct OverlayStitchGatherSummary
   vtkIdType SharedPointsMerged = 0;    ///< points found again in a later piece
   vtkIdType SharedCellsDropped = 0;    ///< cells found again in a later piece
   vtkIdType HolePoints = 0;            ///< distinct hole seeds after the gather
-  vtkIdType IgnoredGridCells = 0;      ///< unstructured grid blocks' cells of other types
   /// Cells naming a point their own piece does not have: after combining, such
   /// an id is -1 and says nothing, so the first is described here ("cell 3 of
   /// rank 1 refers to point 57, ..."), for the caller to report.
@@ -132,6 +132,14 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
 extern const char* const OverlayStitchBlockIdName;
 extern const char* const OverlayStitchSourceCellIdName;
 extern const char* const OverlayStitchSourcePointIdName;
+/// An id array of n tuples: value everywhere, or (value < 0) each tuple's own index.
+vtkSmartPointer<vtkIdTypeArray> OverlayStitchIdArray(
+  const char* name, vtkIdType n, vtkIdType value);
+
+/// Whether cell c is one that vtkPolyData::RemoveGhostCells() removes, by its
+/// flags in ghosts (the ghost array; null: none is).
+bool OverlayStitchIsGhostCell(vtkDataArray* ghosts, vtkIdType c);
+
 /// A field data count of the input cells left out before the gather (an
 /// unstructured grid's cells of other types): combining pieces sums it.
 extern const char* const OverlayStitchIgnoredCellsName;
@@ -177,7 +185,8 @@ void OverlayStitchToSourceIds(vtkDataSetAttributes* in, const char* sourceIdName
 /// block's cells and points get the arrays above.
 /// Unstructured grid leaves are read as polydata (OverlayStitchUnstructured.h),
 /// their cells keeping their ids in the grid, and the cells of other types
-/// they leave out noted in the summary. `ignored` receives the class names of
+/// they leave out noted in the summary and counted in the field data
+/// (OverlayStitchIgnoredCells). `ignored` receives the class names of
 /// non-empty leaves of other types, one entry per leaf; `summary`, if given,
 /// what the combination did.
 vtkSmartPointer<vtkPolyData> OverlayStitchCombineBlocks(vtkCompositeDataSet* input,

@@ -17,9 +17,9 @@
 #include "vtkUnstructuredGrid.h"
 
 #include "OverlayStitchArrays.h"
+#include "OverlayStitchGather.h"
 
 #include <array>
-#include <numeric>
 #include <utility>
 #include <vector>
 
@@ -49,14 +49,6 @@ int KindOf(int type)
   }
 }
 
-vtkSmartPointer<vtkIdTypeArray> Ids(const char* name, const vtkIdType* first, vtkIdType n)
-{
-  auto ids = vtkSmartPointer<vtkIdTypeArray>::New();
-  ids->SetName(name);
-  ids->SetNumberOfTuples(n);
-  std::copy(first, first + n, ids->GetPointer(0));
-  return ids;
-}
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -74,19 +66,13 @@ vtkSmartPointer<vtkPolyData> OverlayStitchPolyDataOf(vtkUnstructuredGrid* grid, 
   int firstType = VTK_EMPTY_CELL;
   vtkNew<vtkIdList> ids;
   // Ghost cells are copies of cells another piece holds, which says so.
-  auto* ghosts = vtkUnsignedCharArray::SafeDownCast(
+  vtkDataArray* ghosts = vtkUnsignedCharArray::SafeDownCast(
     grid->GetCellData()->GetArray(vtkDataSetAttributes::GhostArrayName()));
-  const auto isGhost = [ghosts](vtkIdType c) {
-    return ghosts && c < ghosts->GetNumberOfTuples() &&
-      (ghosts->GetValue(c) &
-        (vtkDataSetAttributes::DUPLICATECELL | vtkDataSetAttributes::HIDDENCELL |
-          vtkDataSetAttributes::REFINEDCELL)) != 0;
-  };
   for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
   {
     const int type = grid->GetCellType(c);
     const int kind = KindOf(type);
-    if (kind < 0 && isGhost(c))
+    if (kind < 0 && OverlayStitchIsGhostCell(ghosts, c))
     {
       continue;
     }
@@ -139,11 +125,12 @@ vtkSmartPointer<vtkPolyData> OverlayStitchPolyDataOf(vtkUnstructuredGrid* grid, 
   to->CopyData(whole, from, vtkIdType(0));
   if (sourceIds)
   {
-    to->AddArray(Ids(OverlayStitchSourceCellIdName, from->GetPointer(0), from->GetNumberOfIds()));
-    std::vector<vtkIdType> points(static_cast<std::size_t>(grid->GetNumberOfPoints()));
-    std::iota(points.begin(), points.end(), vtkIdType(0));
+    vtkSmartPointer<vtkIdTypeArray> cellIds =
+      OverlayStitchIdArray(OverlayStitchSourceCellIdName, from->GetNumberOfIds(), 0);
+    std::copy(from->begin(), from->end(), cellIds->GetPointer(0));
+    to->AddArray(cellIds);
     out->GetPointData()->AddArray(
-      Ids(OverlayStitchSourcePointIdName, points.data(), static_cast<vtkIdType>(points.size())));
+      OverlayStitchIdArray(OverlayStitchSourcePointIdName, grid->GetNumberOfPoints(), -1));
   }
   ignoredCells = left;
   if (left > 0)

@@ -962,7 +962,6 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   } progressTextReset{ this };
   vtkDataObject* inputObject = vtkDataObject::GetData(inputVector[0], 0);
   vtkSmartPointer<vtkPolyData> local = vtkPolyData::SafeDownCast(inputObject);
-  vtkIdType gridCellsIgnored = 0;
   if (auto* grid = vtkUnstructuredGrid::SafeDownCast(inputObject))
   {
     // Its cells' ids, as polydata renumbers them, only in a serial run: a
@@ -973,8 +972,14 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
     const std::string where =
       ranks > 1 ? "the piece of rank " + std::to_string(controller->GetLocalProcessId()) : "";
     std::vector<OverlayStitchNote> notes;
-    local = OverlayStitchPolyDataOf(grid, ranks <= 1, where, notes, gridCellsIgnored);
+    vtkIdType ignoredCells = 0;
+    local = OverlayStitchPolyDataOf(grid, ranks <= 1, where, notes, ignoredCells);
     WarnOf(this, notes);
+    if (ignoredCells > 0)
+    {
+      // Counted on every rank, summed by the gather.
+      local = OverlayStitchWithIgnoredCells(local, ignoredCells);
+    }
   }
   vtkPolyData* mesh = vtkPolyData::GetData(outputVector, 0);
   vtkPolyData* edges = vtkPolyData::GetData(outputVector, 1);
@@ -1004,12 +1009,6 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
     // Said here, on the rank that holds the blocks: other ranks' notes do
     // not reach rank 0.
     WarnOf(this, combination.NotCarried);
-    gridCellsIgnored += combination.IgnoredGridCells;
-  }
-  // Grid cells left out are counted on every rank and summed by the gather.
-  if (local && gridCellsIgnored > 0)
-  {
-    local = OverlayStitchWithIgnoredCells(local, gridCellsIgnored);
   }
   // Parallel runs (pvbatch, pvserver): every rank takes part in gathering the whole input
   // on rank 0, which meshes it; the other ranks keep empty outputs (OverlayStitchGather.h).

@@ -2649,6 +2649,7 @@ int TestUnstructuredGrid()
                                "cell 0 (vtkTetra)" }) &&
       !b.Messages->HasWarning({ "neither polydata nor unstructured grids" }),
     "a grid block is meshed with the others, its ignored cells named by block");
+  Check(Statistic(mesh, "IgnoredCells") == 2, "IgnoredCells counts a grid block's cells");
   vtkPolyData* edges = b.Mesher->GetEdgesOutput();
   auto* block = vtkIdTypeArray::SafeDownCast(edges->GetCellData()->GetArray("InputBlockId"));
   auto* ids = vtkIdTypeArray::SafeDownCast(edges->GetCellData()->GetArray("InputCellId"));
