@@ -25,8 +25,11 @@ class vtkUnstructuredGrid;
 /// order) and polygon cells polys; triangle strips strips. vtkPolyData
 /// numbers its cells by kind, so with sourceIds each cell carries its id in
 /// grid and each point its own (the arrays of OverlayStitchGather.h), which
-/// the outputs' InputCellId and the messages then give. Cells of other types
-/// (volumes, quadratic and higher-order cells, empty cells) are left out and
+/// the outputs' InputCellId and the messages then give. Quadratic, cubic and
+/// Lagrange cells are read through their nodes: a curve as the polyline of
+/// its nodes in order along it, a face as the polygon of its boundary's
+/// nodes (the mesh has no curved edges). Cells of other types (volumes,
+/// Bezier cells, empty cells) are left out and
 /// counted in ignoredCells; notes then receives a warning that names the
 /// first by its id (in `where`, e.g. "block 3", or the input when empty) and
 /// its type. Cell arrays shorter than the cells are left out too, each with a
