@@ -80,7 +80,9 @@ the default --min-angle 30).
 INPUT                  Triangle .poly (holes honoured) or .node file, or
                        .vtp / .vtu / .vtk polydata or unstructured grid
                        (lines and polylines are segments, polygons give
-                       their edges, every point kept; volumes ignored)
+                       their edges, every point kept; quadratic and
+                       Lagrange cells read through their nodes; volumes
+                       ignored)
   -o, --output FILE    write the mesh, in the format of FILE's extension:
                        .vtp, .vtu (VTK XML, zlib level 1), .vtk (legacy VTK),
                        or .node (Triangle: FILE.node, .ele and .edge side by
@@ -664,6 +666,17 @@ bool ParseArguments(int argc, char* argv[], Arguments& args)
       Fail("'" + path + "' would be written twice (-o and --svg): choose another name", 2);
     }
     targets.push_back(target);
+    // Said before meshing, which can take long, not after it.
+    if (std::filesystem::is_directory(target, ec))
+    {
+      Fail("cannot write '" + path + "': " + std::generic_category().message(EISDIR));
+    }
+    const std::filesystem::path folder = target.parent_path();
+    if (!folder.empty() && !std::filesystem::is_directory(folder, ec))
+    {
+      Fail("cannot write '" + path + "': " + std::generic_category().message(ENOENT) +
+        " (no directory '" + folder.string() + "'; nothing is meshed or written)");
+    }
   }
 
   const std::string in = Extension(args.input);
@@ -1248,16 +1261,19 @@ int Run(int argc, char* argv[], OsmOutputWindow* window)
   }
   if (!args.svg.empty())
   {
+    // The mesh file is written by now: a failure here says it is kept.
+    const std::string kept =
+      args.output.empty() ? "" : " (the mesh is written to '" + args.output + "')";
     std::ofstream svg(args.svg, std::ios::binary);
     if (!svg)
     {
-      Fail("cannot write '" + args.svg + "': " + std::generic_category().message(errno));
+      Fail("cannot write '" + args.svg + "': " + std::generic_category().message(errno) + kept);
     }
     osm::writeSvg(svg, ToResult(mesh, edges));
     svg.close();
     if (!svg)
     {
-      Fail("error while writing '" + args.svg + "'");
+      Fail("error while writing '" + args.svg + "'" + kept);
     }
   }
   if (args.stats)

@@ -793,6 +793,17 @@ def group_errors():
                  "unwritable .node output")
     expect_error([data("square_hole.poly"), "--svg", out("no/such/dir/x.svg")], 1, ["x.svg"],
                  "unwritable --svg output")
+    # Said before meshing, so no output is left of a run that failed (the
+    # .vtp was written, then the --svg failed).
+    if os.path.exists(out("before-svg.vtp")):
+        os.remove(out("before-svg.vtp"))
+    expect_error([data("square_hole.poly"), "-o", out("before-svg.vtp"), "--svg",
+                  out("no/such/dir/x.svg")], 1,
+                 ["cannot write '%s': No such file or directory (no directory" %
+                  out("no/such/dir/x.svg"), "nothing is meshed or written"],
+                 "an --svg into a missing directory beside a good -o")
+    check(not os.path.exists(out("before-svg.vtp")),
+          "the good -o is not written when the --svg cannot be")
     # A write that fails half way (a full disk, here a file size limit) says
     # why in one line and leaves no partial file (a review: VTK's pipeline
     # report, and a partial file left behind).
