@@ -106,15 +106,18 @@ void jacobi(Matrix3& a, Matrix3& vectors)
 PlaneFrame frameFor(const Vec3& origin, Vec3 n)
 {
   n = normalized(n);
-  int largest = 0, smallest = 0;
+  int smallest = 0;
   for (int k = 1; k < 3; ++k)
   {
-    if (std::fabs(component(n, k)) > std::fabs(component(n, largest)))
-      largest = k;
     if (std::fabs(component(n, k)) < std::fabs(component(n, smallest)))
       smallest = k;
   }
-  if (component(n, largest) < 0)
+  // Up, so that triangles turn counter-clockwise seen from +z as a z = c
+  // plane's do (a review: by the largest component, planes just either side
+  // of 45 degrees came out turned opposite ways); a vertical plane's, whose
+  // z is rounding, from +y, or +x.
+  const int up = std::fabs(n.z) > 1e-6 ? 2 : std::fabs(n.y) > 1e-6 ? 1 : 0;
+  if (component(n, up) < 0)
     n = scaled(n, -1.0);
   PlaneFrame f;
   f.origin = origin;

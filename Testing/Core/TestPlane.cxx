@@ -99,12 +99,9 @@ TEST(Plane, OrientationIsDeterministic)
 {
   const osm::Array<osm::Vec3> points = planePoints({ 1, 2, 3 }, { 1, 0, -1 }, { 0, 1, 0.5 }, 50, 2);
   const PlaneFit fit = fitPlane(points);
-  // The normal's largest component is positive, whatever the point order.
+  // The normal points up (+z), whatever the point order.
   const Vec3& n = fit.frame.normal;
-  const double largest = std::fabs(n.x) >= std::fabs(n.y) && std::fabs(n.x) >= std::fabs(n.z)
-    ? n.x
-    : (std::fabs(n.y) >= std::fabs(n.z) ? n.y : n.z);
-  EXPECT_GT(largest, 0.0);
+  EXPECT_GT(n.z, 0.0);
   osm::Array<osm::Vec3> reversed(points.rbegin(), points.rend());
   const PlaneFit again = fitPlane(reversed);
   EXPECT_NEAR(again.frame.normal.x, n.x, 1e-14);
@@ -118,6 +115,25 @@ TEST(Plane, OrientationIsDeterministic)
   EXPECT_EQ(same.frame.normal.x, n.x);
   EXPECT_EQ(same.frame.u.y, fit.frame.u.y);
   EXPECT_EQ(same.frame.origin.z, fit.frame.origin.z);
+}
+
+TEST(Plane, TheNormalPointsUpEitherSideOf45Degrees)
+{
+  // Planes z = s x: by the largest component, s = 1 (a tie) and s < 1 turned
+  // the normal down, s > 1 up (found by a review).
+  for (const double slope : { 0.5, 0.999, 1.0, 1.001, 2.0, -1.0, -0.5, -3.0 })
+  {
+    const PlaneFit fit = fitPlane(planePoints({ 1, 2, 3 }, { 1, 0, slope }, { 0, 1, 0 }, 30, 5));
+    EXPECT_GT(fit.frame.normal.z, 0.0) << "z = " << slope << " x";
+    expectOrthonormal(fit.frame);
+  }
+  // A vertical plane y = x: z is rounding, so up is +y.
+  const PlaneFit vertical = fitPlane(planePoints({ 0, 0, 0 }, { 1, 1, 0 }, { 0, 0, 1 }, 30, 6));
+  EXPECT_GT(vertical.frame.normal.y, 0.0);
+  EXPECT_LT(std::fabs(vertical.frame.normal.z), 1e-9);
+  // A plane x = c: up is +x.
+  const PlaneFit side = fitPlane(planePoints({ 4, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, 30, 7));
+  EXPECT_GT(side.frame.normal.x, 0.0);
 }
 
 TEST(Plane, PointOffThePlaneIsNamed)
