@@ -1151,7 +1151,7 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
       else
       {
         vtkWarningMacro(<< "The input's field data array HolePoints has " << components
-                        << " components (3 expected: x, y, z): ignored.");
+                        << " components (2 or 3 expected: x, y and perhaps z): ignored.");
       }
     }
   }

@@ -36,6 +36,7 @@
 
 #include "Clean.h" // formatNumber
 #include "MeshWriter.h"
+#include "OutputFile.h"
 
 #include <algorithm>
 #include <cctype>
@@ -1061,23 +1062,8 @@ void WriteMesh(const std::string& path, vtkPolyData* mesh, vtkPolyData* edges, v
     return;
   }
   vtkSmartPointer<vtkPolyData> clean = WithoutTimings(mesh);
-  // What is at the path now (through a symbolic link, the file it names):
-  // on a failure only a file this write made or changed is removed.
-  std::error_code ec;
-  std::filesystem::path target = path;
-  for (int links = 0; links < 40 && std::filesystem::is_symlink(target, ec); ++links)
-  {
-    const std::filesystem::path next = std::filesystem::read_symlink(target, ec);
-    target = next.is_absolute() ? next : target.parent_path() / next;
-  }
-  const auto stamp = [&target] {
-    std::error_code e;
-    const auto size = std::filesystem::file_size(target, e);
-    const auto time = std::filesystem::last_write_time(target, e);
-    return std::make_pair(e ? std::uintmax_t(-1) : size, time);
-  };
-  const bool existed = !ec && std::filesystem::exists(target, ec);
-  const auto before = stamp();
+  // On a failure only a file this write made or changed is removed.
+  const osm::OutputFile before(path);
   unsigned long code = vtkErrorCode::NoError;
   errno = 0;
   if (ext == ".vtp")
@@ -1115,8 +1101,7 @@ void WriteMesh(const std::string& path, vtkPolyData* mesh, vtkPolyData* edges, v
     // file (a review: a full disk left one, with that report).
     const int error = errno;
     window->Reset();
-    const bool removed = !target.empty() && std::filesystem::is_regular_file(target, ec) &&
-      (!existed || stamp() != before) && std::filesystem::remove(target, ec);
+    const bool removed = before.removeIfWritten();
     const std::string why = code == vtkErrorCode::OutOfDiskSpaceError
       ? std::string("out of disk space, or over the file size limit")
       : error != 0 ? std::generic_category().message(error)
@@ -1261,19 +1246,27 @@ int Run(int argc, char* argv[], OsmOutputWindow* window)
   }
   if (!args.svg.empty())
   {
-    // The mesh file is written by now: a failure here says it is kept.
+    // The mesh file is written by now: a failure here says it is kept, and
+    // leaves no partial drawing (a review: a full disk left half of one).
     const std::string kept =
-      args.output.empty() ? "" : " (the mesh is written to '" + args.output + "')";
+      args.output.empty() ? "" : "; the mesh is written to '" + args.output + "'";
+    const osm::OutputFile before(args.svg);
+    errno = 0;
     std::ofstream svg(args.svg, std::ios::binary);
-    if (!svg)
+    if (svg)
     {
-      Fail("cannot write '" + args.svg + "': " + std::generic_category().message(errno) + kept);
+      osm::writeSvg(svg, ToResult(mesh, edges));
+      svg.close();
     }
-    osm::writeSvg(svg, ToResult(mesh, edges));
-    svg.close();
     if (!svg)
     {
-      Fail("error while writing '" + args.svg + "'" + kept);
+      const int error = errno;
+      const bool removed = before.removeIfWritten();
+      Fail("cannot write '" + args.svg +
+        "': " + (error != 0 ? std::generic_category().message(error) : std::string("failed")) +
+        (removed           ? " (the partial file is removed" + kept + ")"
+            : kept.empty() ? ""
+                           : " (" + kept.substr(2) + ")"));
     }
   }
   if (args.stats)

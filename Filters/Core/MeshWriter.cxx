@@ -1,5 +1,6 @@
 #include "MeshWriter.h"
 
+#include "OutputFile.h"
 #include "TriangleMarkers.h"
 
 #include <algorithm>
@@ -62,28 +63,29 @@ std::string writeTriangleFiles(const std::string& base, const Result& r, const N
     (!data.edgeMarkers.empty() && data.edgeMarkers.size() != r.edges.size()))
     return "internal error: vertex attributes or markers for " + base +
       ".node do not match its vertices";
-  // Opened one by one, so that a failure names its file and reason; the
-  // files already created are removed (a user review: empty ones were left).
+  // Opened one by one, so that a failure names its file and reason; what
+  // the write made or changed is then removed (a user review: empty files
+  // were left), through a symbolic link the file it names, not the link (a
+  // second review: links were removed, their files left rewritten).
   const std::string names[3] = { base + ".node", base + ".ele", base + ".edge" };
+  const OutputFile before[3] = { OutputFile(names[0]), OutputFile(names[1]), OutputFile(names[2]) };
   std::ofstream files[3];
-  const auto removeAll = [&] {
-    for (int k = 0; k < 3; ++k)
-      if (files[k].is_open())
-      {
-        files[k].close();
-        std::remove(names[k].c_str());
-      }
+  const auto failed = [&](int k, int error) {
+    for (std::ofstream& file : files)
+      file.close();
+    bool removed = false;
+    for (const OutputFile& file : before)
+      removed = file.removeIfWritten() || removed;
+    return "cannot write " + names[k] + ": " +
+      (error != 0 ? std::generic_category().message(error) : std::string("failed")) +
+      (removed ? " (the partial files are removed)" : "");
   };
   for (int k = 0; k < 3; ++k)
   {
     errno = 0;
     files[k].open(names[k]);
     if (!files[k])
-    {
-      const std::string why = errno != 0 ? std::generic_category().message(errno) : "failed";
-      removeAll();
-      return "cannot write " + names[k] + ": " + why;
-    }
+      return failed(k, errno);
   }
   std::ofstream &node = files[0], &ele = files[1], &edge = files[2];
   const MeshEdges edges(r.mesh);
@@ -127,14 +129,15 @@ std::string writeTriangleFiles(const std::string& base, const Result& r, const N
   for (std::size_t e = 0; e < edges.size(); ++e)
     edge << e + first << ' ' << edges.lower(e) + first << ' ' << edges.higher(e) + first << ' '
          << boundaryMarker(marker[e], edges.onBoundary(e)) << '\n';
-  node.close();
-  ele.close();
-  edge.close();
-  if (node && ele && edge)
-    return std::string();
-  for (const std::string& name : names)
-    std::remove(name.c_str());
-  return "error while writing " + base + ".node/.ele/.edge (a full disk?): removed them";
+  for (int k = 0; k < 3; ++k)
+  {
+    // A full disk shows when a buffer is flushed, at the latest on closing.
+    errno = 0;
+    files[k].close();
+    if (!files[k])
+      return failed(k, errno);
+  }
+  return std::string();
 }
 
 void writeSvg(std::ostream& out, const Result& r)

@@ -819,9 +819,11 @@ def group_errors():
         resource.setrlimit(resource.RLIMIT_FSIZE, (200, 200))
     full = ("File too large", "out of disk space, or over the file size limit")
     for ext, whys in ((".vtp", full), (".vtu", full), (".vtk", full),
-                      (".node", ("error while writing",))):
+                      (".node", ("limited.node: File too large", "limited.ele: File too large")),
+                      (".svg", ("limited.svg': File too large (the partial file is removed",))):
         target = out("limited" + ext)
-        p = subprocess.run([ARGS.cli, data("square_hole.poly"), "-o", target],
+        option = "--svg" if ext == ".svg" else "-o"
+        p = subprocess.run([ARGS.cli, data("square_hole.poly"), option, target],
                            capture_output=True, text=True, timeout=600, preexec_fn=small_files)
         errors = [l for l in p.stderr.splitlines() if not l.startswith("osm-mesh: warning: ")]
         check(p.returncode == 1 and len(errors) == 1 and any(w in errors[0] for w in whys),
@@ -838,6 +840,21 @@ def group_errors():
                    capture_output=True, text=True, timeout=600, preexec_fn=small_files)
     check(os.path.islink(out("linked.vtp")) and not os.path.exists(out("linked-target.vtp")),
           "a write through a link that fails removes the partial target, not the link")
+    # The same for .node files (a second review: the links went, their files
+    # stayed rewritten), one of them a link to a file out of reach of the limit.
+    for name in ("nlinked.node", "nlinked.ele", "nlinked.edge", "nlinked-target.node"):
+        if os.path.lexists(out(name)):
+            os.remove(out(name))
+    os.symlink("nlinked-target.node", out("nlinked.node"))
+    os.symlink("/dev/full", out("nlinked.ele"))
+    p = subprocess.run([ARGS.cli, data("square_hole.poly"), "-o", out("nlinked.node")],
+                       capture_output=True, text=True, timeout=600)
+    check(p.returncode == 1 and "nlinked.ele: No space left on device" in p.stderr,
+          ".node through a link to a full device: fails naming the file and why", p.stderr[-400:])
+    check(os.path.islink(out("nlinked.node")) and os.path.islink(out("nlinked.ele")) and
+          not os.path.exists(out("nlinked-target.node")) and
+          not os.path.lexists(out("nlinked.edge")),
+          "a failed .node write removes the files it wrote through the links, not the links")
 
     square = data("square_hole.poly")
     bad = [

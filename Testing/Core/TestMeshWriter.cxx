@@ -171,10 +171,31 @@ TEST(MeshWriter, UnwritablePathGivesAReason)
   fs::remove_all(dir);
   fs::create_directories(dir / "x.edge");
   const std::string base = (dir / "x").string();
-  EXPECT_EQ(
-    writeTriangleFiles(base, squareWithSlit()), "cannot write " + base + ".edge: Is a directory");
+  EXPECT_EQ(writeTriangleFiles(base, squareWithSlit()),
+    "cannot write " + base + ".edge: Is a directory (the partial files are removed)");
   EXPECT_FALSE(fs::exists(base + ".node"));
   EXPECT_FALSE(fs::exists(base + ".ele"));
+  fs::remove_all(dir);
+}
+
+TEST(MeshWriter, AFailedWriteRemovesWhatItWroteThroughLinksNotTheLinks)
+{
+  // Found by a review: the links were removed, the file one named was left
+  // rewritten, and the message named no file.
+  if (!fs::exists("/dev/full"))
+    GTEST_SKIP() << "no /dev/full";
+  const fs::path dir = fs::temp_directory_path() / "osm-writer-links";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string base = (dir / "x").string();
+  fs::create_symlink("target.node", base + ".node");
+  fs::create_symlink("/dev/full", base + ".ele");
+  EXPECT_EQ(writeTriangleFiles(base, squareWithSlit()),
+    "cannot write " + base + ".ele: No space left on device (the partial files are removed)");
+  EXPECT_TRUE(fs::is_symlink(base + ".node"));
+  EXPECT_TRUE(fs::is_symlink(base + ".ele"));
+  EXPECT_FALSE(fs::exists(dir / "target.node"));
+  EXPECT_FALSE(fs::exists(base + ".edge"));
   fs::remove_all(dir);
 }
 
