@@ -2498,6 +2498,29 @@ vtkSmartPointer<vtkUnstructuredGrid> MixedGrid()
   return grid;
 }
 
+/// Calls visit(e, a, b) for each edge e of edges whose Input flag is set, a
+/// and b its ends; returns their number.
+vtkIdType ForEachInputEdge(
+  vtkPolyData* edges, const std::function<void(vtkIdType, const double*, const double*)>& visit)
+{
+  vtkDataArray* isInput = edges->GetCellData()->GetArray("Input");
+  vtkIdType count = 0;
+  for (vtkIdType e = 0; isInput && e < edges->GetNumberOfCells(); ++e)
+  {
+    if (isInput->GetComponent(e, 0) == 0)
+    {
+      continue;
+    }
+    ++count;
+    double a[3], b[3];
+    vtkIdList* pts = edges->GetCell(e)->GetPointIds();
+    edges->GetPoint(pts->GetId(0), a);
+    edges->GetPoint(pts->GetId(1), b);
+    visit(e, a, b);
+  }
+  return count;
+}
+
 /// Per input edge of edges: whether its InputCellId is the cell it lies on in
 /// MixedGrid and its Material that cell's; returns the number wrong (or -1
 /// without the arrays) and counts the input edges in inputEdges.
@@ -2512,18 +2535,7 @@ vtkIdType WrongGridCells(vtkPolyData* edges, vtkIdType& inputEdges)
     return -1;
   }
   vtkIdType wrong = 0;
-  inputEdges = 0;
-  for (vtkIdType e = 0; e < edges->GetNumberOfCells(); ++e)
-  {
-    if (isInput->GetComponent(e, 0) == 0)
-    {
-      continue;
-    }
-    ++inputEdges;
-    double a[3], b[3];
-    vtkIdList* pts = edges->GetCell(e)->GetPointIds();
-    edges->GetPoint(pts->GetId(0), a);
-    edges->GetPoint(pts->GetId(1), b);
+  inputEdges = ForEachInputEdge(edges, [&](vtkIdType e, const double* a, const double* b) {
     const auto inHoleSquare = [](const double* p) {
       return p[0] >= 3 && p[0] <= 7 && p[1] >= 3 && p[1] <= 7;
     };
@@ -2531,7 +2543,7 @@ vtkIdType WrongGridCells(vtkPolyData* edges, vtkIdType& inputEdges)
       std::max(a[0], b[0]) <= 2;
     const vtkIdType cell = inHoleSquare(a) && inHoleSquare(b) ? 2 : onSlit ? 4 : 3;
     wrong += ids->GetValue(e) != cell || material->GetValue(e) != 10 * cell;
-  }
+  });
   return wrong;
 }
 
@@ -2773,22 +2785,13 @@ int TestHigherOrderCells()
   chain({ curves[6], curves[8], curves[9], curves[7] }, false);
   vtkPolyData* edges = h.Mesher->GetEdgesOutput();
   vtkDataArray* isInput = edges->GetCellData()->GetArray("Input");
-  vtkIdType inputEdges = 0, stray = 0;
-  for (vtkIdType e = 0; isInput && e < edges->GetNumberOfCells(); ++e)
-  {
-    if (isInput->GetComponent(e, 0) == 0)
-    {
-      continue;
-    }
-    ++inputEdges;
-    double a[3], b[3];
-    vtkIdList* pts = edges->GetCell(e)->GetPointIds();
-    edges->GetPoint(pts->GetId(0), a);
-    edges->GetPoint(pts->GetId(1), b);
-    stray += std::none_of(pieces.begin(), pieces.end(), [&](const auto& piece) {
-      return OnSegment(a, piece.first, piece.second) && OnSegment(b, piece.first, piece.second);
+  vtkIdType stray = 0;
+  const vtkIdType inputEdges =
+    !isInput ? 0 : ForEachInputEdge(edges, [&](vtkIdType, const double* a, const double* b) {
+      stray += std::none_of(pieces.begin(), pieces.end(), [&](const auto& piece) {
+        return OnSegment(a, piece.first, piece.second) && OnSegment(b, piece.first, piece.second);
+      });
     });
-  }
   Check(inputEdges >= 32 && stray == 0,
     "every input edge lies along a cell's boundary or curve (" + std::to_string(stray) +
       " stray of " + std::to_string(inputEdges) + ")");
