@@ -320,6 +320,29 @@ int tailOf(const Rotation& r, int h)
 /// the segment's scale, not of the face's.
 constexpr double kResolvedUlps = 4096;
 
+/// The smallest distance from a vertex of polygon to a side not at it.
+double smallestGap(const Array<Point>& polygon)
+{
+  const std::size_t n = polygon.size();
+  double gap = std::numeric_limits<double>::infinity();
+  for (std::size_t j = 0; j < n; ++j)
+  {
+    const Point& a = polygon[j];
+    const Point& b = polygon[(j + 1) % n];
+    const double dx = b.x - a.x, dy = b.y - a.y, length2 = dx * dx + dy * dy;
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      if (i == j || i == (j + 1) % n)
+        continue;
+      const Point& p = polygon[i];
+      const double t =
+        length2 > 0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / length2, 0.0, 1.0) : 0.0;
+      gap = std::min(gap, std::hypot(p.x - (a.x + t * dx), p.y - (a.y + t * dy)));
+    }
+  }
+  return gap;
+}
+
 /// Why a face could not be triangulated. A face near the resolution of the
 /// input's scale (tiny segments at the crossing of long ones, 1e-13 from it
 /// at coordinates about 1) is distorted by the rounding of the points placed
@@ -334,14 +357,26 @@ Stop untriangulable(const Array<Point>& points, const Array<Point>& polygon)
   for (std::size_t i = 0; i < polygon.size(); ++i)
     for (std::size_t j = i + 1; j < polygon.size(); ++j)
       across = std::max(across, std::sqrt(dist2(polygon[i], polygon[j])));
+  const double resolved = kResolvedUlps * std::numeric_limits<double>::epsilon() * scale;
   const std::string face =
     "a face of the stitched mesh with " + std::to_string(polygon.size()) + " sides";
-  if (across <= kResolvedUlps * std::numeric_limits<double>::epsilon() * scale)
+  if (across <= resolved)
     return Stop{ "input points are closer together than double precision resolves at the "
                  "input's scale (" +
         face + ", " + roughNumber(across / scale) +
         " of the mesh's extent across, could not be triangulated)",
       true, polygon[0], { -1, -1 }, true };
+  // A wide face can be distorted too: by a point too near a long segment
+  // (found by a review, as an "internal error": a point 7e-13 from a segment
+  // 7e5 long).
+  const double gap = smallestGap(polygon);
+  if (gap <= resolved)
+    return Stop{ "input points and segments come closer than double precision resolves at the "
+                 "input's scale (" +
+        face + ", a vertex " +
+        (gap > 0 ? roughNumber(gap / scale) + " of the mesh's extent from" : "on") +
+        " a side, could not be triangulated)",
+      true, polygon[0], { -1, -1 }, false, true };
   return Stop{ "internal error: " + face + " could not be triangulated", true, polygon[0] };
 }
 

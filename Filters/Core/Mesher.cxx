@@ -771,6 +771,10 @@ Result Mesher::execute()
       formatNumber(options.minAngleDeg) };
   if (!(options.maxEdgeLength >= 0.0) || !std::isfinite(options.maxEdgeLength))
     throw Stop{ "the maximum edge length must be finite and at least 0" };
+  // (A review: Domain(7) meshed, Domain(-1) dropped every point, both "ok".)
+  if (options.domain < Domain::Auto || options.domain > Domain::Box)
+    throw Stop{ "the domain must be Auto, Enclosed, Hull or Box, not " +
+      std::to_string(static_cast<int>(options.domain)) };
   if (!(options.remeshAboveDeg >= 0.0 && options.remeshAboveDeg <= 180.0))
     throw Stop{ "the angle above which to mesh again must be between 0 (the bound) and 180 "
                 "degrees, not " +

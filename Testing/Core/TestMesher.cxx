@@ -664,6 +664,39 @@ TEST(Clean, TinySegmentsAmongCrossingsOfLongOnesAreRefusedAsBelowPrecision)
   EXPECT_EQ(merged.inputVertex[12], merged.inputVertex[13]);
 }
 
+TEST(Clean, APointTooNearALongSegmentIsRefusedAsBelowPrecision)
+{
+  // Found by a review (rays from one point at tiny angles, 19 of 2,000): a
+  // point 7.2e-13 from a segment 6.8e5 long, and one 2e-4 from the origin
+  // near a segment 2.9e4 long, distorted faces 1e-3 across, wider than the
+  // resolution test of a face's width: "internal error: a face of the
+  // stitched mesh with 12 (11) sides could not be triangulated".
+  const std::vector<Pslg> inputs = { { { { 0, 0 }, { -0.21735338111482799, -0.27277262186498719 },
+                                         { -1.0666174971516873, -1.3385762391699847 },
+                                         { -421219.69296853873, -528619.33613988408 } },
+                                       { { 0, 3 }, { 1, 2 } } },
+    { { { 0, 0 }, { 121.31474010677807, -20.172540754926672 },
+        { 0.00021062074408521072, -3.5022577826188459e-05 },
+        { 96.731459501632628, -16.084766852383854 }, { 28414.203769839667, -4724.7899600107767 } },
+      { { 0, 4 }, { 1, 2 }, { 2, 3 } } } };
+  for (const Pslg& p : inputs)
+  {
+    const Result r = mesh(p, Options{});
+    ASSERT_FALSE(r.ok);
+    EXPECT_EQ(r.error.find("internal error"), std::string::npos) << r.error;
+    EXPECT_NE(r.error.find("come closer than double precision resolves at the input's scale"),
+      std::string::npos)
+      << r.error;
+    EXPECT_NE(r.error.find("a vertex on a side"), std::string::npos) << r.error;
+    EXPECT_NE(r.error.find("a merge tolerance"), std::string::npos) << r.error;
+    // Which bends the segment onto the point, and it meshes.
+    Options merge;
+    merge.mergeTolerance = 1e-10;
+    const Result merged = mesh(p, merge);
+    EXPECT_TRUE(merged.ok) << merged.error;
+  }
+}
+
 TEST(Clean, CrossingsAreMergedOnlyWhereEverySegmentStaysStraight)
 {
   // Found by the fuzzer: four segments from (1.5e9, 15) towards the origin
@@ -2426,6 +2459,24 @@ TEST(Mesher, TheSecondMeshHonoursAnAbortAndItsAngleIsChecked)
       std::string::npos)
       << r.error;
   }
+}
+
+TEST(Mesher, ADomainOutOfRangeIsAnError)
+{
+  // Found by a review: Domain(7) meshed and Domain(-1) dropped every point,
+  // both "ok" (the VTK filter clamps its property; C++ callers do not).
+  for (const int bad : { -1, 4, 7 })
+  {
+    Options o;
+    o.domain = static_cast<Domain>(bad);
+    const Result r = mesh(square(), o);
+    EXPECT_FALSE(r.ok) << bad;
+    EXPECT_EQ(
+      r.error, "the domain must be Auto, Enclosed, Hull or Box, not " + std::to_string(bad));
+  }
+  Options box;
+  box.domain = Domain::Box;
+  EXPECT_TRUE(mesh(square(), box).ok);
 }
 
 /// The largest ratio, over the overlay's triangles, of the circumradius to
