@@ -102,8 +102,9 @@ void jacobi(Matrix3& a, Matrix3& vectors)
   }
 }
 
-/// The frame for a normal: orient it, then pick u and v.
-PlaneFrame frameFor(const Vec3& origin, Vec3 n)
+/// The frame for a normal: orient it, then pick u and v. A normal whose z is
+/// at most vertical counts as horizontal (the plane as vertical).
+PlaneFrame frameFor(const Vec3& origin, Vec3 n, double vertical = 1e-9)
 {
   n = normalized(n);
   int smallest = 0;
@@ -116,7 +117,7 @@ PlaneFrame frameFor(const Vec3& origin, Vec3 n)
   // plane's do (a review: by the largest component, planes just either side
   // of 45 degrees came out turned opposite ways); a vertical plane's, whose
   // z is rounding, from +y, or +x.
-  const int up = std::fabs(n.z) > 1e-6 ? 2 : std::fabs(n.y) > 1e-6 ? 1 : 0;
+  const int up = std::fabs(n.z) > vertical ? 2 : std::fabs(n.y) > vertical ? 1 : 0;
   if (component(n, up) < 0)
     n = scaled(n, -1.0);
   PlaneFrame f;
@@ -297,7 +298,11 @@ std::string PlaneMap::choose(const Array<Vec3>& points, bool projectToXY, double
       "XY plane";
   }
   fitted = true;
-  frame = fit.frame;
+  // Within the tolerance of the fit, the normal's tilt is rounding too: a
+  // vertical Slice's float points tilt it by about 1e-5 (a review: such
+  // planes came out turned either way).
+  const double tilt = 4 * (relativeTolerance * fit.diagonal + rounding) / fit.diagonal;
+  frame = frameFor(fit.frame.origin, fit.frame.normal, std::isfinite(tilt) ? tilt : 1e-9);
   return {};
 }
 

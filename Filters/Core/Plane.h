@@ -68,8 +68,8 @@ struct PlaneFit
 
 /// Least-squares plane through the centroid (the normal is the eigenvector of
 /// the smallest eigenvalue of the points' scatter matrix). The frame is
-/// oriented deterministically: the normal's largest component (the first of
-/// equal ones) is positive; u is the projection of the world axis least
+/// oriented deterministically: the normal points up (+z; for a plane within
+/// 1e-9 of vertical +y, or +x); u is the projection of the world axis least
 /// aligned with the normal (the first of equal ones); v = normal x u. Points
 /// in a plane z = c thus get u = x, v = y. Works at any finite magnitude
 /// (coordinates are rescaled by a power of two before squaring).

@@ -281,6 +281,25 @@ TEST(PlaneMap, TiltedInputComesBackBitForBit)
   EXPECT_NEAR(m.z, expected.z, 1e-12);
 }
 
+TEST(PlaneMap, AVerticalPlaneOfFloatPointsFacesPlusY)
+{
+  // Found by a review: in float points of a vertical plane near x = 1000 the
+  // normal's z is rounding, about 1e-5, and turned the plane either way.
+  for (unsigned seed = 1; seed <= 8; ++seed)
+  {
+    osm::Array<osm::Vec3> points =
+      planePoints({ 1000, 1000, 0.5 }, { 0.5, 0.35, 0 }, { 0, 0, 0.5 }, 14, seed);
+    for (Vec3& p : points)
+      p = { double(float(p.x)), double(float(p.y)), double(float(p.z)) };
+    osm::PlaneMap map;
+    ASSERT_EQ(map.choose(points, false, 0x1p-24), "") << seed;
+    const Vec3 a = map.toSpace({ 0, 0 }), b = map.toSpace({ 1, 0 }), c = map.toSpace({ 0, 1 });
+    // The y of (b - a) x (c - a).
+    const double ny = (b.z - a.z) * (c.x - a.x) - (b.x - a.x) * (c.z - a.z);
+    EXPECT_GT(ny, 0.0) << "seed " << seed << ": a counter-clockwise triangle faces +y";
+  }
+}
+
 TEST(PlaneMap, FloatCoordinatesOfATiltedPlaneAreCoplanar)
 {
   // Found by a user review: float input (ParaView's Slice gives it) lies
