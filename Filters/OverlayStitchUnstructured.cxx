@@ -122,6 +122,21 @@ bool HasNodesOfItsType(int type, vtkIdType n, const double* degrees)
   }
 }
 
+/// VTK's class name of a cell type (vtkCellTypes of VTK 9.2 swaps the
+/// Lagrange triangle's and quadrilateral's, found by a review).
+std::string TypeName(int type)
+{
+  switch (type)
+  {
+    case VTK_LAGRANGE_TRIANGLE:
+      return "vtkLagrangeTriangle";
+    case VTK_LAGRANGE_QUADRILATERAL:
+      return "vtkLagrangeQuadrilateral";
+    default:
+      return vtkCellTypes::GetClassNameFromTypeId(type);
+  }
+}
+
 /// The nodes of a curve cell (a line, quadratic edge, cubic line or Lagrange
 /// curve) in order along it: VTK lists its two ends first, then the inner
 /// nodes from the first end to the second.
@@ -226,7 +241,7 @@ vtkSmartPointer<vtkPolyData> OverlayStitchPolyDataOf(vtkUnstructuredGrid* grid, 
 
   std::array<vtkNew<vtkCellArray>, 4> cells;
   std::array<std::vector<vtkIdType>, 4> order; // grid's cell ids, per kind
-  vtkIdType left = 0, first = -1;
+  vtkIdType left = 0, first = -1, firstNodes = 0;
   int firstType = VTK_EMPTY_CELL;
   vtkNew<vtkIdList> ids;
   vtkNew<vtkGenericCell> cell;
@@ -244,6 +259,7 @@ vtkSmartPointer<vtkPolyData> OverlayStitchPolyDataOf(vtkUnstructuredGrid* grid, 
       {
         first = left++ == 0 ? c : first;
         firstType = first == c ? type : firstType;
+        firstNodes = first == c ? grid->GetCellSize(c) : firstNodes;
       }
       continue;
     }
@@ -298,10 +314,13 @@ vtkSmartPointer<vtkPolyData> OverlayStitchPolyDataOf(vtkUnstructuredGrid* grid, 
     notes.push_back({ {},
       "Ignored " + std::to_string(left) + " cell(s) of " +
         (where.empty() ? "the unstructured grid" : where + " (an unstructured grid)") +
-        ", the first cell " + std::to_string(first) + " (" +
-        vtkCellTypes::GetClassNameFromTypeId(firstType) +
+        ", the first cell " + std::to_string(first) + " (" + TypeName(firstType) +
+        (HigherOrderKindOf(firstType) >= 0
+            ? ", whose " + std::to_string(firstNodes) + " nodes do not make one"
+            : std::string()) +
         "): segments come from line, polyline and polygon cells (triangles, quads, pixels; "
-        "quadratic and Lagrange ones through their nodes), points from every cell and point." });
+        "quadratic, cubic and Lagrange ones through their nodes), points from every cell and "
+        "point." });
   }
   return out;
 }
