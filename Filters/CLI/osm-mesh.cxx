@@ -81,9 +81,9 @@ the default --min-angle 30).
 INPUT                  Triangle .poly (holes honoured) or .node file, or
                        .vtp / .vtu / .vtk polydata or unstructured grid
                        (lines and polylines are segments, polygons give
-                       their edges, every point kept; quadratic and
-                       Lagrange cells read through their nodes; volumes
-                       ignored)
+                       their edges, every point kept; quadratic, cubic
+                       and Lagrange cells read through their nodes;
+                       volumes and Bezier cells ignored)
   -o, --output FILE    write the mesh, in the format of FILE's extension:
                        .vtp, .vtu (VTK XML, zlib level 1), .vtk (legacy VTK),
                        or .node (Triangle: FILE.node, .ele and .edge side by
@@ -378,22 +378,34 @@ std::string Number(double value)
   return buf;
 }
 
+/// Fails, before meshing, which can take long, if path cannot be a file: a
+/// directory is there, or its folder is missing or not a directory (as the
+/// system resolves it: "missing/../x" has none).
+void FailIfNoFolderFor(const std::string& path)
+{
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+  {
+    Fail("cannot write '" + path + "': " + std::generic_category().message(EISDIR));
+  }
+  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  if (folder.empty() || std::filesystem::is_directory(folder, ec))
+  {
+    return;
+  }
+  const bool exists = std::filesystem::exists(folder, ec);
+  Fail("cannot write '" + path +
+    "': " + std::generic_category().message(exists ? ENOTDIR : ENOENT) + " ('" + folder.string() +
+    "' " + (exists ? "is not a directory" : "does not exist") + "; nothing is meshed or written)");
+}
+
 /// Parses the command line; returns false when --help or --version was answered.
 /// Where writing to path lands: absolute, normalised, through symbolic links
 /// (a dangling one too: it names the file a write creates).
 std::filesystem::path Resolved(const std::filesystem::path& path)
 {
   std::error_code ec;
-  std::filesystem::path p = std::filesystem::absolute(path, ec);
-  for (int hops = 0; hops < 40 && std::filesystem::is_symlink(p, ec); ++hops)
-  {
-    const std::filesystem::path target = std::filesystem::read_symlink(p, ec);
-    if (ec)
-    {
-      break;
-    }
-    p = target.is_absolute() ? target : p.parent_path() / target;
-  }
+  const std::filesystem::path p = osm::linkTarget(std::filesystem::absolute(path, ec));
   // (weakly_canonical leaves a relative path to a new file relative.)
   const std::filesystem::path resolved = std::filesystem::weakly_canonical(p, ec);
   return ec ? p.lexically_normal() : resolved;
@@ -667,17 +679,6 @@ bool ParseArguments(int argc, char* argv[], Arguments& args)
       Fail("'" + path + "' would be written twice (-o and --svg): choose another name", 2);
     }
     targets.push_back(target);
-    // Said before meshing, which can take long, not after it.
-    if (std::filesystem::is_directory(target, ec))
-    {
-      Fail("cannot write '" + path + "': " + std::generic_category().message(EISDIR));
-    }
-    const std::filesystem::path folder = target.parent_path();
-    if (!folder.empty() && !std::filesystem::is_directory(folder, ec))
-    {
-      Fail("cannot write '" + path + "': " + std::generic_category().message(ENOENT) +
-        " (no directory '" + folder.string() + "'; nothing is meshed or written)");
-    }
   }
 
   const std::string in = Extension(args.input);
@@ -694,6 +695,10 @@ bool ParseArguments(int argc, char* argv[], Arguments& args)
       Fail(
         "cannot write '" + args.output + "': the output must end in .vtp, .vtu, .vtk or .node", 2);
     }
+  }
+  for (const std::string& path : written)
+  {
+    FailIfNoFolderFor(path);
   }
   return true;
 }

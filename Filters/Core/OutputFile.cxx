@@ -5,16 +5,25 @@
 namespace osm
 {
 
-OutputFile::OutputFile(const std::string& path)
-  : target_(path)
+std::filesystem::path linkTarget(const std::filesystem::path& path)
 {
   std::error_code ec;
-  for (int links = 0; links < 40 && std::filesystem::is_symlink(target_, ec); ++links)
+  std::filesystem::path p = path;
+  for (int links = 0; links < 40 && std::filesystem::is_symlink(p, ec); ++links)
   {
-    const std::filesystem::path next = std::filesystem::read_symlink(target_, ec);
-    target_ = next.is_absolute() ? next : target_.parent_path() / next;
+    const std::filesystem::path next = std::filesystem::read_symlink(p, ec);
+    if (ec)
+      break;
+    p = next.is_absolute() ? next : p.parent_path() / next;
   }
-  existed_ = !ec && std::filesystem::exists(target_, ec);
+  return p;
+}
+
+OutputFile::OutputFile(const std::string& path)
+  : target_(linkTarget(path))
+{
+  std::error_code ec;
+  existed_ = std::filesystem::exists(target_, ec);
   before_ = stamp();
 }
 

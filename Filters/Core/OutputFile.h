@@ -11,8 +11,11 @@
 namespace osm
 {
 
-/// The file a write to path will change (through symbolic links, the file
-/// they name), as it is before the write.
+/// The file a write to path changes: through symbolic links (a dangling one
+/// too), the file they name.
+std::filesystem::path linkTarget(const std::filesystem::path& path);
+
+/// The file a write to path will change, as it is before the write.
 class OutputFile
 {
 public:

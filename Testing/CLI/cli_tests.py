@@ -799,11 +799,22 @@ def group_errors():
         os.remove(out("before-svg.vtp"))
     expect_error([data("square_hole.poly"), "-o", out("before-svg.vtp"), "--svg",
                   out("no/such/dir/x.svg")], 1,
-                 ["cannot write '%s': No such file or directory (no directory" %
-                  out("no/such/dir/x.svg"), "nothing is meshed or written"],
+                 ["cannot write '%s': No such file or directory ('%s' does not exist" %
+                  (out("no/such/dir/x.svg"), out("no/such/dir")), "nothing is meshed or written"],
                  "an --svg into a missing directory beside a good -o")
     check(not os.path.exists(out("before-svg.vtp")),
           "the good -o is not written when the --svg cannot be")
+    # As the system resolves the path (a review: "missing/../x" passed the
+    # check, normalised), and a file where the directory should be.
+    expect_error([data("square_hole.poly"), "-o", out("no-such/../x.vtp")], 1,
+                 ["does not exist", "nothing is meshed or written"], "an output through missing/..")
+    expect_error([data("square_hole.poly"), "-o", os.path.join(data("square_hole.poly"), "x.vtp")],
+                 1, ["Not a directory", "is not a directory; nothing is meshed or written"],
+                 "an output under a file")
+    # Usage errors come first, with their own status (a review: status 1 for
+    # the output's folder hid the wrong input extension).
+    expect_error([out("input.txt"), "-o", out("no/such/dir/x.vtp")], 2,
+                 ["the input must end in"], "a wrong input extension and a missing directory")
     # A write that fails half way (a full disk, here a file size limit) says
     # why in one line and leaves no partial file (a review: VTK's pipeline
     # report, and a partial file left behind).
