@@ -182,6 +182,28 @@ Pslg tinySegmentsAtACrossing(std::mt19937_64& rng)
   return p;
 }
 
+/// Rays from one point at angle steps of 1e-12 to 1e-3 radians and lengths
+/// from 1e-6 to 1e6, some of their ends joined in turn: points far closer to
+/// long segments than their lengths' rounding (a review's family).
+Pslg raysAtTinyAngles(std::mt19937_64& rng)
+{
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  Pslg p;
+  p.points.push_back({ 0, 0 });
+  const double start = 2 * kPi * U(rng);
+  const int rays = 3 + static_cast<int>(rng() % 7);
+  for (int k = 0; k < rays; ++k)
+  {
+    const double angle = start + k * std::pow(10.0, -12 + 9 * U(rng));
+    const double length = std::pow(10.0, -6 + 12 * U(rng));
+    p.points.push_back({ length * std::cos(angle), length * std::sin(angle) });
+    p.segments.push_back({ 0, k + 1 });
+    if (k > 0 && rng() % 2)
+      p.segments.push_back({ k, k + 1 });
+  }
+  return p;
+}
+
 /// Segments drawn with no regard for each other, as digitised networks often
 /// are (roads over rivers with no node where they meet): 3 to 30 random
 /// segments in the unit square crossing freely, a third of them long, some
@@ -560,6 +582,33 @@ TEST(Properties, TinySegmentsAtCrossingsOfLongOnes)
     std::mt19937_64 rng(seed);
     const Pslg p = tinySegmentsAtACrossing(rng);
     const std::string name = "tiny segments at a crossing, seed " + std::to_string(seed);
+    const Result r = mesh(p, hull);
+    if (!r.ok)
+    {
+      EXPECT_NE(r.error.find("than double precision"), std::string::npos)
+        << name << ": " << r.error;
+      continue;
+    }
+    meshAndValidate(p, name, hull);
+    ++meshed;
+  }
+  EXPECT_GE(meshed, cases / 3);
+}
+
+TEST(Properties, RaysAtTinyAnglesMeshOrAreRefusedAsBelowPrecision)
+{
+  // A review found 19 of 2,000 such fans refused as an "internal error": a
+  // point 1e-18 of the scale from a long segment distorted a wide face (13
+  // of these 2,000 seeds, the first 125: hence 300 cases by default).
+  Options hull;
+  hull.domain = Domain::Hull;
+  int meshed = 0;
+  const int cases = 12 * kSeeds;
+  for (int seed = 0; seed < cases; ++seed)
+  {
+    std::mt19937_64 rng(seed);
+    const Pslg p = raysAtTinyAngles(rng);
+    const std::string name = "rays at tiny angles, seed " + std::to_string(seed);
     const Result r = mesh(p, hull);
     if (!r.ok)
     {
