@@ -156,9 +156,14 @@ void mergeDuplicates(const Pslg& in, CleanPslg& out, Statistics& stats,
     out.pointOf[i] = out.pointOf[r];
   }
   if (stats.duplicatePointsMerged > 0)
+  {
+    // A merge within a tolerance moves the point: give both positions then.
+    const Point &moved = in.points[example], &kept = in.points[representative[example]];
     warnings.push_back("merged " + std::to_string(stats.duplicatePointsMerged) +
-      " duplicate point(s), e.g. point " + std::to_string(example) + " with point " +
-      std::to_string(representative[example]) + " at " + formatPoint(in.points[example], format));
+      " duplicate point(s), e.g. point " + std::to_string(example) +
+      (moved == kept ? "" : " at " + formatPoint(moved, format)) + " with point " +
+      std::to_string(representative[example]) + " at " + formatPoint(kept, format));
+  }
 }
 
 /// Sorts the segments and drops repeats of one (the first in input order

@@ -866,6 +866,18 @@ def group_errors():
           not os.path.exists(out("nlinked-target.node")) and
           not os.path.lexists(out("nlinked.edge")),
           "a failed .node write removes the files it wrote through the links, not the links")
+    # An --svg that fails after a good -o says the mesh file is kept, and keeps it.
+    for name in ("svgkept.vtp", "svgfull.svg"):
+        if os.path.lexists(out(name)):
+            os.remove(out(name))
+    os.symlink("/dev/full", out("svgfull.svg"))
+    p = subprocess.run([ARGS.cli, data("square_hole.poly"), "-o", out("svgkept.vtp"),
+                        "--svg", out("svgfull.svg")], capture_output=True, text=True, timeout=600)
+    check(p.returncode == 1 and "No space left on device" in p.stderr and
+          "the mesh is written to '%s'" % out("svgkept.vtp") in p.stderr and
+          os.path.getsize(out("svgkept.vtp")) > 0 and os.path.islink(out("svgfull.svg")),
+          "an --svg failing after a good -o names the mesh file it kept, and keeps it",
+          p.stderr[-400:])
 
     square = data("square_hole.poly")
     bad = [

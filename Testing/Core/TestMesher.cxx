@@ -184,6 +184,19 @@ TEST(Clean, MergesDuplicatePoints)
   EXPECT_EQ(r.inputVertex[4], r.inputVertex[2]);
 }
 
+TEST(Clean, AMergeWithinTheToleranceGivesBothPositions)
+{
+  Pslg p = square();
+  p.points.push_back({ 1, 1.25 }); // 0.25 above point 2 at (1, 1)
+  Options o;
+  o.mergeTolerance = 0.3;
+  const Result r = mesh(p, o);
+  ASSERT_TRUE(r.ok) << r.error;
+  EXPECT_EQ(r.stats.duplicatePointsMerged, 1u);
+  EXPECT_TRUE(mentions(r.warnings, "point 4 at (1, 1.25) with point 2 at (1, 1)"))
+    << ::testing::PrintToString(r.warnings);
+}
+
 TEST(Clean, MessagesWritePointsWithTheCallersFormat)
 {
   Pslg p = square();

@@ -231,8 +231,9 @@ int TestMergeTolerance()
     "tolerance 1e-6: one point merged (DuplicatePointsMerged = " +
       Num(Statistic(mesh, "DuplicatePointsMerged")) + ")");
   Check(CountOrigin(mesh, 0) == 5, "tolerance 1e-6: 5 input vertices left");
-  Check(h.Messages->HasWarning({ "merged 1 duplicate point(s)", "point 5 with point 4" }),
-    "tolerance 1e-6: a warning says point 5 was merged with point 4");
+  Check(h.Messages->HasWarning(
+          { "merged 1 duplicate point(s)", "point 5 at (5.0000001, 5) with point 4 at (5, 5)" }),
+    "tolerance 1e-6: a warning says point 5 was merged with point 4, and where each was");
   const auto points = PointSet(mesh);
   Check(points.count({ 5.0, 5.0, 0.0 }) == 1 && points.count({ 5 + 1e-7, 5.0, 0.0 }) == 0,
     "the first of the merged points is kept, at its exact coordinates");
@@ -1380,8 +1381,9 @@ int TestMatrix()
   meshOk(mesh, "near duplicate, tolerance 1e-6");
   Check(Statistic(mesh, "DuplicatePointsMerged") == 1 && CountOrigin(mesh, 0) == 5,
     "near duplicate, tolerance 1e-6: merged and counted");
-  Check(h.Messages->HasWarning({ "merged 1 duplicate point(s)", "point 5 with point 4" }),
-    "near duplicate, tolerance 1e-6: the warning names points 5 and 4");
+  Check(h.Messages->HasWarning(
+          { "merged 1 duplicate point(s)", "point 5 at (5, 5.000000001) with point 4 at (5, 5)" }),
+    "near duplicate, tolerance 1e-6: the warning names points 5 and 4 where they were");
   h.Mesher->SetMergeTolerance(0.0);
 
   // 5. Zero-length segments: a repeated id, and two ids at the same place -> dropped, counted.
