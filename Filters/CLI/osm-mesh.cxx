@@ -47,6 +47,9 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#if defined(__unix__) || defined(__APPLE__)
+#include <unistd.h> // access
+#endif
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -378,9 +381,26 @@ std::string Number(double value)
   return buf;
 }
 
+/// A file, or the folder a new file goes into, that the user may not write
+/// to (its permissions, a read-only file system) fails here, not after
+/// minutes of meshing.
+void FailIfNotWritable(const std::string& path, const std::string& folder)
+{
+#if defined(__unix__) || defined(__APPLE__)
+  std::error_code ec;
+  const std::string& target = std::filesystem::exists(path, ec) ? path : folder;
+  const int error = access(target.c_str(), W_OK) == 0 ? 0 : errno;
+  if (error == EACCES || error == EPERM || error == EROFS)
+  {
+    Fail("cannot write '" + path + "': " + std::generic_category().message(error) +
+      (target == path ? "" : " (in '" + folder + "')") + "; nothing is meshed or written");
+  }
+#endif
+}
+
 /// Fails, before meshing, which can take long, if path cannot be a file: a
 /// directory is there, or its folder is missing or not a directory (as the
-/// system resolves it: "missing/../x" has none).
+/// system resolves it: "missing/../x" has none), or it may not be written.
 void FailIfNoFolderFor(const std::string& path)
 {
   std::error_code ec;
@@ -391,6 +411,7 @@ void FailIfNoFolderFor(const std::string& path)
   const std::filesystem::path folder = std::filesystem::path(path).parent_path();
   if (folder.empty() || std::filesystem::is_directory(folder, ec))
   {
+    FailIfNotWritable(path, folder.empty() ? "." : folder.string());
     return;
   }
   const bool exists = std::filesystem::exists(folder, ec);

@@ -20,6 +20,7 @@ import shutil
 import struct
 import subprocess
 import sys
+import tempfile
 import xml.etree.ElementTree as ET
 
 ARGS = None
@@ -804,6 +805,38 @@ def group_errors():
                  "an --svg into a missing directory beside a good -o")
     check(not os.path.exists(out("before-svg.vtp")),
           "the good -o is not written when the --svg cannot be")
+    # A folder or a file the user may not write to fails before meshing too
+    # (it failed after). Root may write anywhere: it runs as nobody then.
+    as_user = [] if os.geteuid() != 0 else (
+        ["setpriv", "--reuid", "65534", "--regid", "65534", "--clear-groups"]
+        if shutil.which("setpriv") else None)
+    if as_user is None:
+        print("skip  unwritable folders: running as root without setpriv")
+    else:
+        locked = tempfile.mkdtemp(prefix="osm-locked-")
+        os.chmod(locked, 0o755)
+        readonly = os.path.join(locked, "readonly.vtp")
+        open(readonly, "w").close()
+        os.chmod(readonly, 0o444)
+        inside = os.path.join(locked, "folder")
+        os.mkdir(inside, 0o555)
+        writable = tempfile.mkdtemp(prefix="osm-open-")
+        os.chmod(writable, 0o777)
+        good = os.path.join(writable, "good.vtp")
+        for args, why in (
+                (["-o", os.path.join(inside, "x.vtp")],
+                 "Permission denied (in '%s'); nothing is meshed or written" % inside),
+                (["-o", readonly], "cannot write '%s': Permission denied; nothing" % readonly),
+                (["-o", good, "--svg", os.path.join(inside, "x.svg")],
+                 "x.svg': Permission denied (in '%s'); nothing is meshed" % inside)):
+            p = subprocess.run(as_user + [ARGS.cli, os.path.abspath(data("square_hole.poly"))] +
+                               args, capture_output=True, text=True, timeout=600)
+            check(p.returncode == 1 and why in p.stderr and not os.path.exists(good) and
+                  os.listdir(inside) == [] and os.path.getsize(readonly) == 0,
+                  "an output the user may not write fails before meshing: %s" % " ".join(args),
+                  p.stderr[-400:])
+        shutil.rmtree(locked)
+        shutil.rmtree(writable)
     # As the system resolves the path (a review: "missing/../x" passed the
     # check, normalised), and a file where the directory should be.
     expect_error([data("square_hole.poly"), "-o", out("no-such/../x.vtp")], 1,
