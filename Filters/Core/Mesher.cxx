@@ -88,21 +88,71 @@ struct Work
   Array<Point> regionSeeds;
 };
 
-/// Power-of-two scale bringing the largest coordinate of a point into
-/// [0.5, 1): exact, so input vertices come back bit for bit, and the
-/// predicates cannot overflow. Hole and region seeds far beyond the points,
-/// outside every triangle, are moved in to 16 (scaled), still outside: such a
-/// seed set the scale before, and a seed at 1e100 made the points "too small".
-std::string normalise(
-  Work& w, const Pslg& input, const Array<int>& pointOf, const PointFormat& format, int& exponent)
+/// The working coordinates of the rounds: the user's, less origin, scaled by
+/// 2^-exponent (normalise).
+struct Frame
 {
+  int exponent = 0;
+  Point origin{ 0, 0 };
+
+  /// A working point in the user's coordinates (rounded, for messages).
+  Point toUser(const Point& p) const
+  {
+    return { std::ldexp(p.x, exponent) + origin.x, std::ldexp(p.y, exponent) + origin.y };
+  }
+};
+
+/// An origin that subtracts exactly from every coordinate in [lo, hi] (x - c
+/// is exact for c/2 <= x <= 2c), where the points lie far from 0 for their
+/// spread: data at an offset (map coordinates) then keeps double precision
+/// for its features, not for the offset (a review: a square 100 wide at 1e13
+/// was bent through overlay points by 0.0176, 9 units in the last place
+/// there, and one at 1e14 refused). 0 where that gains less than 4 bits.
+double exactOrigin(double lo, double hi)
+{
+  if (lo > 0 && hi - lo <= hi / 16)
+    return lo;
+  if (hi < 0 && hi - lo <= -lo / 16)
+    return hi;
+  return 0;
+}
+
+/// Power-of-two scale bringing the largest coordinate of a point into
+/// [0.5, 1), after subtracting exactOrigin per axis: both exact, so input
+/// vertices come back bit for bit, and the predicates cannot overflow. Hole
+/// and region seeds far beyond the points, outside every triangle, are moved
+/// in to 16 (scaled), still outside: such a seed set the scale before, and a
+/// seed at 1e100 made the points "too small".
+std::string normalise(Work& w, const Pslg& input, const Array<int>& pointOf,
+  const PointFormat& format, bool translate, Frame& frame)
+{
+  frame = Frame{};
+  if (translate && !w.points.empty())
+  {
+    Point lo = w.points.front(), hi = lo;
+    for (const Point& p : w.points)
+    {
+      lo = { std::min(lo.x, p.x), std::min(lo.y, p.y) };
+      hi = { std::max(hi.x, p.x), std::max(hi.y, p.y) };
+    }
+    frame.origin = { exactOrigin(lo.x, hi.x), exactOrigin(lo.y, hi.y) };
+    if (frame.origin.x != 0 || frame.origin.y != 0)
+    {
+      for (Point& p : w.points)
+        p = { p.x - frame.origin.x, p.y - frame.origin.y };
+      for (Point& p : w.holes)
+        p = { p.x - frame.origin.x, p.y - frame.origin.y };
+      for (Point& p : w.regionSeeds)
+        p = { p.x - frame.origin.x, p.y - frame.origin.y };
+    }
+  }
+  int& exponent = frame.exponent;
   double maxAbs = 0;
   for (const Point& p : w.points)
     maxAbs = std::max({ maxAbs, std::fabs(p.x), std::fabs(p.y) });
   if (maxAbs == 0)
     for (const Point& p : w.holes)
       maxAbs = std::max({ maxAbs, std::fabs(p.x), std::fabs(p.y) });
-  exponent = 0;
   if (maxAbs == 0)
     return {};
   // The padded box reaches about 5 times the largest coordinate: it must stay finite.
@@ -566,17 +616,17 @@ std::string segmentName(const Work& w, int s)
 
 /// "input segment A and input segment B cross near (x, y)", in user coordinates.
 std::string describeCrossing(
-  const Work& w, const SegmentCrossing& c, int exponent, const PointFormat& format)
+  const Work& w, const SegmentCrossing& c, const Frame& frame, const PointFormat& format)
 {
-  const Point p{ std::ldexp(c.p.x, exponent), std::ldexp(c.p.y, exponent) };
+  const Point p = frame.toUser(c.p);
   return segmentName(w, c.a) + " and " + segmentName(w, c.b) + " cross near " +
     formatPoint(p, format);
 }
 
-std::string crossingError(
-  const Work& w, const Array<SegmentCrossing>& crossings, int exponent, const PointFormat& format)
+std::string crossingError(const Work& w, const Array<SegmentCrossing>& crossings,
+  const Frame& frame, const PointFormat& format)
 {
-  std::string msg = describeCrossing(w, crossings.front(), exponent, format);
+  std::string msg = describeCrossing(w, crossings.front(), frame, format);
   // At least: segments through one point are found as pairs in a chain, not
   // every pair of them.
   if (crossings.size() > 1)
@@ -685,14 +735,20 @@ std::string openOutlineWarning(
 class Mesher
 {
 public:
-  Mesher(const Pslg& input, const Options& options, Progress* progress)
+  /// translate: whether points far from 0 for their spread are meshed about
+  /// an origin near them (exactOrigin).
+  Mesher(const Pslg& input, const Options& options, Progress* progress, bool translate)
     : input(input)
     , options(options)
     , run(progress)
+    , translate(translate)
   {}
   Result execute();
   /// The warnings collected so far (when a Stop ends the run, they still hold).
   std::vector<std::string> takeWarnings() { return std::move(res.warnings); }
+  /// Whether the run stopped because adding the origin back to the mesh's
+  /// points turned a triangle over or past the angle bound: mesh without it.
+  bool translationRoundedBadly() const { return roundedBadly; }
 
 private:
   void meshRounds(Work& w);
@@ -709,7 +765,10 @@ private:
   RunContext run;
   Result res;
   CleanPslg clean;
-  int exponent = 0;
+  const bool translate;
+  bool roundedBadly = false;
+  Frame frame;
+  const int& exponent = frame.exponent;
   std::string firstCrossing;       ///< the first crossing split, for the warning
   std::size_t crossingsJoined = 0; ///< crossing points joined within the merge tolerance
   SeedsAcross seedsAcrossJoins;    ///< seeds that segments those joins bent crossed
@@ -800,7 +859,8 @@ Result Mesher::execute()
   w.holes = input.holes;
   for (const RegionAttribute& region : input.regions)
     w.regionSeeds.push_back(region.seed);
-  if (std::string e = normalise(w, input, clean.pointOf, options.pointFormat, exponent); !e.empty())
+  if (std::string e = normalise(w, input, clean.pointOf, options.pointFormat, translate, frame);
+      !e.empty())
     throw Stop{ e };
   for (const Segment& s : w.segments)
     w.piece.push_back({ w.points[s[0]], w.points[s[1]] });
@@ -825,9 +885,7 @@ Result Mesher::execute()
     if (!names.empty())
       stop.reason += " (" + names + ")";
     if (stop.located)
-      stop.reason += " near " +
-        formatPoint({ std::ldexp(stop.at.x, exponent), std::ldexp(stop.at.y, exponent) },
-          options.pointFormat);
+      stop.reason += " near " + formatPoint(frame.toUser(stop.at), options.pointFormat);
     // Borders that two polygons share, digitised twice, differ by such gaps;
     // segments meant to meet at one point cross at points rounded apart.
     const std::string tolerance = std::string(options.mergeTolerance > 0 ? "larger " : "") +
@@ -1161,19 +1219,19 @@ void Mesher::meshRounds(Work& w)
     if (!walk.segmentCrossings.empty())
     {
       if (!options.resolveCrossings)
-        throw Stop{ crossingError(w, walk.segmentCrossings, exponent, options.pointFormat) +
+        throw Stop{ crossingError(w, walk.segmentCrossings, frame, options.pointFormat) +
           "; enable resolving intersections to split them (the filter's ResolveIntersections; "
           "osm-mesh without --no-resolve)" };
       // Each round splits at rounded points, which may cross again.
       if (++crossingRounds >= 5)
         throw Stop{ "could not resolve all crossings after 5 rounds of splitting them at their "
                     "rounded intersection points, which crossed again: " +
-            crossingError(w, walk.segmentCrossings, exponent, options.pointFormat) +
+            crossingError(w, walk.segmentCrossings, frame, options.pointFormat) +
             "; the segments there come closer than double precision separates",
           false, {}, { -1, -1 }, false, true };
       if (st.crossingsSplit == 0)
         firstCrossing =
-          describeCrossing(w, walk.segmentCrossings.front(), exponent, options.pointFormat);
+          describeCrossing(w, walk.segmentCrossings.front(), frame, options.pointFormat);
       splitCrossings(w, walk.segmentCrossings, st);
       inputPointsOnSegments = walk.splitsAtInputVertices > 0;
       SeedsAcross seeds;
@@ -1222,8 +1280,7 @@ void Mesher::meshRounds(Work& w)
       const auto& [a, b, u, v] = *overlap;
       const auto at = [&](int vertex) {
         const Point& q = overlay.mesh.points[vertex];
-        return formatPoint(
-          { std::ldexp(q.x, exponent), std::ldexp(q.y, exponent) }, options.pointFormat);
+        return formatPoint(frame.toUser(q), options.pointFormat);
       };
       res.warnings.push_back(std::to_string(count) +
         " piece(s) of input segments lie along another input segment and are meshed once, e.g. " +
@@ -1386,9 +1443,7 @@ std::string Mesher::longEdgesWarning(const LongEdges& split) const
   return std::to_string(split.remaining) +
     " triangle(s) keep an edge longer than the maximum edge length (or their region's bound "
     "for its maximum area), up to " +
-    ratio + " times it, e.g. near " +
-    formatPoint(
-      { std::ldexp(split.at.x, exponent), std::ldexp(split.at.y, exponent) }, options.pointFormat) +
+    ratio + " times it, e.g. near " + formatPoint(frame.toUser(split.at), options.pointFormat) +
     ": it lies on a segment, or splitting it would make an angle above the bound";
 }
 
@@ -1489,6 +1544,15 @@ void Mesher::assignRegionAttributes(const Carving& carve)
   res.regionAttribute.resize(res.regionId.size());
   for (std::size_t t = 0; t < res.regionId.size(); ++t)
     res.regionAttribute[t] = ofRegion[res.regionId[t]];
+}
+
+/// Whether a triangle of the mesh is not counter-clockwise (exactly).
+bool anyTurnedOver(const TriMesh& mesh)
+{
+  for (const Triangle& t : mesh.triangles)
+    if (!(orient2d(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]) > 0))
+      return true;
+  return false;
 }
 
 /// Smallest and largest angle of the mesh in degrees, exactly as angleAt gives
@@ -1617,6 +1681,8 @@ void Mesher::buildOutput(const Work& w, const PlanarGraph& g, Completion& c, Car
     return normalPowers ? Point{ p.x * factor, p.y * factor }
                         : Point{ std::ldexp(p.x, e), std::ldexp(p.y, e) };
   };
+  // Adding the origin back is exact for the input vertices (normalise) and
+  // rounds the others once, to the nearest point in the user's coordinates.
   auto unscale = [&](Point p) {
     const Point u = scaleBy(p, exponent, up);
     const Point back = scaleBy(u, -exponent, down);
@@ -1624,7 +1690,7 @@ void Mesher::buildOutput(const Work& w, const PlanarGraph& g, Completion& c, Car
       throw Stop{ "the mesh needs points too close to zero for double precision at this "
                   "scale (coordinates below about 1e-290)",
         true, p };
-    return u;
+    return Point{ u.x + frame.origin.x, u.y + frame.origin.y };
   };
   Array<int> newIndex;
   newIndex.assign(g.points.size(), -1);
@@ -1703,6 +1769,12 @@ void Mesher::buildOutput(const Work& w, const PlanarGraph& g, Completion& c, Car
   st.outputTriangles = res.mesh.triangles.size();
   run.report(0.6);
   angleExtremes(res.mesh, st.minAngleDeg, st.maxAngleDeg, run);
+  if ((frame.origin.x != 0 || frame.origin.y != 0) &&
+    (st.maxAngleDeg > st.predictedMaxAngleDeg || anyTurnedOver(res.mesh)))
+  {
+    roundedBadly = true;
+    throw Stop{ "adding the origin back rounded the mesh badly" };
+  }
   if (st.maxAngleDeg > st.predictedMaxAngleDeg)
     res.warnings.push_back(
       angleBoundWarning(res.mesh, st.predictedMaxAngleDeg, options.pointFormat));
@@ -1728,16 +1800,18 @@ void Mesher::buildOutput(const Work& w, const PlanarGraph& g, Completion& c, Car
 namespace
 {
 
-Result meshOnce(const Pslg& input, const Options& options, Progress* progress)
+Result meshIn(
+  const Pslg& input, const Options& options, Progress* progress, bool translate, bool& roundedBadly)
 {
   const pages::Reuse reuse; // declared first: the mesher's arrays are freed into it
-  Mesher mesher(input, options, progress);
+  Mesher mesher(input, options, progress, translate);
   try
   {
     return mesher.execute();
   }
   catch (const Stop& stop)
   {
+    roundedBadly = mesher.translationRoundedBadly();
     Result r;
     r.error = stop.reason;
     r.warnings = mesher.takeWarnings();
@@ -1749,6 +1823,26 @@ Result meshOnce(const Pslg& input, const Options& options, Progress* progress)
     r.error = "out of memory: the input needs a larger machine, or a Steiner point cap";
     return r;
   }
+}
+
+/// Meshes about an origin near the points (exactOrigin); where those points
+/// do not survive rounding to the user's coordinates, meshes in these
+/// instead, as near to the offset as they are: the robust predicates then
+/// see the points as they are written.
+Result meshOnce(const Pslg& input, const Options& options, Progress* progress)
+{
+  bool roundedBadly = false;
+  Result r = meshIn(input, options, progress, true, roundedBadly);
+  if (!roundedBadly)
+    return r;
+  r = meshIn(input, options, progress, false, roundedBadly);
+  if (r.ok)
+    r.warnings.push_back("the input lies so far from the origin for its features that its mesh, "
+                         "made about an origin near it, did not survive rounding to its "
+                         "coordinates: it was made at those coordinates, where a segment may "
+                         "pass through mesh points up to 16 units in the last place off it; "
+                         "subtracting an offset from the input keeps the segments straight");
+  return r;
 }
 
 } // namespace
