@@ -1378,6 +1378,18 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
 
 //------------------------------------------------------------------------------
 //------------------------------------------------------------------------------
+void vtkOverlayStitchMesher::SetMergeTolerance(double tolerance)
+{
+  tolerance = tolerance < 0.0 ? 0.0 : tolerance;
+  // (NaN is never equal to itself: setting it again marks a change again.)
+  if (this->MergeTolerance != tolerance)
+  {
+    this->MergeTolerance = tolerance;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkOverlayStitchMesher::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);

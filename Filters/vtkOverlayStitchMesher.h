@@ -154,9 +154,11 @@ public:
    * crossing segments are split, crossings within this distance of a point or of
    * another crossing join it: segments meant to meet at one point, whose
    * rounded crossings scatter, meet there. 0, the default, merges only exact
-   * duplicates.
+   * duplicates. A negative value is clamped to 0; infinity and NaN are kept,
+   * and refused when meshing (clamping infinity to the largest double merged
+   * every point into one).
    */
-  vtkSetClampMacro(MergeTolerance, double, 0.0, VTK_DOUBLE_MAX);
+  virtual void SetMergeTolerance(double tolerance);
   vtkGetMacro(MergeTolerance, double);
   ///@}
 

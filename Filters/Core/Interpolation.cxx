@@ -158,14 +158,23 @@ bool visitInputWeights(const Pslg& input, const Result& result, const TermsVisit
   Array<Point> knownPoints;
   Array<int> knownSegment;  // per known point: its segment, or -1
   Array<double> knownAlong; // its position along that segment, or its input point
+  // A segment's end merged into an earlier point (given twice, or within the
+  // merge tolerance) has that point's tuple at its vertex: the points along
+  // the segment take it too (a review: a field ran to the dropped copy's
+  // value, then jumped at the vertex).
+  auto carried = [&](int p) {
+    const int v =
+      static_cast<std::size_t>(p) < result.inputVertex.size() ? result.inputVertex[p] : -1;
+    return v >= 0 && inputPoint[v] >= 0 ? inputPoint[v] : p;
+  };
   auto knownTerms = [&](std::size_t k, VertexTerms& t) {
     if (knownSegment[k] < 0)
       t.add(static_cast<int>(knownAlong[k]), 1.0);
     else
     {
       const Segment& e = input.segments[knownSegment[k]];
-      t.add(e[0], 1 - knownAlong[k]);
-      t.add(e[1], knownAlong[k]);
+      t.add(carried(e[0]), 1 - knownAlong[k]);
+      t.add(carried(e[1]), knownAlong[k]);
     }
   };
   for (std::size_t v = 0; v < n; ++v)

@@ -14,10 +14,13 @@
 // so that values are seldom averaged across one: none of the 7,369 vertices
 // of the tests' kinked fields is; of 14 real inputs meshed in 3 domains, one
 // vertex of la.poly takes 3% of its value (11% in the box domain) from a
-// point across a segment. Beyond the hull of those points (only
-// with the box domain) a point takes the value where it projects onto the
-// hull edge nearest it in that triangulation. A field linear over the input
-// points is reproduced at every vertex within their hull, to rounding.
+// point across a segment. Beyond the hull of those points (only with the
+// box domain) the triangulation's corners are very far away: a point in a
+// triangle of a hull edge and a corner takes the value where it projects
+// onto that edge, one in a triangle of a hull vertex and two corners that
+// vertex's value (continuous, but not the nearest hull point's value). A
+// field linear over the input points is reproduced at every vertex within
+// their hull, to rounding.
 #ifndef osm_Interpolation_h
 #define osm_Interpolation_h
 

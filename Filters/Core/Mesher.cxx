@@ -890,8 +890,19 @@ Result Mesher::execute()
     // segments meant to meet at one point cross at points rounded apart.
     const std::string tolerance = std::string(options.mergeTolerance > 0 ? "larger " : "") +
       "merge tolerance (osm-mesh --merge-tolerance, the filter's MergeTolerance)";
+    // Crossings split in an earlier round are points of the overlay too (a
+    // review: nine segments nearly through one point were said to have input
+    // points too close, the nearest 1.06 away; their crossings were).
+    const std::string inputPoints = "input points are closer";
+    const std::size_t at = stop.reason.find(inputPoints);
+    const bool crossings = stop.pointsTooClose && at != std::string::npos &&
+      std::find(w.isCrossingPoint.begin(), w.isCrossingPoint.end(), 1) != w.isCrossingPoint.end();
+    if (crossings)
+      stop.reason.replace(
+        at, inputPoints.size(), "input points, or points where input segments cross, are closer");
     if (stop.pointsTooClose)
-      stop.reason += "; if input points there are meant to be one, a " + tolerance + " joins them";
+      stop.reason += std::string("; if ") + (crossings ? "points or crossings" : "input points") +
+        " there are meant to be one, a " + tolerance + " joins them";
     else if (stop.segmentsTooClose)
       stop.reason += "; if segments there are meant to meet at one point, a " + tolerance +
         " joins their crossings and bends segments onto the points near them";
@@ -1244,9 +1255,12 @@ void Mesher::meshRounds(Work& w)
     }
     // Say why the domain changed, once.
     if (domain == Domain::Box && options.domain != Domain::Box)
-      res.warnings.push_back(
-        "the input points are collinear, or within rounding of it, so their convex hull has no "
-        "area at double precision: meshing the padded bounding box instead");
+      res.warnings.push_back(w.points.size() == 1
+          ? "the input is one point" +
+            std::string(st.duplicatePointsMerged > 0 ? " once merged" : "") +
+            ", whose convex hull has no area: meshing the padded box around it instead"
+          : "the input points are collinear, or within rounding of it, so their convex hull has "
+            "no area at double precision: meshing the padded bounding box instead");
     if (enclosesNothing)
       res.warnings.push_back("the segments form cycles, but they enclose no area (collinear "
                              "segments over each other): the auto domain meshes the convex hull");

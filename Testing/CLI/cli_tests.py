@@ -1180,7 +1180,8 @@ def group_matrix():
     for name, pts, segs in (("one-point", [(1, 2)], []), ("two-points", [(1, 2), (4, -1)], [(0, 1)]),
                             ("collinear", [(0, 0), (1, 2), (2, 4), (3, 6)], [(0, 3)])):
         matrix_row(name, write("m-%s.poly" % name, poly_text(pts, segs)),
-                   warnings=["collinear", "bounding box"], validate_extra=())
+                   warnings=["one point", "padded box around it"] if len(pts) == 1 else
+                   ["collinear", "bounding box"], validate_extra=())
     # Empty input (a .node file without points; a .poly without points takes
     # them from its .node, as in Triangle): the core returns an empty mesh with
     # a warning; osm-mesh says so and, having nothing to write, exits with 1.

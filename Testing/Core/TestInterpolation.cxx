@@ -157,6 +157,43 @@ TEST(Interpolation, InputVerticesKeepTheirOwnValueAndOthersLieOnTheirSegment)
   EXPECT_EQ(w[r.inputVertex.back()].inputPoint, 3); // the first of the merged pair
 }
 
+TEST(Interpolation, ASegmentToAMergedCopyTakesTheKeptPointsTuple)
+{
+  // Found by a review: a segment drawn to point 4, a copy of point 1 (as
+  // Append Geometry leaves shared ends), ran to point 4's value and jumped
+  // to point 1's at the vertex. Given twice, and within a merge tolerance.
+  for (const double shift : { 0.0, 1e-7 })
+  {
+    Pslg in;
+    in.points = { { 0, 0 }, { 4, 0 }, { 4, 4 }, { 0, 4 }, { 4 + shift, shift } };
+    in.segments = { { 0, 4 }, { 4, 2 }, { 2, 3 }, { 3, 0 } };
+    Options o;
+    o.mergeTolerance = shift > 0 ? 1e-6 : 0;
+    o.maxEdgeLength = 1;
+    const Result r = meshed(in, o);
+    ASSERT_TRUE(r.ok) << r.error;
+    ASSERT_EQ(r.inputVertex[4], r.inputVertex[1]);
+    const std::string name = "shift " + formatNumber(shift);
+    const std::vector<VertexTerms> w = termsOf(in, r, name);
+    std::size_t along = 0;
+    for (std::size_t v = 0; v < w.size(); ++v)
+    {
+      for (int k = 0; k < w[v].count; ++k)
+        EXPECT_NE(w[v].point[k], 4)
+          << name << ": vertex " << v << " takes the dropped copy's tuple";
+      if (w[v].segment == 0)
+      {
+        ++along;
+        // Linear along the segment from point 0 (0) to point 1 (1).
+        const double value =
+          valueAt(w[v], in, [&](const Point& q) { return q == in.points[1] ? 1.0 : 0.0; });
+        EXPECT_NEAR(value, r.mesh.vertices[v].x / 4, 1e-6) << name << ": vertex " << v;
+      }
+    }
+    EXPECT_GT(along, 0u) << name;
+  }
+}
+
 TEST(Interpolation, BeyondTheInputTheBoxTakesValuesWithinTheInputs)
 {
   Pslg in;

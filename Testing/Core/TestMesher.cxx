@@ -1598,7 +1598,7 @@ TEST(Mesher, DegenerateHullsFallBackToTheBox)
   p.points = { { 1, 2 } };
   Result r = meshAndValidate(p, "one point");
   EXPECT_GT(r.mesh.triangles.size(), 0u);
-  EXPECT_TRUE(mentions(r.warnings, "collinear"));
+  EXPECT_TRUE(mentions(r.warnings, "the input is one point, whose convex hull has no area"));
   p.points = { { 1, 2 }, { 4, -1 } };
   p.segments = { { 0, 1 } };
   r = meshAndValidate(p, "two points");

@@ -212,6 +212,25 @@ int TestMergeTolerance()
   Check(h.Mesher->GetMergeTolerance() == 0.0, "MergeTolerance defaults to 0");
   h.Mesher->SetMergeTolerance(-1.0);
   Check(h.Mesher->GetMergeTolerance() == 0.0, "a negative MergeTolerance is clamped to 0");
+  // Infinity was clamped to the largest double, which merged every point
+  // into one (a review): it is refused, as NaN is.
+  for (const double bad :
+    { std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN() })
+  {
+    h.Mesher->SetMergeTolerance(bad);
+    vtkPolyData* refused = h.Run(input, "tolerance " + Num(bad));
+    Check(h.Messages->HasError({ "the merge tolerance must be finite and at least 0" }) &&
+        refused->GetNumberOfCells() == 0,
+      "MergeTolerance " + Num(bad) + " is refused");
+  }
+  // One large enough merges the input into one point, and says so.
+  h.Mesher->SetMergeTolerance(20.0);
+  h.Run(input, "tolerance 20");
+  Check(h.NoError() &&
+      h.Messages->HasWarning(
+        { "the input is one point once merged, whose convex hull has no area" }),
+    "a tolerance that merges every point says the input became one point");
+  h.Mesher->SetMergeTolerance(0.0);
 
   vtkPolyData* mesh = h.Run(input, "tolerance 0");
   Check(h.NoError(), "tolerance 0: no error");
