@@ -2382,47 +2382,45 @@ TEST(Domain, ASegmentWhoseEndJoinedAPointOutsideTheDomainBoundsItFromThere)
   EXPECT_GT(r.mesh.triangles.size(), 0u);
 }
 
+/// A square 100 wide with a unit hole in its middle, its corner at (o, o).
+Pslg squareWithHoleAt(double o)
+{
+  const double f = o + 100;
+  Pslg p;
+  p.points = { { o, o }, { f, o }, { f, f }, { o, f }, { o + 49.5, o + 49.5 },
+    { o + 50.5, o + 49.5 }, { o + 50.5, o + 50.5 }, { o + 49.5, o + 50.5 } };
+  p.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 }, { 4, 5 }, { 5, 6 }, { 6, 7 }, { 7, 4 } };
+  p.holes = { { o + 50, o + 50 } };
+  return p;
+}
+
 TEST(Mesher, AnInputFarFromTheOriginIsMeshedAboutAnOriginNearIt)
 {
-  // Found by a review: a square 100 wide with a unit hole at 1e13, maximum
-  // edge 2. Meshed at the offset, overlay points within the rounding
-  // allowance there (16 units, 0.03) bent the sides through them, up to
-  // 0.0176 out of the square; at 1e14 it was refused as points closer than
-  // double precision resolves. About an origin near it, the sides are
-  // straight: every vertex in the square, the area exact to rounding.
-  for (const double offset : { 1e12, 1e13 })
+  // Found by a review: the square at 1e13, maximum edge 2. Meshed at the
+  // offset, overlay points within the rounding allowance there (16 units,
+  // 0.03) bent the sides through them, up to 0.0176 out of the square; at
+  // 1e14 it was refused as points closer than double precision resolves.
+  // About an origin near it, the sides are straight: every vertex in the
+  // square, the area exact to rounding.
+  Options options;
+  options.maxEdgeLength = 2;
+  for (const double o : { 1e12, 1e13 })
   {
-    const double o = offset, f = offset + 100;
-    Pslg p;
-    p.points = { { o, o }, { f, o }, { f, f }, { o, f }, { o + 49.5, o + 49.5 },
-      { o + 50.5, o + 49.5 }, { o + 50.5, o + 50.5 }, { o + 49.5, o + 50.5 } };
-    p.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 }, { 4, 5 }, { 5, 6 }, { 6, 7 }, { 7, 4 } };
-    p.holes = { { o + 50, o + 50 } };
-    Options options;
-    options.maxEdgeLength = 2;
-    const std::string name = "square at " + formatNumber(offset);
-    const Result r = meshAndValidate(p, name, options);
+    const std::string name = "square at " + formatNumber(o);
+    const Result r = meshAndValidate(squareWithHoleAt(o), name, options);
     ASSERT_TRUE(r.ok) << name << ": " << r.error;
     std::size_t outside = 0;
     for (const Point& v : r.mesh.vertices)
-      outside += v.x < o || v.x > f || v.y < o || v.y > f;
+      outside += v.x < o || v.x > o + 100 || v.y < o || v.y > o + 100;
     EXPECT_EQ(outside, 0u) << name;
     // The area of a triangle 1 wide at 1e13 is rounded by about 0.002.
-    EXPECT_NEAR(area(r.mesh), 9999.0, 1e-16 * offset * double(r.mesh.triangles.size())) << name;
+    EXPECT_NEAR(area(r.mesh), 9999.0, 1e-16 * o * double(r.mesh.triangles.size())) << name;
     EXPECT_FALSE(mentions(r.warnings, "far from the origin")) << name;
   }
   // At 6e13, units in the last place of 0.0078, the mesh about a near origin
   // has triangles that rounding to those coordinates turns over: it is made
   // at the coordinates, as before, and a warning says what that costs.
-  Pslg p;
-  const double o = 6e13, f = o + 100;
-  p.points = { { o, o }, { f, o }, { f, f }, { o, f }, { o + 49.5, o + 49.5 },
-    { o + 50.5, o + 49.5 }, { o + 50.5, o + 50.5 }, { o + 49.5, o + 50.5 } };
-  p.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 }, { 4, 5 }, { 5, 6 }, { 6, 7 }, { 7, 4 } };
-  p.holes = { { o + 50, o + 50 } };
-  Options options;
-  options.maxEdgeLength = 2;
-  const Result r = mesh(p, options);
+  const Result r = mesh(squareWithHoleAt(6e13), options);
   ASSERT_TRUE(r.ok) << r.error;
   EXPECT_TRUE(mentions(r.warnings, "so far from the origin for its features"))
     << ::testing::PrintToString(r.warnings);
