@@ -161,7 +161,8 @@ bool visitInputWeights(const Pslg& input, const Result& result, const TermsVisit
   // A segment's end merged into an earlier point (given twice, or within the
   // merge tolerance) has that point's tuple at its vertex: the points along
   // the segment take it too (a review: a field ran to the dropped copy's
-  // value, then jumped at the vertex).
+  // value, then jumped at the vertex), and are placed along the segment
+  // between the points kept (a merge within a tolerance moves its ends).
   auto carried = [&](int p) {
     const int v =
       static_cast<std::size_t>(p) < result.inputVertex.size() ? result.inputVertex[p] : -1;
@@ -189,9 +190,9 @@ bool visitInputWeights(const Pslg& input, const Result& result, const TermsVisit
     const Segment e = segment >= 0 ? input.segments[segment] : Segment{ 0, 0 };
     knownPoints.push_back(p);
     knownSegment.push_back(segment);
-    knownAlong.push_back(segment < 0
-        ? inputPoint[v]
-        : projectionOnSegment(p, scaled(input.points[e[0]]), scaled(input.points[e[1]])));
+    knownAlong.push_back(segment < 0 ? inputPoint[v]
+                                     : projectionOnSegment(p, scaled(input.points[carried(e[0])]),
+                                         scaled(input.points[carried(e[1])])));
     VertexTerms terms;
     terms.vertex = v;
     terms.inputPoint = inputPoint[v];
