@@ -160,8 +160,16 @@ void checkInterpolation(
       check(error, rounding, t, "an input vertex");
     else if (t.segment >= 0)
     {
+      // Between its ends as merged: an end merged into an earlier point takes
+      // that point's value and place.
       const osm::Segment& e = p.segments[static_cast<std::size_t>(t.segment)];
-      const double off = osm::distanceToSegment(v, p.points[e[0]], p.points[e[1]]);
+      auto kept = [&](int end) {
+        const int at = r.inputVertex[static_cast<std::size_t>(end)];
+        const auto first = std::find(r.inputVertex.begin(), r.inputVertex.end(), at);
+        return at >= 0 ? p.points[static_cast<std::size_t>(first - r.inputVertex.begin())]
+                       : p.points[static_cast<std::size_t>(end)];
+      };
+      const double off = osm::distanceToSegment(v, kept(e[0]), kept(e[1]));
       check(error, std::sqrt(5.0) * scale * off * (1 + 1e-9) + rounding, t, "on a segment");
     }
     else
