@@ -2426,6 +2426,22 @@ TEST(Mesher, AnInputFarFromTheOriginIsMeshedAboutAnOriginNearIt)
     << ::testing::PrintToString(r.warnings);
 }
 
+TEST(Mesher, AddingTheOriginBackLengthensNoEdgePastTheBound)
+{
+  // Found by the fuzzer: points on the line y = 15 take the origin 15 in y;
+  // adding it back rounded 4 edges to 2.9285714285714306, above the maximum
+  // edge of 2.928571428571429. Such a mesh is made at the coordinates.
+  Pslg p;
+  p.points = { { 11, 15 }, { 15, 15 }, { 22.714285714285715, 15 }, { 15, 15 } };
+  p.segments = { { 3, 1 } };
+  Options o;
+  o.minAngleDeg = 27;
+  o.maxEdgeLength = 2.9285714285714288;
+  const Result r = meshAndValidate(p, "points on y = 15", o);
+  ASSERT_TRUE(r.ok) << r.error;
+  EXPECT_GT(r.mesh.triangles.size(), 100u);
+}
+
 TEST(Mesher, AnglesThatRoundingPutsAboveTheBoundAreWarnedAbout)
 {
   // Found by a review: eight lines nearly through one point, missing it by
