@@ -1867,6 +1867,15 @@ Result meshOnce(const Pslg& input, const Options& options, Progress* progress)
   if (!roundedBadly)
     return r;
   r = meshIn(input, options, progress, false, roundedBadly);
+  // Such an input has features below what its coordinates resolve, which
+  // the mesh at them may fail on in a step that does not say so (the
+  // fuzzer: points 1e-21 apart at y = 1, "input point 1 was not inserted").
+  const std::string internal = "internal error: ";
+  if (const std::size_t at = r.error.find(internal); !r.ok && at != std::string::npos)
+    r.error = "the input has features below what double precision resolves at its coordinates "
+              "(below about 1e-14 of the coordinate magnitude): its mesh, made about an origin "
+              "near it, did not survive rounding to them, and made at them it stopped where " +
+      r.error.substr(at + internal.size());
   if (r.ok)
     r.warnings.push_back("the input lies so far from the origin for its features that its mesh, "
                          "made about an origin near it, did not survive rounding to its "

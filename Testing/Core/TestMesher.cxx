@@ -2442,6 +2442,23 @@ TEST(Mesher, AddingTheOriginBackLengthensNoEdgePastTheBound)
   EXPECT_GT(r.mesh.triangles.size(), 100u);
 }
 
+TEST(Mesher, FeaturesBelowThePrecisionOfTheirCoordinatesAreRefusedAsSuch)
+{
+  // Found by the fuzzer: two points 1e-21 apart on y = 1. About the origin
+  // y = 1 they mesh, but not back at y = 1; meshed there, the overlay lost
+  // a point ("internal error: input point 1 was not inserted").
+  Pslg p;
+  p.points = { { 1.0058516248644815e-21, 1 }, { 0, 1 } };
+  p.segments = { { 0, 1 } };
+  Options o;
+  o.minAngleDeg = 20;
+  const Result r = mesh(p, o);
+  ASSERT_FALSE(r.ok);
+  EXPECT_EQ(r.error.find("internal error"), std::string::npos) << r.error;
+  EXPECT_NE(r.error.find("features below what double precision resolves"), std::string::npos)
+    << r.error;
+}
+
 TEST(Mesher, AnglesThatRoundingPutsAboveTheBoundAreWarnedAbout)
 {
   // Found by a review: eight lines nearly through one point, missing it by
