@@ -361,10 +361,9 @@ Stop untriangulable(const Array<Point>& points, const Array<Point>& polygon)
   const std::string face =
     "a face of the stitched mesh with " + std::to_string(polygon.size()) + " sides";
   if (across <= resolved)
-    return Stop{ "input points are closer together than double precision resolves at the "
-                 "input's scale (" +
-        face + ", " + roughNumber(across / scale) +
-        " of the mesh's extent across, could not be triangulated)",
+    return Stop{ std::string(kPointsTooCloseSubject) +
+        " together than double precision resolves at the input's scale (" + face + ", " +
+        roughNumber(across / scale) + " of the mesh's extent across, could not be triangulated)",
       true, polygon[0], { -1, -1 }, true };
   // A wide face can be distorted too: by a point too near a long segment
   // (found by a review, as an "internal error": a point 7e-13 from a segment

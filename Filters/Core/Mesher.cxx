@@ -747,7 +747,8 @@ public:
   /// The warnings collected so far (when a Stop ends the run, they still hold).
   std::vector<std::string> takeWarnings() { return std::move(res.warnings); }
   /// Whether the run stopped because adding the origin back to the mesh's
-  /// points turned a triangle over or past the angle bound: mesh without it.
+  /// points turned a triangle over, past the angle bound or an edge past the
+  /// maximum edge length: mesh without it.
   bool translationRoundedBadly() const { return roundedBadly; }
 
 private:
@@ -893,7 +894,7 @@ Result Mesher::execute()
     // Crossings split in an earlier round are points of the overlay too (a
     // review: nine segments nearly through one point were said to have input
     // points too close, the nearest 1.06 away; their crossings were).
-    const std::string inputPoints = "input points are closer";
+    const std::string inputPoints = kPointsTooCloseSubject;
     const std::size_t at = stop.reason.find(inputPoints);
     const bool crossings = stop.pointsTooClose && at != std::string::npos &&
       std::find(w.isCrossingPoint.begin(), w.isCrossingPoint.end(), 1) != w.isCrossingPoint.end();

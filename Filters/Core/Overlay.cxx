@@ -616,8 +616,9 @@ void Refiner::refineTriangle(int t)
           " is too small for double precision at these coordinates (edges below about 1e-14 of "
           "the coordinate magnitude): use a larger one, or move the input nearer the origin",
         true, c };
-    throw Stop{ "input points are closer together than double precision resolves at their "
-                "coordinates (features below about 1e-14 of the coordinate magnitude)",
+    throw Stop{ std::string(kPointsTooCloseSubject) +
+        " together than double precision resolves at their coordinates (features below "
+        "about 1e-14 of the coordinate magnitude)",
       true, c, { -1, -1 }, true };
   }
   if (!mesh.cavityOf(c, start, cavity))

@@ -13,6 +13,11 @@ namespace osm
 /// The error of a run the user aborted (Progress::aborted).
 inline constexpr const char* kAbortedByTheUser = "aborted by the user";
 
+/// How a refusal of points too close for double precision begins. Where the
+/// round has points where segments cross, the mesher names them too
+/// (Mesher::execute), by replacing this subject.
+inline constexpr const char* kPointsTooCloseSubject = "input points are closer";
+
 /// Thrown inside the core only, caught by mesh(): the user aborted or a cap was hit.
 struct Stop
 {

@@ -1884,6 +1884,34 @@ TEST(Clean, MergesNearDuplicatesWithinTheTolerance)
   EXPECT_FALSE(mesh(p, o).ok);
 }
 
+TEST(Clean, ARefusalOfCrossingsTooCloseNamesTheCrossings)
+{
+  // Found by a review: nine segments nearly through one point cross each
+  // other within 1e-13 of it, below what doubles resolve at 100; their ends
+  // are at least 0.3 apart. The refusal must not blame input points alone.
+  Pslg p;
+  p.points = { { 99.30124973960503, 50.65002083072922 }, { 101.29875026039497, 50.749979169270574 },
+    { 99.3785756329361, 50.311442236236516 }, { 101.22142436706389, 51.08855776376352 },
+    { 99.56703890371045, 50.019729442555374 }, { 101.0329610962896, 51.38027055744456 },
+    { 99.84390810005092, 49.810067317826324 }, { 100.75609189994898, 51.589932682173725 },
+    { 100.17578871072486, 49.70774420857492 }, { 100.42421128927502, 51.6922557914251 },
+    { 100.522651036049, 49.725101791905274 }, { 100.07734896395134, 51.6748982080948 },
+    { 100.8426583604461, 49.86004648709709 }, { 99.75734163955424, 51.53995351290313 },
+    { 101.09721307778872, 50.09630197233831 }, { 99.5027869222111, 51.30369802766148 },
+    { 101.25561213233844, 50.405372349349925 }, { 99.34438786766161, 50.994627650650266 } };
+  for (int i = 0; i < 18; i += 2)
+    p.segments.push_back({ i, i + 1 });
+  const Result r = mesh(p);
+  ASSERT_FALSE(r.ok);
+  EXPECT_NE(r.error.find("input points, or points where input segments cross, are closer together "
+                         "than double precision"),
+    std::string::npos)
+    << r.error;
+  EXPECT_NE(r.error.find("if points or crossings there are meant to be one, a merge tolerance"),
+    std::string::npos)
+    << r.error;
+}
+
 TEST(Clean, ABorderDigitisedTwiceIsMeshedWithAMergeTolerance)
 {
   // Two squares sharing the border x = 1, whose second copy lies 3 units in
@@ -1900,6 +1928,8 @@ TEST(Clean, ABorderDigitisedTwiceIsMeshedWithAMergeTolerance)
     << refused.error;
   EXPECT_NE(refused.error.find("a merge tolerance (osm-mesh --merge-tolerance"), std::string::npos)
     << refused.error;
+  // No segments cross here: the refusal names input points only.
+  EXPECT_EQ(refused.error.find("cross"), std::string::npos) << refused.error;
   Options o;
   o.mergeTolerance = 1e-12;
   const Result r = mesh(p, o);
