@@ -93,21 +93,20 @@ namespace
 
 /// A control group's memory limit from one of its files (cgroup v2's
 /// memory.max, v1's memory.limit_in_bytes), or 0: none, or no such file.
-double cgroupLimit(const char* path)
+double cgroupLimit(const std::string& path)
 {
   std::ifstream in(path);
   double limit = 0;
   return in >> limit && limit > 0 ? limit : 0.0; // "max" reads as no number
 }
 
-/// The tightest memory limit on this process's control group and its
-/// ancestors (named in /proc/self/cgroup: "0::path" for cgroup v2, whose
-/// files are memory.max; "N:...memory...:path" for v1's memory controller),
-/// or 0: none, or not Linux. A container, a systemd scope or a batch job
-/// limits the process there, not at the host's memory.
-double cgroupMemoryLimit()
+} // namespace
+
+double cgroupMemoryLimit(const std::string& root)
 {
-  std::ifstream self("/proc/self/cgroup");
+  // Named in /proc/self/cgroup: "0::path" for cgroup v2, whose files are
+  // memory.max; "N:...memory...:path" for v1's memory controller.
+  std::ifstream self(root + "/proc/self/cgroup");
   double tightest = 0;
   std::string line;
   while (std::getline(self, line))
@@ -119,14 +118,14 @@ double cgroupMemoryLimit()
     const bool v2 = controllers == ",,", v1 = controllers.find(",memory,") != std::string::npos;
     if (!v2 && !v1)
       continue;
-    const std::string root = v2 ? "/sys/fs/cgroup" : "/sys/fs/cgroup/memory";
+    const std::string base = root + (v2 ? "/sys/fs/cgroup" : "/sys/fs/cgroup/memory");
     const std::string file = v2 ? "/memory.max" : "/memory.limit_in_bytes";
     // The group, then each ancestor up to the root of the hierarchy.
     for (std::string path = line.substr(b + 1);;)
     {
       while (!path.empty() && path.back() == '/')
         path.pop_back();
-      if (const double limit = cgroupLimit((root + path + file).c_str());
+      if (const double limit = cgroupLimit(base + path + file);
           limit > 0 && (tightest == 0 || limit < tightest))
         tightest = limit;
       if (path.empty())
@@ -136,8 +135,6 @@ double cgroupMemoryLimit()
   }
   return tightest;
 }
-
-} // namespace
 
 double physicalMemoryBytes()
 {
@@ -151,7 +148,7 @@ double physicalMemoryBytes()
       memory = double(pages) * double(size);
 #endif
     // v1's "no limit" is a huge number, above the physical memory: ignored.
-    if (const double limit = cgroupMemoryLimit(); limit > 0 && (memory == 0 || limit < memory))
+    if (const double limit = cgroupMemoryLimit(""); limit > 0 && (memory == 0 || limit < memory))
       memory = limit;
     return memory;
   }();

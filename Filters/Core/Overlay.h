@@ -8,6 +8,7 @@
 #include "SizeBoxes.h"
 #include "Triangulation.h"
 
+#include <string>
 #include <vector>
 
 namespace osm
@@ -68,6 +69,13 @@ constexpr std::size_t kBoxCorners = 4;
 /// mesh beyond it is refused before refining. Not the memory free now, which
 /// changes from run to run. Read at the first call, once per process.
 double physicalMemoryBytes();
+
+/// The tightest memory limit on this process's control group and its
+/// ancestors (cgroup v2's memory.max, v1's memory.limit_in_bytes; a
+/// container, a systemd scope or a batch job limits the process there), or
+/// 0: none, or not Linux. root is prepended to /proc and /sys: "" for the
+/// system's, a directory of files laid out alike for the tests.
+double cgroupMemoryLimit(const std::string& root);
 
 /// What a process holding a mesh takes per output triangle, at most, as
 /// measured: the core's own peak 75 bytes, osm-mesh's whole process 99 to
