@@ -98,7 +98,13 @@ struct Frame
   /// A working point in the user's coordinates (rounded, for messages).
   Point toUser(const Point& p) const
   {
-    return { std::ldexp(p.x, exponent) + origin.x, std::ldexp(p.y, exponent) + origin.y };
+    return addOrigin({ std::ldexp(p.x, exponent), std::ldexp(p.y, exponent) });
+  }
+  /// p + origin, where a coordinate of -0 stays -0 when the origin's is 0
+  /// (-0 + 0 is +0): input vertices come back bit for bit.
+  Point addOrigin(const Point& p) const
+  {
+    return { origin.x != 0 ? p.x + origin.x : p.x, origin.y != 0 ? p.y + origin.y : p.y };
   }
 };
 
@@ -1721,7 +1727,7 @@ void Mesher::buildOutput(const Work& w, const PlanarGraph& g, Completion& c, Car
       throw Stop{ "the mesh needs points too close to zero for double precision at this "
                   "scale (coordinates below about 1e-290)",
         true, p };
-    return Point{ u.x + frame.origin.x, u.y + frame.origin.y };
+    return frame.addOrigin(u);
   };
   Array<int> newIndex;
   newIndex.assign(g.points.size(), -1);

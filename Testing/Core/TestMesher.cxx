@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <numeric>
 #include <random>
 #include <utility>
@@ -2422,6 +2423,31 @@ Pslg squareWithHoleAt(double o)
   p.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 }, { 4, 5 }, { 5, 6 }, { 6, 7 }, { 7, 4 } };
   p.holes = { { o + 50, o + 50 } };
   return p;
+}
+
+TEST(Mesher, NegativeZeroCoordinatesComeBackBitForBit)
+{
+  // Found by a review: la.poly's points at y = -0 came out at +0 (-0 + 0 is
+  // +0), though input vertices are to come back bit for bit. Also where the
+  // other axis takes an origin (x far from 0 for its spread).
+  for (const double x0 : { 0.0, 1e6 })
+  {
+    Pslg p;
+    p.points = { { x0 - 0.0, -0.0 }, { x0 + 1, -0.0 }, { x0 + 1, 1 }, { x0 + 0.5, 0.5 } };
+    if (x0 == 0)
+      p.points[0].x = -0.0;
+    p.segments = { { 0, 1 }, { 1, 2 }, { 2, 0 } };
+    const Result r = mesh(p);
+    ASSERT_TRUE(r.ok) << r.error;
+    for (std::size_t i = 0; i < p.points.size(); ++i)
+    {
+      ASSERT_GE(r.inputVertex[i], 0);
+      const Point& q = r.mesh.vertices[r.inputVertex[i]];
+      EXPECT_EQ(std::memcmp(&q, &p.points[i], sizeof q), 0)
+        << "x0 " << x0 << ", point " << i << ": (" << q.x << ", " << q.y << ") for ("
+        << p.points[i].x << ", " << p.points[i].y << ")";
+    }
+  }
 }
 
 TEST(Mesher, AnInputFarFromTheOriginIsMeshedAboutAnOriginNearIt)
