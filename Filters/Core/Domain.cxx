@@ -40,8 +40,8 @@ void bucketByLo(int n, ForEach&& forEach, Array<int>& start, Array<std::array<in
 /// triangle order, each with the previous one. Edges given in known are taken
 /// from it and not matched; its arrays become the result's, so that the
 /// overlay's adjacency is extended, not copied.
-KnownAdjacency adjacency(
-  const Array<Triangle>& tris, const Array<Segment>& constrained, KnownAdjacency known)
+KnownAdjacency adjacency(const Array<Triangle>& tris, const Array<Segment>& constrained,
+  KnownAdjacency known, RunContext& run)
 {
   int n = 0; // vertices 0..n-1
   for (const Triangle& t : tris)
@@ -58,6 +58,7 @@ KnownAdjacency adjacency(
       for (int t = 0; t < static_cast<int>(tris.size()); ++t)
         for (int i = 0; i < 3; ++i)
         {
+          run.pollEvery(1u << 18);
           if (t < nk && a.nbr[t][i] != KnownAdjacency::kUnknownNeighbour)
             continue;
           const int u = tris[t][(i + 1) % 3], v = tris[t][(i + 2) % 3];
@@ -65,6 +66,7 @@ KnownAdjacency adjacency(
         }
     },
     edgeStart, edges);
+  run.report(0.15);
   for (int t = 0; t < nk; ++t)
     for (int& u : a.nbr[t])
       if (u == KnownAdjacency::kUnknownNeighbour)
@@ -85,6 +87,7 @@ KnownAdjacency adjacency(
   last.assign(static_cast<std::size_t>(n), -1);
   for (int lo = 0; lo < n; ++lo)
   {
+    run.tickWith([&] { return 0.2 + 0.2 * double(lo) / double(n); }, 1u << 16);
     for (int k = constrainedStart[lo]; k < constrainedStart[lo + 1]; ++k)
       constrainedStamp[constrainedEdges[k][0]] = lo;
     for (int k = edgeStart[lo]; k < edgeStart[lo + 1]; ++k)
@@ -110,7 +113,7 @@ KnownAdjacency adjacency(
 /// unconstrained edges, named by its smallest triangle index. Union-find in
 /// index order touches memory in (spatial) order, where a flood jumps around.
 /// Both sides of an edge agree whether it is constrained: one side decides.
-Array<int> components(const KnownAdjacency& a)
+Array<int> components(const KnownAdjacency& a, RunContext& run)
 {
   const int n = static_cast<int>(a.nbr.size());
   Array<int> root;
@@ -122,6 +125,8 @@ Array<int> components(const KnownAdjacency& a)
     return t;
   };
   for (int t = 0; t < n; ++t)
+  {
+    run.tickWith([&] { return 0.4 + 0.3 * double(t) / double(n); }, 1u << 16);
     for (int i = 0; i < 3; ++i)
     {
       const int u = a.nbr[t][i];
@@ -134,6 +139,7 @@ Array<int> components(const KnownAdjacency& a)
       else
         root[ru] = rt;
     }
+  }
   for (int t = 0; t < n; ++t)
     root[t] = root[root[t]]; // root[t] <= t is final already
   return root;
@@ -377,9 +383,9 @@ Carving carveDomain(const Array<Point>& P, const Array<Triangle>& tris,
   KnownAdjacency known, const Array<Point>& regionSeeds, RunContext& run)
 {
   // Each step is linear in the triangles; an abort is polled between them.
-  const KnownAdjacency a = adjacency(tris, constrained, std::move(known));
+  const KnownAdjacency a = adjacency(tris, constrained, std::move(known), run);
   run.report(0.4);
-  Array<int> component = components(a);
+  Array<int> component = components(a, run);
   run.report(0.7);
   Array<char> removed; // per component
   removed.assign(tris.size(), char{ 0 });

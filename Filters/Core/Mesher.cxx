@@ -1250,7 +1250,10 @@ void Mesher::meshRounds(Work& w)
       if (st.crossingsSplit == 0)
         firstCrossing =
           describeCrossing(w, walk.segmentCrossings.front(), frame, options.pointFormat);
+      // Splitting many crossings takes a while: abort is polled around it.
+      run.report(1.0);
       splitCrossings(w, walk.segmentCrossings, st);
+      run.report(1.0);
       inputPointsOnSegments = walk.splitsAtInputVertices > 0;
       SeedsAcross seeds;
       const std::size_t joined = mergeEqualPoints(w, scaledTolerance(), seeds);

@@ -79,6 +79,19 @@ public:
     if (progress->aborted())
       throw Stop{ kAbortedByTheUser };
   }
+  /// Polls for an abort between steps that report no fraction of their own
+  /// (reports the last fraction again).
+  void poll()
+  {
+    if (progress)
+      report(lastFraction);
+  }
+  /// The same, for inner loops: polls every 'every' calls.
+  void pollEvery(unsigned every)
+  {
+    if (progress && ++ticks % every == 0)
+      report(lastFraction);
+  }
   /// Cheap call for inner loops: reports every 'every' calls.
   void tick(double fraction, unsigned every = 4096)
   {

@@ -491,8 +491,10 @@ Walk walkSegments(const OverlayEdges& ov, const Overlay& overlay, const Array<Se
     const int s = walkIn[k];
     out.firstPiece[s] = static_cast<int>(out.pieces.size());
     walker.walk(s, segments[s][0], segments[s][1]);
-    run.tick(double(k) / double(segments.size()), 256);
+    // A walk may cross thousands of triangles (a long segment).
+    run.tick(double(k) / double(segments.size()), 16);
   }
+  run.poll();
   walker.findSegmentCrossings(rank);
   return out;
 }
@@ -626,6 +628,7 @@ PlanarGraph stitch(OverlayEdges ov, Array<Point> points, const Array<char>& isIn
   g.openSides.reserve(edgeBound);
   for (std::size_t v = 0; v < g.points.size(); ++v)
     g.origin[v] = isInput[v] ? VertexOrigin::Input : VertexOrigin::Overlay;
+  run.poll();
   auto addEdge = [&](int a, int b, bool constrained, std::uint8_t open) {
     g.edges.push_back({ a, b });
     g.constrained.push_back(constrained);
@@ -642,6 +645,7 @@ PlanarGraph stitch(OverlayEdges ov, Array<Point> points, const Array<char>& isIn
     ++(c.good ? stats.goodCrossings : stats.badCrossings);
   }
   stats.crossings = stats.goodCrossings + stats.badCrossings;
+  run.poll();
   // For inspection: the segment along each overlay edge that is a piece.
   Array<int> alongSegment;
   if (inspect)
@@ -664,7 +668,9 @@ PlanarGraph stitch(OverlayEdges ov, Array<Point> points, const Array<char>& isIn
   };
 
   // Kept crossed edges: one stitch vertex per crossing, in order along the edge.
+  run.poll();
   const Array<int> order = crossingsByEdge(walk);
+  run.poll();
   std::size_t next = 0; // the first crossing, in order, of the edges still to come
   Array<int> stitchVertex(walk.crossings.size(), -1);
   for (int e = 0; e < static_cast<int>(ne); ++e)
