@@ -445,6 +445,21 @@ Carving carveDomain(const Array<Point>& P, const Array<Triangle>& tris,
     }
     out.seedRegion.push_back(t);
   }
+  // A constrained edge between removed triangles (or a removed one and the
+  // box's outside) is a piece of a segment that the domain leaves out:
+  // counted once, from its smaller triangle.
+  for (int t = 0; t < static_cast<int>(tris.size()); ++t)
+  {
+    if (!removed[component[t]])
+      continue;
+    for (int i = 0; i < 3; ++i)
+    {
+      const int u = a.nbr[t][i];
+      if (!isConstrained(a, t, i) || (u >= 0 && (!removed[component[u]] || u < t)))
+        continue;
+      out.droppedConstrained.push_back({ tris[t][(i + 1) % 3], tris[t][(i + 2) % 3] });
+    }
+  }
   // Regions are numbered in the order of their smallest triangle index: a
   // component's root comes before its other triangles, which take its id.
   run.report(0.85);

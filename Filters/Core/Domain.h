@@ -50,6 +50,9 @@ struct Carving
   /// Removing the exterior left no triangle (before any hole): the segments'
   /// cycles enclose no area (collinear segments over each other).
   bool enclosedNothing = false;
+  /// Constrained edges with no remaining triangle on either side: pieces of
+  /// segments outside every enclosed region, or in a hole.
+  Array<Segment> droppedConstrained;
 };
 
 /// Up to this many hole seeds, carveDomain finds the triangle under each one

@@ -763,6 +763,9 @@ private:
   void buildOutput(const Work& w, const PlanarGraph& g, Completion& c, Carving& carve,
     const Overlay& overlay, Array<Edge>& edges, Domain domain);
   void warnAboutRegionSeeds(const Carving& carve);
+  template <typename Unscale>
+  void warnAboutDroppedSegments(const Work& w, const PlanarGraph& g, const Array<Segment>& dropped,
+    Domain domain, const Unscale& unscale);
   Array<double> regionMaxEdges(const Carving& carve, double maxEdge) const;
   std::string longEdgesWarning(const LongEdges& split) const;
   void assignRegionAttributes(const Carving& carve);
@@ -806,7 +809,59 @@ private:
   /// segment the walks found it on, else -1.
   Array<int> graphSegment;
   void findGraphSegments(const Walk& walk, const PlanarGraph& g, const Work& w);
+  /// The walks' pieces that no crossing splits, (v0, v1, segment): a graph
+  /// edge between two overlay vertices is one of them.
+  Array<std::array<int, 3>> plainPieces;
 };
+
+template <typename Unscale>
+void Mesher::warnAboutDroppedSegments(const Work& w, const PlanarGraph& g,
+  const Array<Segment>& dropped, Domain domain, const Unscale& unscale)
+{
+  // Segments between enclosed regions (a river between two lakes) or in a
+  // hole: their ends may be in the mesh while they are not (a review).
+  if (dropped.empty())
+    return;
+  const std::size_t firstStitch = g.points.size() - g.stitchSegment.size();
+  // The plain pieces by their ends, smaller first, found by binary search.
+  std::vector<std::array<int, 3>> byEnds(plainPieces.begin(), plainPieces.end());
+  for (auto& [v0, v1, s] : byEnds)
+    if (v0 > v1)
+      std::swap(v0, v1);
+  std::sort(byEnds.begin(), byEnds.end());
+  auto segmentOf = [&](const Segment& e) {
+    for (int v : e)
+      if (static_cast<std::size_t>(v) >= firstStitch)
+        return g.stitchSegment[v - firstStitch];
+    const std::array<int, 3> key{ std::min(e[0], e[1]), std::max(e[0], e[1]), -1 };
+    const auto it = std::lower_bound(byEnds.begin(), byEnds.end(), key);
+    return it != byEnds.end() && (*it)[0] == key[0] && (*it)[1] == key[1] ? (*it)[2] : -1;
+  };
+  std::vector<int> inputs; // input segments, as the user numbers them
+  int example = -1;
+  for (const Segment& e : dropped)
+  {
+    const int s = segmentOf(e);
+    if (s < 0 || s >= static_cast<int>(w.segments.size())) // a hull edge: no input
+      continue;
+    inputs.push_back(w.segmentOrigin[s]);
+    if (example < 0)
+      example = static_cast<int>(&e - dropped.data());
+  }
+  std::sort(inputs.begin(), inputs.end());
+  inputs.erase(std::unique(inputs.begin(), inputs.end()), inputs.end());
+  if (example < 0)
+    return;
+  const Segment& e = dropped[example];
+  res.warnings.push_back(std::to_string(inputs.size()) +
+    " input segment(s) lie outside the meshed domain (outside every enclosed region or in a "
+    "hole), wholly or in part, and are not in the mesh there, e.g. input segment " +
+    std::to_string(w.segmentOrigin[segmentOf(e)]) + " from " +
+    formatPoint(unscale(g.points[e[0]]), options.pointFormat) + " to " +
+    formatPoint(unscale(g.points[e[1]]), options.pointFormat) +
+    (domain == Domain::Enclosed ? "; the hull or box domain keeps those outside every region"
+                                : ""));
+}
 
 void Mesher::findGraphSegments(const Walk& walk, const PlanarGraph& g, const Work& w)
 {
@@ -1334,6 +1389,10 @@ void Mesher::meshRounds(Work& w)
       options.keepEdges ? &edges : nullptr, st, run);
     if (options.keepVertexSegments)
       findGraphSegments(walk, g, w);
+    plainPieces.clear();
+    for (const Piece& p : walk.pieces)
+      if (!p.duplicate && p.crossingCount == 0)
+        plainPieces.push_back({ p.v0, p.v1, p.segment });
     st.secondsStitch += since(t);
     overlay.mesh = Triangulation();
     walk = Walk();
@@ -1804,6 +1863,7 @@ void Mesher::buildOutput(const Work& w, const PlanarGraph& g, Completion& c, Car
           ? "; if segments meant to meet at one point cross apart and enclose a tiny region "
             "there, a merge tolerance joins their crossings"
           : ""));
+  warnAboutDroppedSegments(w, g, carve.droppedConstrained, domain, unscale);
   st.regions = carve.regions;
   st.outputVertices = res.mesh.vertices.size();
   st.outputTriangles = res.mesh.triangles.size();

@@ -2425,6 +2425,56 @@ Pslg squareWithHoleAt(double o)
   return p;
 }
 
+TEST(Mesher, SegmentsTheDomainLeavesOutAreSaidToBe)
+{
+  // Found by a review: two squares joined by a segment corner to corner (a
+  // river between two lakes). The enclosed domain leaves the bridge out;
+  // its ends are in the mesh, so the points' warning did not fire.
+  Pslg p;
+  p.points = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 }, { 3, 0 }, { 4, 0 }, { 4, 1 }, { 3, 1 } };
+  p.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 }, { 4, 5 }, { 5, 6 }, { 6, 7 }, { 7, 4 },
+    { 1, 4 } };
+  const std::string said = "input segment(s) lie outside the meshed domain";
+  auto warned = [&](const Result& r) {
+    for (const std::string& w : r.warnings)
+      if (w.find(said) != std::string::npos)
+        return w;
+    return std::string();
+  };
+  for (const Domain d : { Domain::Auto, Domain::Enclosed })
+  {
+    Options o;
+    o.domain = d;
+    const Result r = mesh(p, o);
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_NEAR(area(r.mesh), 2.0, 1e-12);
+    const std::string w = warned(r);
+    EXPECT_NE(w.find("1 " + said), std::string::npos) << w;
+    EXPECT_NE(w.find("e.g. input segment 8 from (1, 0) to "), std::string::npos) << w;
+    EXPECT_NE(w.find("the hull or box domain keeps"), std::string::npos) << w;
+  }
+  // The hull keeps it: no warning.
+  Options hull;
+  hull.domain = Domain::Hull;
+  const Result h = mesh(p, hull);
+  ASSERT_TRUE(h.ok) << h.error;
+  EXPECT_EQ(warned(h), "");
+  // Two cracks inside a hole, one split in two by a point on it.
+  Pslg q;
+  q.points = { { 0, 0 }, { 10, 0 }, { 10, 10 }, { 0, 10 }, { 3, 3 }, { 7, 3 }, { 7, 7 }, { 3, 7 },
+    { 4, 5 }, { 6, 5 }, { 5, 5 }, { 4, 4 }, { 6, 4.5 } };
+  q.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 }, { 4, 5 }, { 5, 6 }, { 6, 7 }, { 7, 4 },
+    { 8, 9 }, { 11, 12 } };
+  q.holes = { { 3.5, 3.5 } };
+  const Result c = mesh(q);
+  ASSERT_TRUE(c.ok) << c.error;
+  EXPECT_NEAR(area(c.mesh), 84.0, 1e-12);
+  EXPECT_NE(warned(c).find("2 " + said), std::string::npos) << warned(c);
+  // Segments on the domain's boundary or inside it are not in that count.
+  q.segments.resize(8);
+  EXPECT_EQ(warned(mesh(q)), "");
+}
+
 TEST(Mesher, NegativeZeroCoordinatesComeBackBitForBit)
 {
   // Found by a review: la.poly's points at y = -0 came out at +0 (-0 + 0 is
