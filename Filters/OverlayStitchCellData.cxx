@@ -304,6 +304,10 @@ bool OverlayStitchPassCellData(vtkCellData* in, vtkIdType inputCells, const osm:
   std::vector<vtkIdType> fromCells; // the input subsegments: the only edges that take a tuple
   for (vtkIdType e = 0; e < n; ++e)
   {
+    if ((e & 0xffff) == 0 && poll(0.0)) // (an abort check only: 0.2 s at 1.4e7 edges)
+    {
+      return false;
+    }
     const int s = result.edges[static_cast<std::size_t>(e)].segment;
     cellOf[e] = s >= 0 ? segmentCells[static_cast<std::size_t>(s)] : -1;
     if (s >= 0)

@@ -213,6 +213,16 @@ bool ReadCell(vtkUnstructuredGrid* grid, vtkIdType c, int type, int& kind, vtkId
   {
     return false;
   }
+  // GetCell copies every node's coordinates: a node naming a missing point
+  // would be read out of bounds (a review: osm-mesh and ParaView crashed).
+  // Such a cell is passed on as its ids, which the filter then refuses.
+  grid->GetCellPoints(c, ids);
+  const vtkIdType points = grid->GetNumberOfPoints();
+  if (std::any_of(
+        ids->begin(), ids->end(), [points](vtkIdType id) { return id < 0 || id >= points; }))
+  {
+    return true;
+  }
   grid->GetCell(c, cell);
   nodes.clear();
   if (kind == 1)

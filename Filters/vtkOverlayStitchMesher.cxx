@@ -34,6 +34,7 @@
 #include "HugePages.h"
 #include "Mesher.h"
 #include "OverlayStitchArrays.h"
+#include "OverlayStitchCellArrays.h"
 #include "OverlayStitchCellData.h"
 #include "OverlayStitchGather.h"
 #include "OverlayStitchPointData.h"
@@ -951,6 +952,21 @@ int vtkOverlayStitchMesher::FillInputPortInformation(int port, vtkInformation* i
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+/// What RequestData returns after reporting an error: 0, VTK's failure, in a
+/// serial run, so that Update() returns 0 too; 1 in a parallel one, whose
+/// other ranks return 1 with empty outputs: a failure on rank 0 alone would
+/// stop the filters downstream there, while on the other ranks they would
+/// wait for rank 0 in their collective steps.
+int Failure()
+{
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  return controller && controller->GetNumberOfProcesses() > 1 ? 1 : 0;
+}
+} // namespace
+
+//------------------------------------------------------------------------------
 int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -960,7 +976,17 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
     vtkOverlayStitchMesher* Filter;
     ~ProgressTextReset() { this->Filter->SetProgressText(nullptr); }
   } progressTextReset{ this };
-  vtkDataObject* inputObject = vtkDataObject::GetData(inputVector[0], 0);
+  // Malformed cell arrays are said here and replaced by a cell naming a
+  // missing point, which every rank's input then refuses alike (an MPI run
+  // still gathers).
+  std::string malformed;
+  const vtkSmartPointer<vtkDataObject> wellFormed =
+    OverlayStitchWithWellFormedCells(vtkDataObject::GetData(inputVector[0], 0), malformed);
+  if (!malformed.empty())
+  {
+    vtkErrorMacro("Cannot mesh the input: a cell array is malformed (" << malformed << ").");
+  }
+  vtkDataObject* inputObject = wellFormed;
   vtkSmartPointer<vtkPolyData> local = vtkPolyData::SafeDownCast(inputObject);
   if (auto* grid = vtkUnstructuredGrid::SafeDownCast(inputObject))
   {
@@ -1028,14 +1054,18 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
                                             << " cell(s) refer to points that do not exist).");
   }
   vtkPolyData* input = gathered;
-  if (!meshHere || combination.InvalidCells > 0 || gather.InvalidCells > 0)
+  if (!meshHere)
   {
     return 1;
+  }
+  if (combination.InvalidCells > 0 || gather.InvalidCells > 0)
+  {
+    return Failure();
   }
   if (!input)
   {
     vtkErrorMacro("No input polydata.");
-    return 1;
+    return Failure();
   }
   WarnOf(this, gather.NotCarried);
   const std::string leftOut =
@@ -1077,7 +1107,7 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   {
     vtkErrorMacro(
       "Cannot mesh the input: " << Numbered(ExplainPoints(inputError, input), numbering));
-    return 1;
+    return Failure();
   }
   osm::Pslg pslg;
   pslg.points.reserve(points.size());
@@ -1118,7 +1148,7 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
       << xySeeds
       << ", names no single point; give hole seeds as the input's field data HolePoints "
          "with 3 components (x, y, z).");
-    return 1;
+    return Failure();
   }
   if (this->HolePoints.size() % 2 != 0)
   {
@@ -1222,7 +1252,7 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   catch (const std::exception& e)
   {
     vtkErrorMacro("Internal error in the mesher: " << e.what());
-    return 1;
+    return Failure();
   }
 
   // Which cells the named segments are, and which seeds the named holes.
@@ -1239,7 +1269,7 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   if (!result.ok)
   {
     vtkErrorMacro("Meshing failed: " << Numbered(explain(result.error), numbering));
-    return 1;
+    return Failure();
   }
 
   // Phase "output": the three polydata, built in bulk; the abort flag is

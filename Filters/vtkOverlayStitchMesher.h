@@ -49,23 +49,33 @@
  *   3 other: a crossing of input segments, or a point splitting a
  *   completed edge longer than MaximumEdgeLength) and `InputPointId` (an
  *   input vertex's id in the input, -1 for the others; with `InputBlockId`
- *   for a composite input); cell data `MinAngle`, `MaxAngle` (degrees) and
- * `RegionId`; field data: one single-value array per run statistic.
+ *   for a composite input) and, with InterpolatePointData, the input's point
+ *   arrays; cell data `MinAngle`, `MaxAngle` (degrees) and `RegionId`,
+ *   `RegionAttribute` when the input has regional attributes, and, with
+ *   PassCellData, the input polygons' cell arrays with `InputCellId` (and
+ *   `InputBlockId`); field data: one single-value array per run statistic.
  * - port 1 (Edges): every overlay edge and every input subsegment as line
  *   cells, with cell data `Overlay`, `Kept`, `Discarded`, `Input` (0/1) and
  *   the categorical `EdgeClass` (0 uncrossed, 1 kept, 2 discarded, 3 input;
- *   the names are in the field data string array `EdgeClassNames`).
+ *   the names are in the field data string array `EdgeClassNames`), and,
+ *   with PassCellData, the input cells' arrays along the subsegments with
+ *   `InputCellId` (and `InputBlockId`). The README describes every array.
  * - port 2 (Overlay): the phase-1 overlay triangulation, for inspection. It
  *   is refined to θ1 within the bounding box of the segments (enclosed
  *   domain) or of the points (hull domain), and everywhere with the box
  *   domain; outside it no output triangle comes from it, and it stays coarse.
  *
  * Bad input (NaN coordinates, crossing segments when ResolveIntersections is
- * off, points not in one plane, ...) is reported through vtkErrorMacro with
- * the reason, and all outputs are left empty. Progress is reported through
+ * off, points not in one plane, malformed cell arrays, ...) is reported
+ * through vtkErrorMacro with the reason, and all outputs are left empty; in a
+ * serial run RequestData then returns 0, so that the executive's Update()
+ * returns 0 (in a parallel run every rank returns 1, so that filters
+ * downstream run on every rank alike). Progress is reported through
  * every phase (input, clean, overlay, stitch, complete, domain, output) and
  * GetAbortExecute() is polled: an abort ends the run with the error "aborted
- * by the user" and empty outputs.
+ * by the user" and empty outputs (RequestData returns 1, as VTK's filters do
+ * on an abort). A NaN given to a clamped setter is kept, not clamped, and
+ * refused by the run with an error.
  *
  * The class uses only API that VTK 9.1 also has.
  *

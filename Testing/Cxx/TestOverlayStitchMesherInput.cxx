@@ -33,6 +33,7 @@
 #include "vtkCommand.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
+#include "vtkExecutive.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkGenericCell.h"
@@ -49,6 +50,8 @@
 #include "vtkSmartPointer.h"
 #include "vtkStringArray.h"
 #include "vtkStructuredGrid.h"
+#include "vtkTypeInt32Array.h"
+#include "vtkTypeInt64Array.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
@@ -2961,6 +2964,146 @@ int TestHigherOrderCells()
   return TestOtherHigherOrderCells();
 }
 
+/// A square's points (0..3) with cells set from raw offsets and connectivity.
+template <typename Array>
+vtkSmartPointer<vtkCellArray> RawCells(
+  const std::vector<long long>& offsets, const std::vector<long long>& connectivity)
+{
+  vtkNew<Array> o, c;
+  for (long long v : offsets)
+  {
+    o->InsertNextValue(static_cast<typename Array::ValueType>(v));
+  }
+  for (long long v : connectivity)
+  {
+    c->InsertNextValue(static_cast<typename Array::ValueType>(v));
+  }
+  auto cells = vtkSmartPointer<vtkCellArray>::New();
+  cells->SetData(o, c);
+  return cells;
+}
+
+vtkSmartPointer<vtkPolyData> SquarePoints()
+{
+  auto data = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  for (const Xyz& p : std::vector<Xyz>{ { 0, 0, 0 }, { 4, 0, 0 }, { 4, 4, 0 }, { 0, 4, 0 } })
+  {
+    points->InsertNextPoint(p[0], p[1], p[2]);
+  }
+  data->SetPoints(points);
+  return data;
+}
+
+int TestMalformedCells()
+{
+  // Found by a review: offsets that decrease (a legacy .vtk file, or a
+  // program's arrays) crashed osm-mesh and ParaView reading vertex cells, or
+  // were meshed without a word as lines; offsets past the connectivity's end
+  // read beyond it. Each is refused, naming the array, with empty outputs.
+  struct Case
+  {
+    const char* name;
+    vtkSmartPointer<vtkCellArray> cells;
+    bool verts;
+    const char* said;
+  };
+  const std::vector<long long> square{ 0, 1, 1, 2, 2, 3, 3, 0 };
+  const std::vector<Case> cases = {
+    { "lines, 64-bit offsets decreasing", RawCells<vtkTypeInt64Array>({ 0, 4, 2, 8 }, square),
+      false, "the line cells of the input: their offsets decrease at cell 1" },
+    { "lines, 32-bit offsets decreasing", RawCells<vtkTypeInt32Array>({ 0, 4, 2, 8 }, square),
+      false, "the line cells of the input: their offsets decrease at cell 1" },
+    { "vertex cells, offsets decreasing",
+      RawCells<vtkTypeInt64Array>({ 0, 3, 1, 4 }, { 0, 1, 2, 3 }), true,
+      "the vertex cells of the input: their offsets decrease at cell 1" },
+    { "lines, offsets past the end", RawCells<vtkTypeInt64Array>({ 0, 2, 400000 }, { 0, 1, 2, 3 }),
+      false,
+      "the line cells of the input: their offsets end at 400000, but their connectivity "
+      "has 4 value(s)" },
+    { "lines, offsets not from 0", RawCells<vtkTypeInt64Array>({ 2, 4 }, { 0, 1, 2, 3 }), false,
+      "the line cells of the input: their offsets do not start at 0" },
+  };
+  for (const Case& c : cases)
+  {
+    auto data = SquarePoints();
+    if (c.verts)
+    {
+      data->SetVerts(c.cells);
+      data->SetLines(RawCells<vtkTypeInt64Array>({ 0, 2, 4, 6, 8 }, square));
+    }
+    else
+    {
+      data->SetLines(c.cells);
+    }
+    Harness h;
+    vtkPolyData* mesh = h.Run(data, c.name);
+    Check(h.Messages->HasError({ "Cannot mesh the input: a cell array is malformed", c.said }) &&
+        mesh->GetNumberOfCells() == 0 && h.Mesher->GetEdgesOutput()->GetNumberOfCells() == 0,
+      std::string(c.name) + ": refused, naming the array");
+  }
+  // A failed run fails the pipeline's update, as VTK's readers do (a
+  // review: Update() returned 1 after every error); a good one succeeds, also
+  // right after a failure, and an abort is not a failure.
+  {
+    auto data = SquarePoints();
+    data->SetLines(cases[0].cells);
+    vtkNew<vtkOverlayStitchMesher> m;
+    vtkNew<MessageObserver> quiet; // the error is checked above
+    m->AddObserver(vtkCommand::ErrorEvent, quiet);
+    m->SetInputData(data);
+    const int failed = m->GetExecutive()->Update();
+    auto good = SquarePoints();
+    good->SetLines(RawCells<vtkTypeInt64Array>({ 0, 2, 4, 6, 8 }, square));
+    m->SetInputData(good);
+    const int meshed = m->GetExecutive()->Update();
+    Check(failed == 0 && meshed == 1 && m->GetOutput()->GetNumberOfCells() == 2,
+      "Update() returns 0 after an error, 1 after a mesh (" + std::to_string(failed) + ", " +
+        std::to_string(meshed) + ")");
+  }
+  // In a block of a composite: named by its flat index.
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  blocks->SetNumberOfBlocks(2);
+  blocks->SetBlock(0, MakeLines({ { 12, 0, 0 }, { 14, 2, 0 } }, { { 0, 1 } }));
+  auto bad = SquarePoints();
+  bad->SetLines(RawCells<vtkTypeInt64Array>({ 0, 4, 2, 8 }, square));
+  blocks->SetBlock(1, bad);
+  Harness b;
+  b.Run(blocks, "a multiblock with a malformed block");
+  Check(b.Messages->HasError({ "the line cells of block 2 of the input: their offsets decrease" }),
+    "a malformed block is named by its flat index");
+  // A quadratic edge, and a quadratic triangle, naming points that do not
+  // exist: read through GetCell, which copied the missing points' coordinates.
+  for (const vtkIdType missing : { vtkIdType(40000000), vtkIdType(7), vtkIdType(-3) })
+  {
+    for (const int type : { VTK_QUADRATIC_EDGE, VTK_QUADRATIC_TRIANGLE })
+    {
+      auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+      grid->SetPoints(SquarePoints()->GetPoints());
+      const vtkIdType edge[3] = { 0, 1, missing }, triangle[6] = { 0, 1, 2, 3, missing, 0 };
+      grid->InsertNextCell(VTK_LINE, 2, edge);
+      if (type == VTK_QUADRATIC_EDGE)
+      {
+        grid->InsertNextCell(type, 3, edge);
+      }
+      else
+      {
+        grid->InsertNextCell(type, 6, triangle);
+      }
+      Harness g;
+      vtkPolyData* mesh = g.Run(grid, "a higher-order cell naming a missing point");
+      const std::string said = missing >= 0
+        ? "cell 1 of the input refers to point " + std::to_string(missing)
+        : std::string("cell 1 of the input refers to a point that does not exist");
+      Check(g.Messages->HasError({ said }) && mesh->GetNumberOfCells() == 0,
+        "a higher-order cell (type " + std::to_string(type) + ") naming point " +
+          std::to_string(missing) + " is refused as a linear one is");
+    }
+  }
+  return 0;
+}
+
 int main(int argc, char* argv[])
 {
   const std::string test = argc > 1 ? argv[1] : "";
@@ -2987,6 +3130,7 @@ int main(int argc, char* argv[])
     { "polygon-data", TestPolygonData },
     { "unstructured-grid", TestUnstructuredGrid },
     { "higher-order-cells", TestHigherOrderCells },
+    { "malformed-cells", TestMalformedCells },
   };
   const auto it = tests.find(test);
   if (it == tests.end())
