@@ -9,7 +9,9 @@
 #include "OverlayStitchGather.h"
 
 #include <algorithm>
+#include <climits>
 #include <cstring>
+#include <limits>
 
 bool OverlayStitchIsFloating(vtkAbstractArray* array)
 {
@@ -22,6 +24,12 @@ bool OverlayStitchIsMarker(vtkAbstractArray* array, const char* name)
   return array && array->GetName() && std::strcmp(array->GetName(), name) == 0 &&
     vtkDataArray::SafeDownCast(array) && array->GetNumberOfComponents() == 1 &&
     !OverlayStitchIsFloating(array);
+}
+
+int OverlayStitchMarkerValue(double value)
+{
+  constexpr double lo = std::numeric_limits<int>::min(), hi = std::numeric_limits<int>::max();
+  return value >= lo && value <= hi ? static_cast<int>(value) : value > hi ? INT_MAX : INT_MIN;
 }
 
 namespace

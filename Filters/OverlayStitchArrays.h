@@ -21,6 +21,10 @@ bool OverlayStitchIsFloating(vtkAbstractArray* array);
 /// Whether an array is Triangle's markers by that name: one integer per tuple.
 bool OverlayStitchIsMarker(vtkAbstractArray* array, const char* name);
 
+/// A marker's value as Triangle's int: a 64-bit marker beyond int's range is
+/// clamped to it (casting it would be undefined).
+int OverlayStitchMarkerValue(double value);
+
 /// Whether in has arrays to carry: any but the block ids and the ghost array.
 bool OverlayStitchHasUserArrays(vtkDataSetAttributes* in);
 

@@ -26,7 +26,7 @@ std::vector<int> OverlayStitchSegmentMarkers(
   markers.reserve(segmentCells.size());
   for (const vtkIdType cell : segmentCells)
   {
-    markers.push_back(static_cast<int>(data->GetComponent(cell, 0)));
+    markers.push_back(OverlayStitchMarkerValue(data->GetComponent(cell, 0)));
   }
   return markers;
 }

@@ -93,7 +93,7 @@ bool OverlayStitchInterpolatePointData(vtkPointData* in, vtkCellData* inCells,
       {
         auto* source = vtkDataArray::SafeDownCast(c.Source);
         const int own =
-          t.inputPoint >= 0 ? static_cast<int>(source->GetComponent(t.inputPoint, 0)) : 0;
+          t.inputPoint >= 0 ? OverlayStitchMarkerValue(source->GetComponent(t.inputPoint, 0)) : 0;
         vtkDataArray::SafeDownCast(c.Target)->SetComponent(
           v, 0, triangle->vertex(static_cast<int>(t.vertex), own));
       }

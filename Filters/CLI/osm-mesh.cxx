@@ -48,6 +48,7 @@
 #include <cstring>
 #include <filesystem>
 #if defined(__unix__) || defined(__APPLE__)
+#include <sys/stat.h>
 #include <unistd.h> // access
 #endif
 #include <fstream>
@@ -436,6 +437,12 @@ std::filesystem::path Resolved(const std::filesystem::path& path)
 /// it then reads from the .node file beside it.
 bool ListsNoVertices(const std::string& path)
 {
+  // Not a pipe (opening one waits for a writer) or a device: refused later.
+  struct stat info;
+  if (stat(path.c_str(), &info) != 0 || !S_ISREG(info.st_mode))
+  {
+    return false;
+  }
   std::ifstream file(path);
   std::string line;
   for (bool first = true; std::getline(file, line); first = false)
@@ -707,6 +714,18 @@ bool ParseArguments(int argc, char* argv[], Arguments& args)
   {
     Fail("cannot read '" + args.input + "': the input must end in .poly, .node, .vtp, .vtu or .vtk",
       2);
+  }
+  // The input is opened more than once (and reading a device may not end): a
+  // pipe is read empty the second time, or its open waits for ever (a
+  // review). stat() does not open it.
+  struct stat info;
+  if (stat(args.input.c_str(), &info) == 0 && !S_ISREG(info.st_mode))
+  {
+    Fail("cannot read '" + args.input + "': " +
+      (S_ISDIR(info.st_mode) ? std::string("it is a directory")
+                             : std::string("it is not a regular file (a pipe or a device), and "
+                                           "osm-mesh reads its input more than once: save it "
+                                           "to a file first")));
   }
   if (!args.output.empty())
   {

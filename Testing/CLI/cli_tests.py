@@ -727,6 +727,26 @@ def group_errors():
     expect_error([missing], 1, ["cannot open '%s'" % missing, "No such file or directory"],
                  "missing file")
     expect_error([out("missing.vtp")], 1, ["cannot open"], "missing .vtp")
+    # A pipe or a device: the readers open the input more than once, so a
+    # pipe's second open waited for ever (a review), and /dev/zero as .poly
+    # was read for ever.
+    fifo = out("fifo.poly")
+    if os.path.lexists(fifo):
+        os.remove(fifo)
+    os.mkfifo(fifo)
+    expect_error([fifo, "-o", out("fifo.vtp")], 1,
+                 ["cannot read '%s'" % fifo, "not a regular file", "save it to a file first"],
+                 "a named pipe as input")
+    os.remove(fifo)
+    zero = out("zero.poly")
+    if os.path.lexists(zero):
+        os.remove(zero)
+    os.symlink("/dev/zero", zero)
+    expect_error([zero, "-o", out("zero.vtp")], 1, ["not a regular file"], "a device as input")
+    folder = out("folder.vtp")
+    os.makedirs(folder, exist_ok=True)
+    expect_error([folder], 1, ["cannot read '%s': it is a directory" % folder],
+                 "a directory as input")
 
     def write(name, text):
         path = out(name)

@@ -3062,6 +3062,34 @@ int TestMalformedCells()
       "Update() returns 0 after an error, 1 after a mesh (" + std::to_string(failed) + ", " +
         std::to_string(meshed) + ")");
   }
+  // 64-bit markers beyond int's range (Triangle's are ints) are clamped to
+  // it, where the cast was undefined.
+  {
+    auto data = SquarePoints();
+    data->SetLines(RawCells<vtkTypeInt64Array>({ 0, 2, 4, 6, 8 }, square));
+    vtkNew<vtkIdTypeArray> segmentMarker;
+    segmentMarker->SetName("SegmentMarker");
+    const vtkIdType big = vtkIdType(1) << 40;
+    for (const vtkIdType m : { big, -big, vtkIdType(3), vtkIdType(3) })
+    {
+      segmentMarker->InsertNextValue(m);
+    }
+    data->GetCellData()->AddArray(segmentMarker);
+    Harness h;
+    h.Mesher->PassCellDataOn();
+    h.Run(data, "64-bit segment markers beyond int");
+    vtkDataArray* markers = h.Mesher->GetEdgesOutput()->GetCellData()->GetArray("SegmentMarker");
+    double lo = 0, hi = 0;
+    for (vtkIdType e = 0; markers && e < markers->GetNumberOfTuples(); ++e)
+    {
+      lo = std::min(lo, markers->GetComponent(e, 0));
+      hi = std::max(hi, markers->GetComponent(e, 0));
+    }
+    Check(h.NoError() && markers && lo == std::numeric_limits<int>::min() &&
+        hi == std::numeric_limits<int>::max(),
+      "markers beyond int's range are clamped to it (" + std::to_string(lo) + " to " +
+        std::to_string(hi) + ")");
+  }
   // In a block of a composite: named by its flat index.
   vtkNew<vtkMultiBlockDataSet> blocks;
   blocks->SetNumberOfBlocks(2);
