@@ -133,7 +133,11 @@ std::string TypeName(int type)
     case VTK_LAGRANGE_QUADRILATERAL:
       return "vtkLagrangeQuadrilateral";
     default:
-      return vtkCellTypes::GetClassNameFromTypeId(type);
+    {
+      // An unknown type (a file's garbage) is named by its number (a review).
+      const std::string name = vtkCellTypes::GetClassNameFromTypeId(type);
+      return name == "UnknownClass" ? "unknown cell type " + std::to_string(type) : name;
+    }
   }
 }
 

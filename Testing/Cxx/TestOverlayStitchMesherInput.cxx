@@ -3090,6 +3090,18 @@ int TestMalformedCells()
       "markers beyond int's range are clamped to it (" + std::to_string(lo) + " to " +
         std::to_string(hi) + ")");
   }
+  // A cell of no type VTK knows (a file's garbage) is named by its number.
+  {
+    auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+    grid->SetPoints(SquarePoints()->GetPoints());
+    const vtkIdType ids[3] = { 0, 1, 2 };
+    grid->InsertNextCell(VTK_TRIANGLE, 3, ids);
+    grid->InsertNextCell(255, 2, ids);
+    Harness h;
+    h.Run(grid, "a cell of an unknown type");
+    Check(h.NoError() && h.Messages->HasWarning({ "the first cell 1 (unknown cell type 255)" }),
+      "an unknown cell type is named by its number");
+  }
   // In a block of a composite: named by its flat index.
   vtkNew<vtkMultiBlockDataSet> blocks;
   blocks->SetNumberOfBlocks(2);
