@@ -473,8 +473,10 @@ private:
     for (const long long e : ends)
       if (e < first || e > last)
         return fail("segment " + std::to_string(index) + " refers to vertex " + std::to_string(e) +
-          ", which does not exist (vertices are numbered " + std::to_string(first) + " to " +
-          std::to_string(last) + ")");
+          ", which does not exist " +
+          (out_.pslg.points.empty() ? std::string("(there are no vertices)")
+                                    : "(vertices are numbered " + std::to_string(first) + " to " +
+                std::to_string(last) + ")"));
     out_.pslg.segments.push_back(
       { static_cast<int>(ends[0] - first), static_cast<int>(ends[1] - first) });
     if (markers)

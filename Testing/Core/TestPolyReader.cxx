@@ -536,6 +536,10 @@ TEST(PolyReaderErrors, SegmentEndpointOutOfRange)
     "segment 0 refers to vertex 3, which does not exist (vertices are numbered 0 to 2)"));
   EXPECT_TRUE(failsAt(
     poly("3 2 0 0\n0 0 0\n1 1 0\n2 0 1\n1 0\n0 -1 2\n0\n"), "t.poly:6", "refers to vertex -1"));
+  // No vertices at all (a .node listing none): not "numbered 0 to -1" (a review).
+  std::istringstream noVertices("0 2 0 0\n");
+  EXPECT_TRUE(failsAt(poly("0 2 0 0\n1 0\n1 1 2\n0\n", &noVertices), "t.poly:3",
+    "segment 1 refers to vertex 1, which does not exist (there are no vertices)"));
   EXPECT_TRUE(failsAt(poly("3 2 0 0\n0 0 0\n1 1 0\n2 0 1\n1 0\n0 99999999999 2\n0\n"), "t.poly:6",
     "refers to vertex 99999999999"));
 }
