@@ -250,9 +250,11 @@ struct InvalidCells
         : PieceName
         ? "cell " + std::to_string(cellId) + " of " + PieceName + " " + std::to_string(piece)
         : "cell " + std::to_string(cellId);
-      // A -1 is what combining a rank's blocks left of an invalid id (said on that rank).
+      // A -1 is what combining a rank's blocks left of an invalid id (said on
+      // that rank); other negative ids are the input's own (a review).
       First = cell + " refers to " +
-        (*bad >= 0 ? "point " + std::to_string(*bad) : std::string("a point that does not exist")) +
+        (*bad != -1 ? "point " + std::to_string(*bad)
+                    : std::string("a point that does not exist")) +
         ", but " +
         (PieceName ? std::string("that ") + PieceName
                    : std::string(source->GetCellData()->GetArray(OverlayStitchBlockIdName)

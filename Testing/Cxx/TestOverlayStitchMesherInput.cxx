@@ -3133,9 +3133,7 @@ int TestMalformedCells()
       }
       Harness g;
       vtkPolyData* mesh = g.Run(grid, "a higher-order cell naming a missing point");
-      const std::string said = missing >= 0
-        ? "cell 1 of the input refers to point " + std::to_string(missing)
-        : std::string("cell 1 of the input refers to a point that does not exist");
+      const std::string said = "cell 1 of the input refers to point " + std::to_string(missing);
       Check(g.Messages->HasError({ said }) && mesh->GetNumberOfCells() == 0,
         "a higher-order cell (type " + std::to_string(type) + ") naming point " +
           std::to_string(missing) + " is refused as a linear one is");
