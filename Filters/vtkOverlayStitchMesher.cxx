@@ -37,6 +37,7 @@
 #include "OverlayStitchCellArrays.h"
 #include "OverlayStitchCellData.h"
 #include "OverlayStitchGather.h"
+#include "OverlayStitchInternalNames.h"
 #include "OverlayStitchPointData.h"
 #include "OverlayStitchUnstructured.h"
 #include "Plane.h"
@@ -986,7 +987,20 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   {
     vtkErrorMacro("Cannot mesh the input: a cell array is malformed (" << malformed << ").");
   }
-  vtkDataObject* inputObject = wellFormed;
+  // Arrays named like those the filter adds would stand for them.
+  std::vector<std::string> internalNames;
+  const vtkSmartPointer<vtkDataObject> withoutInternal =
+    OverlayStitchWithoutInternalArrays(wellFormed, internalNames);
+  if (!internalNames.empty())
+  {
+    vtkWarningMacro(<< "Ignored the input's " << internalNames.front()
+                    << (internalNames.size() > 1
+                           ? " (and " + std::to_string(internalNames.size() - 1) + " more)"
+                           : std::string())
+                    << ": the filter gives arrays of that name to the input internally. Rename "
+                       "it to have it carried to the outputs.");
+  }
+  vtkDataObject* inputObject = withoutInternal;
   vtkSmartPointer<vtkPolyData> local = vtkPolyData::SafeDownCast(inputObject);
   if (auto* grid = vtkUnstructuredGrid::SafeDownCast(inputObject))
   {

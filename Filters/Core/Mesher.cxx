@@ -1389,10 +1389,12 @@ void Mesher::meshRounds(Work& w)
       options.keepEdges ? &edges : nullptr, st, run);
     if (options.keepVertexSegments)
       findGraphSegments(walk, g, w);
+    // Only a domain that removes triangles can leave a segment out.
     plainPieces.clear();
-    for (const Piece& p : walk.pieces)
-      if (!p.duplicate && p.crossingCount == 0)
-        plainPieces.push_back({ p.v0, p.v1, p.segment });
+    if (domain != Domain::Box || !w.holes.empty())
+      for (const Piece& p : walk.pieces)
+        if (!p.duplicate && p.crossingCount == 0)
+          plainPieces.push_back({ p.v0, p.v1, p.segment });
     st.secondsStitch += since(t);
     overlay.mesh = Triangulation();
     walk = Walk();

@@ -22,6 +22,8 @@
 //   polygon-data     the input polygons' cell data carried to the Mesh (PassCellData)
 //   unstructured-grid a grid's lines and polygons meshed, its other cells ignored, its ids kept
 //   higher-order-cells a grid's quadratic and Lagrange curves and faces read through their nodes
+//   malformed-cells  cell arrays whose offsets decrease or overrun refused, not read
+//   internal-names   input arrays named like the filter's internal ones set aside
 // Every check prints "ok" or "FAILED"; the exit status is the number of failures (capped).
 #include "MesherTestUtils.h"
 
@@ -3142,6 +3144,57 @@ int TestMalformedCells()
   return 0;
 }
 
+//------------------------------------------------------------------------------
+/// An input array named like those the filter gives its input on the way is
+/// set aside with a warning (a review: a user's vtkOverlayStitchSourceCellId
+/// renumbered the cells in the messages, "cell 104" for cell 4).
+int TestInternalNames()
+{
+  auto idArray = [](const char* name, vtkIdType n) {
+    auto array = vtkSmartPointer<vtkIdTypeArray>::New();
+    array->SetName(name);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      array->InsertNextValue(100 + i);
+    }
+    return array;
+  };
+  // A line naming point 9 of 5: the error numbers it as the user does.
+  auto input = Square();
+  input->GetPoints()->InsertNextPoint(2, 2, 0);
+  const vtkIdType missing[2] = { 4, 9 };
+  input->GetLines()->InsertNextCell(2, missing);
+  input->GetPointData()->AddArray(idArray("vtkOverlayStitchSourcePointId", 5));
+  input->GetCellData()->AddArray(idArray("vtkOverlayStitchSourceCellId", 2));
+  Harness h;
+  h.Run(input, "user arrays named like the internal ones, a line naming point 9");
+  Check(h.Messages->HasError({ "cell 1 refers to point 9, but the input has 5 point(s)" }),
+    "the error names the cell by the input's own number");
+  Check(h.Messages->HasWarning({ "Ignored the input's point data array "
+                                 "vtkOverlayStitchSourcePointId (and 1 more)",
+          "Rename it" }),
+    "a warning names the arrays set aside");
+  Check(input->GetPointData()->GetArray("vtkOverlayStitchSourcePointId") &&
+      input->GetCellData()->GetArray("vtkOverlayStitchSourceCellId"),
+    "the caller's input keeps its arrays");
+  // In a block, and in field data: the mesh is as without them.
+  auto block = Square();
+  block->GetCellData()->AddArray(idArray("vtkOverlayStitchBlockId", 1));
+  block->GetFieldData()->AddArray(idArray("vtkOverlayStitchIgnoredCells", 1));
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  blocks->SetNumberOfBlocks(1);
+  blocks->SetBlock(0, block);
+  Harness b;
+  vtkPolyData* mesh = b.Run(blocks, "a block with internal names in cell and field data");
+  Check(b.NoError() && std::fabs(osmtest::TotalArea(mesh) - 100.0) < 1e-9 &&
+      Statistic(mesh, "IgnoredCells") == 0,
+    "the block is meshed, and no ignored cells are made up from the field data");
+  Check(b.Messages->HasWarning({ "Ignored the input's cell data array vtkOverlayStitchBlockId "
+                                 "of block 1 (and 1 more)" }),
+    "the warning names the block by its flat index");
+  return 0;
+}
+
 int main(int argc, char* argv[])
 {
   const std::string test = argc > 1 ? argv[1] : "";
@@ -3169,6 +3222,7 @@ int main(int argc, char* argv[])
     { "unstructured-grid", TestUnstructuredGrid },
     { "higher-order-cells", TestHigherOrderCells },
     { "malformed-cells", TestMalformedCells },
+    { "internal-names", TestInternalNames },
   };
   const auto it = tests.find(test);
   if (it == tests.end())

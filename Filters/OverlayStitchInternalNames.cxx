@@ -1,0 +1,113 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (c) 2026, the Overlay Stitch Meshing authors
+#include "OverlayStitchInternalNames.h"
+
+#include "vtkCellData.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkDataSet.h"
+#include "vtkFieldData.h"
+#include "vtkPointData.h"
+
+#include "OverlayStitchGather.h"
+
+#include <algorithm>
+#include <cstring>
+
+namespace
+{
+bool IsInternalName(const char* name)
+{
+  const char* const internal[] = { OverlayStitchBlockIdName, OverlayStitchSourceCellIdName,
+    OverlayStitchSourcePointIdName, OverlayStitchRankName, OverlayStitchIgnoredCellsName };
+  return name && std::any_of(std::begin(internal), std::end(internal), [name](const char* own) {
+    return std::strcmp(name, own) == 0;
+  });
+}
+
+/// The internal names among data's arrays.
+std::vector<std::string> InternalNamesIn(vtkFieldData* data)
+{
+  std::vector<std::string> names;
+  for (int i = 0; data && i < data->GetNumberOfArrays(); ++i)
+  {
+    vtkAbstractArray* array = data->GetAbstractArray(i);
+    if (array && IsInternalName(array->GetName()))
+    {
+      names.emplace_back(array->GetName());
+    }
+  }
+  return names;
+}
+
+/// data without its arrays of internal names (a shallow copy), or null if it
+/// has none; each is said in removed, with what names data.
+vtkSmartPointer<vtkDataObject> Cleared(
+  vtkDataObject* data, const std::string& what, std::vector<std::string>& removed)
+{
+  auto* dataSet = vtkDataSet::SafeDownCast(data);
+  if (!dataSet)
+  {
+    return nullptr;
+  }
+  const char* const kinds[3] = { "point", "cell", "field" };
+  vtkFieldData* const attributes[3] = { dataSet->GetPointData(), dataSet->GetCellData(),
+    dataSet->GetFieldData() };
+  std::vector<std::string> found[3];
+  bool any = false;
+  for (int k = 0; k < 3; ++k)
+  {
+    found[k] = InternalNamesIn(attributes[k]);
+    any = any || !found[k].empty();
+  }
+  if (!any)
+  {
+    return nullptr;
+  }
+  auto copy = vtk::TakeSmartPointer(dataSet->NewInstance());
+  copy->ShallowCopy(dataSet);
+  vtkFieldData* const copied[3] = { copy->GetPointData(), copy->GetCellData(),
+    copy->GetFieldData() };
+  for (int k = 0; k < 3; ++k)
+  {
+    for (const std::string& name : found[k])
+    {
+      copied[k]->RemoveArray(name.c_str());
+      removed.push_back(std::string(kinds[k]) + " data array " + name + what);
+    }
+  }
+  return copy;
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkDataObject> OverlayStitchWithoutInternalArrays(
+  vtkDataObject* input, std::vector<std::string>& removed)
+{
+  removed.clear();
+  auto* composite = vtkCompositeDataSet::SafeDownCast(input);
+  if (!composite)
+  {
+    vtkSmartPointer<vtkDataObject> cleared = Cleared(input, "", removed);
+    return cleared ? cleared : vtkSmartPointer<vtkDataObject>(input);
+  }
+  vtkSmartPointer<vtkCompositeDataSet> copy;
+  auto it = vtk::TakeSmartPointer(composite->NewIterator());
+  for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+  {
+    // Blocks are named by their flat index, as the filter's other messages do.
+    vtkSmartPointer<vtkDataObject> cleared = Cleared(it->GetCurrentDataObject(),
+      " of block " + std::to_string(it->GetCurrentFlatIndex()), removed);
+    if (!cleared)
+    {
+      continue;
+    }
+    if (!copy)
+    {
+      copy = vtk::TakeSmartPointer(composite->NewInstance());
+      copy->ShallowCopy(composite);
+    }
+    copy->SetDataSet(it, cleared);
+  }
+  return copy ? vtkSmartPointer<vtkDataObject>(copy) : vtkSmartPointer<vtkDataObject>(input);
+}
