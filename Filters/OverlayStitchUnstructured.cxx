@@ -112,7 +112,7 @@ bool HasNodesOfItsType(int type, vtkIdType n, const double* degrees)
     case VTK_LAGRANGE_CURVE:
       return n >= 2;
     case VTK_LAGRANGE_TRIANGLE:
-      return isTriangular(n);
+      return isTriangular(n) || n == 7; // 7: order 2 and a middle node (Exodus's TRI7)
     case VTK_LAGRANGE_QUADRILATERAL:
       return degrees ? degrees[0] >= 1 && degrees[1] >= 1 &&
           (degrees[0] + 1) * (degrees[1] + 1) == static_cast<double>(n)
@@ -227,8 +227,20 @@ bool ReadCell(vtkUnstructuredGrid* grid, vtkIdType c, int type, int& kind, vtkId
   {
     return true;
   }
-  grid->GetCell(c, cell);
   nodes.clear();
+  if (type == VTK_LAGRANGE_TRIANGLE && ids->GetNumberOfIds() == 7)
+  {
+    // VTK 9.2 gives this cell's edges wrong nodes: its boundary is its
+    // corners and the nodes between them, as a biquadratic triangle's.
+    for (const int node : { 0, 3, 1, 4, 2, 5 })
+    {
+      nodes.push_back(ids->GetId(node));
+    }
+    ids->SetNumberOfIds(6);
+    std::copy(nodes.begin(), nodes.end(), ids->begin());
+    return true;
+  }
+  grid->GetCell(c, cell);
   if (kind == 1)
   {
     AppendCurveNodes(cell->GetPointIds(), nodes);

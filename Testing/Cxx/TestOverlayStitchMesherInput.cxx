@@ -2798,6 +2798,33 @@ int TestOtherHigherOrderCells()
         " segments through its boundary's nodes, none across it");
   }
 
+  // A Lagrange triangle of 7 nodes (order 2 and a middle node: Exodus's
+  // TRI7, as ParaView's IOSS reader gives it), whose edges VTK 9.2 gets
+  // wrong: its corners and the nodes between them bound it, the middle node
+  // is a vertex inside.
+  {
+    auto tri7 = vtkSmartPointer<vtkUnstructuredGrid>::New();
+    vtkNew<vtkPoints> nodes;
+    nodes->SetDataTypeToDouble();
+    for (const Xyz& p :
+      std::vector<Xyz>{ o, x, y, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 0.6, 0.6, 0 } })
+    {
+      nodes->InsertNextPoint(p.data());
+    }
+    tri7->SetPoints(nodes);
+    const vtkIdType ids[] = { 0, 1, 2, 3, 4, 5, 6 };
+    tri7->InsertNextCell(VTK_LAGRANGE_TRIANGLE, 7, ids);
+    Harness h;
+    vtkPolyData* mesh = h.Run(tri7, "a Lagrange triangle of 7 nodes");
+    const double area = osmtest::TotalArea(mesh);
+    const std::vector<std::pair<Xyz, Xyz>> sides = { { o, x }, { x, y }, { y, o } };
+    Check(h.NoError() && std::fabs(area - 2) < 1e-9 && Statistic(mesh, "InputSegments") == 6 &&
+        Statistic(mesh, "IgnoredCells") == 0 &&
+        StrayInputEdges(h.Mesher->GetEdgesOutput(), sides) == 0 && HasVertex(mesh, 0.6, 0.6),
+      "a Lagrange triangle of 7 nodes: meshed whole (area " + Num(area) +
+        "), 6 segments through its boundary's nodes, its middle node a vertex");
+  }
+
   // A quadratic polygon: its corners, then the nodes between them.
   auto polygon = vtkSmartPointer<vtkUnstructuredGrid>::New();
   vtkNew<vtkPoints> points;
@@ -2940,11 +2967,11 @@ int TestHigherOrderCells()
       " wrong)");
 
   // A cell whose node count does not fit its type is ignored, not read out
-  // of bounds: a quadratic triangle of 4 nodes, Lagrange cells of 5 and 7.
-  const vtkIdType nodes[] = { 0, 1, 2, 3, 4, 5, 6 };
+  // of bounds: a quadratic triangle of 4 nodes, Lagrange cells of 5 and 8.
+  const vtkIdType nodes[] = { 0, 1, 2, 3, 4, 5, 6, 7 };
   grid->InsertNextCell(VTK_QUADRATIC_TRIANGLE, 4, nodes);
   grid->InsertNextCell(VTK_LAGRANGE_QUADRILATERAL, 5, nodes);
-  grid->InsertNextCell(VTK_LAGRANGE_TRIANGLE, 7, nodes);
+  grid->InsertNextCell(VTK_LAGRANGE_TRIANGLE, 8, nodes);
   for (int i = 0; i < 3; ++i)
   {
     material->InsertNextValue(0);
