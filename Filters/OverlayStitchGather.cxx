@@ -250,16 +250,15 @@ struct InvalidCells
         : PieceName
         ? "cell " + std::to_string(cellId) + " of " + PieceName + " " + std::to_string(piece)
         : "cell " + std::to_string(cellId);
-      // A -1 is what combining a rank's blocks left of an invalid id (said on
-      // that rank); other negative ids are the input's own (a review).
+      // A -1 in a combination of blocks is what combining left of an invalid
+      // id (said on that rank); other ids are the input's own (a review).
+      const bool combined = source->GetCellData()->GetArray(OverlayStitchBlockIdName);
       First = cell + " refers to " +
-        (*bad != -1 ? "point " + std::to_string(*bad)
-                    : std::string("a point that does not exist")) +
+        (*bad != -1 || !combined ? "point " + std::to_string(*bad)
+                                 : std::string("a point that does not exist")) +
         ", but " +
         (PieceName ? std::string("that ") + PieceName
-                   : std::string(source->GetCellData()->GetArray(OverlayStitchBlockIdName)
-                         ? "that block"
-                         : "the input")) +
+                   : std::string(combined ? "that block" : "the input")) +
         " has " + std::to_string(points) + " point(s)";
     }
   }

@@ -1283,7 +1283,8 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   if (!result.ok)
   {
     vtkErrorMacro("Meshing failed: " << Numbered(explain(result.error), numbering));
-    return Failure();
+    // An abort is no failure of the filter's, as for VTK's own (a review).
+    return progress.aborted() ? 1 : Failure();
   }
 
   // Phase "output": the three polydata, built in bulk; the abort flag is

@@ -254,7 +254,7 @@ def test_poly_with_hole(data_dir):
 
 
 def test_hole_points_property(data_dir):
-    """HolePoints: pairs cut holes; a value without its pair is said, not dropped silently."""
+    """HolePoints: (x, y) pairs cut holes, one AddHolePoint per pair (the panel's two columns)."""
     path = os.path.join(data_dir, "square_hole.poly")
     # The plugin ships the reader: its absence is a failure, not a skip.
     check("TrianglePolyReader" in globals(), "the plugin provides TrianglePolyReader")
@@ -262,12 +262,13 @@ def test_hole_points_property(data_dir):
     mesher = OverlayStitchMesher(Input=reader, UseInputHolePoints=0, HolePoints=[5.0, 5.0])
     mesh = mesh_of(mesher)
     check(abs(area3d(mesh) - 96.0) < 1e-9, "HolePoints=[5, 5] cuts the hole")
+    # A seed outside every region beside it: the one inside still cuts the hole.
     errors = []
-    mesher.HolePoints = [5.0, 5.0, 2.5]
+    mesher.HolePoints = [50.0, 50.0, 5.0, 5.0]
     mesh = mesh_of(mesher, errors)
-    check("odd number of values (3)" in errors[0] and "2.5" in errors[0],
-          "HolePoints of odd length: a warning names the lone value")
-    check(abs(area3d(mesh) - 96.0) < 1e-9, "HolePoints of odd length: the pair still cuts the hole")
+    check(abs(area3d(mesh) - 96.0) < 1e-9, "HolePoints=[50, 50, 5, 5]: the second pair cuts the hole")
+    check(any("hole 0" in e and "(50, 50)" in e for e in errors),
+          "HolePoints=[50, 50, 5, 5]: the first pair is read as one seed, named by its coordinates")
     Delete(mesher)
     Delete(reader)
 
