@@ -73,6 +73,17 @@ def main(plugin, data_dir):
             check(mesher.GetPropertyValue(name) == value,
                   "%s defaults to %r (got %r)" % (name, value, mesher.GetPropertyValue(name)))
     check("HolePoints" in names and len(mesher.HolePoints) == 0, "HolePoints exists, empty")
+    # What the panel can show (a GUI review): ParaView 5.11 makes no widget for
+    # an IdTypeVectorProperty, and seeds are rows of two columns, X and Y.
+    steiner = mesher.GetProperty("MaximumSteinerPoints").SMProperty
+    check(steiner.IsA("vtkSMIntVectorProperty"),
+          "MaximumSteinerPoints is an int property, which the panel shows (got %s)"
+          % steiner.GetClassName())
+    holes = mesher.GetProperty("HolePoints").SMProperty
+    labels = holes.GetHints().FindNestedElementByName("ShowComponentLabels") if holes.GetHints() else None
+    check(holes.GetNumberOfElementsPerCommand() == 2 and labels is not None
+          and labels.GetNumberOfNestedElements() == 2,
+          "HolePoints is a table of (x, y) rows with labelled columns")
     ports = [mesher.SMProxy.GetOutputPortName(i) for i in range(mesher.SMProxy.GetNumberOfOutputPorts())]
     check(ports == ["Mesh", "Edges", "Overlay"], "output ports Mesh, Edges, Overlay (got %r)" % ports)
     hints = mesher.SMProxy.GetHints()
