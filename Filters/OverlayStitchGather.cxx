@@ -756,6 +756,7 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
 
   vtkIdType sharedPoints = 0;
   vtkIdType sharedCells = 0;
+  bool anyFloat = false;
   if (numberOfUsed > 0)
   {
     // Points: a point equal to one of an earlier piece is that point. Ids are
@@ -817,7 +818,17 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
     }
     std::vector<vtkIdType> finalId(sources.size());
     vtkNew<vtkPoints> points;
-    points->SetDataTypeToDouble();
+    // Float points stay float where every piece's are (exactly): the mesher
+    // allows their rounding off a tilted plane (a review: a Slice's output
+    // meshed serially, not in parallel); any float piece is noted.
+    bool allFloat = true;
+    for (vtkPolyData* piece : used)
+    {
+      const bool floats = piece->GetPoints() && piece->GetPoints()->GetDataType() == VTK_FLOAT;
+      anyFloat = anyFloat || floats;
+      allFloat = allFloat && (floats || piece->GetNumberOfPoints() == 0);
+    }
+    points->SetDataType(allFloat ? VTK_FLOAT : VTK_DOUBLE);
     points->SetNumberOfPoints(static_cast<vtkIdType>(sources.size()));
     // Each point and cell is copied once, so global ids keep their meaning
     // (vtkDataSetAttributes leaves them out by default).
@@ -972,6 +983,7 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
     summary->SharedPointsMerged = sharedPoints;
     summary->SharedCellsDropped = sharedCells;
     summary->HolePoints = static_cast<vtkIdType>(seeds.size());
+    summary->FloatPoints = anyFloat;
     summary->InvalidCells = invalid.Count;
     summary->FirstInvalidCell = invalid.First;
   }

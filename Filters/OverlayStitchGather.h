@@ -80,6 +80,9 @@ struct OverlayStitchGatherSummary
   vtkIdType SharedPointsMerged = 0;    ///< points found again in a later piece
   vtkIdType SharedCellsDropped = 0;    ///< cells found again in a later piece
   vtkIdType HolePoints = 0;            ///< distinct hole seeds after the gather
+  /// Some piece has float points (rounded to 2^-24 of themselves): the
+  /// combination's are float only where every piece's are.
+  bool FloatPoints = false;
   /// Cells naming a point their own piece does not have: after combining, such
   /// an id is -1 and says nothing, so the first is described here ("cell 3 of
   /// rank 1 refers to point 57, ..."), for the caller to report.

@@ -1101,7 +1101,8 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   {
     // Float coordinates are rounded to 2^-24 of themselves: a tilted plane's
     // points, as a slice gives them, lie that far off it.
-    const bool floats = input->GetPoints() && input->GetPoints()->GetDataType() == VTK_FLOAT;
+    const bool floats = (input->GetPoints() && input->GetPoints()->GetDataType() == VTK_FLOAT) ||
+      combination.FloatPoints || gather.FloatPoints;
     inputError = map.choose(points, this->ProjectToXYPlane != 0, floats ? 0x1p-24 : 0.0);
   }
   // Composite blocks and the pieces of a parallel run are meshed as one

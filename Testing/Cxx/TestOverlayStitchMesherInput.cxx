@@ -424,6 +424,29 @@ int TestTiltedPlane()
       kept += floatPoints.count({ p[0], p[1], p[2] }) ? 1 : 0;
     }
     Check(kept == floats->GetNumberOfPoints(), "their input points come back as they were");
+    // As a block of a composite (combined as a parallel run combines its
+    // ranks' pieces: a review found it refused), alone and beside a block
+    // of double points in the plane.
+    for (const bool withDoubles : { false, true })
+    {
+      vtkNew<vtkMultiBlockDataSet> blocks;
+      blocks->SetNumberOfBlocks(withDoubles ? 2 : 1);
+      blocks->SetBlock(0, floats);
+      if (withDoubles)
+      {
+        auto inside = vtkSmartPointer<vtkPolyData>::New();
+        vtkNew<vtkPoints> one;
+        one->SetDataTypeToDouble();
+        const Xyz at = tilt.At(1, 8);
+        one->InsertNextPoint(at.data());
+        inside->SetPoints(one);
+        blocks->SetBlock(1, inside);
+      }
+      const std::string what = withDoubles ? "a float block and a double block" : "a float block";
+      vtkPolyData* blockMesh = h.Run(blocks, "tilted plane, " + what);
+      Check(h.NoError() && std::fabs(osmtest::TotalArea(blockMesh) - 100.0) < 1e-4,
+        "tilted plane, " + what + ": meshed in the plane, as a single dataset is");
+    }
     double p[3];
     single->GetPoint(5, p);
     single->SetPoint(5, p[0], p[1], p[2] + 1e-3);
