@@ -35,6 +35,7 @@
 #include <numeric>
 #include <set>
 #include <string>
+#include <tuple>
 #include <unordered_map>
 #include <utility>
 
@@ -290,27 +291,43 @@ private:
   }
 };
 
+/// A hole seed of a piece's field data: (x, y, z), or (x, y) with z 0.
+struct HoleSeed
+{
+  std::array<double, 3> At;
+  bool XY; ///< given as (x, y): the mesher lifts it along z onto the input's plane
+  bool operator<(const HoleSeed& other) const
+  {
+    return std::tie(this->At, this->XY) < std::tie(other.At, other.XY);
+  }
+};
+
 /// Appends the hole seeds of `field` (a 3-component, or 2-component, numeric
-/// "HolePoints" array) to `seeds`, skipping exact repeats.
-void CollectHolePoints(vtkFieldData* field, std::vector<std::array<double, 3>>& seeds,
-  std::set<std::array<double, 3>>& seen)
+/// "HolePoints" array) to `seeds`, skipping exact repeats (every rank may
+/// hold the same field data); false if the array has another number of
+/// components, which the serial run ignores with a warning too.
+bool CollectHolePoints(vtkFieldData* field, std::vector<HoleSeed>& seeds, std::set<HoleSeed>& seen)
 {
   vtkDataArray* holes = field ? field->GetArray(HolePointsName) : nullptr;
-  if (!holes || holes->GetNumberOfComponents() < 2)
+  const int components = holes ? holes->GetNumberOfComponents() : 3;
+  if (!holes || (components != 2 && components != 3))
   {
-    return;
+    return !holes;
   }
   for (vtkIdType t = 0; t < holes->GetNumberOfTuples(); ++t)
   {
-    std::array<double, 3> p = { holes->GetComponent(t, 0) + 0.0, holes->GetComponent(t, 1) + 0.0,
-      holes->GetNumberOfComponents() > 2 ? holes->GetComponent(t, 2) + 0.0 : 0.0 };
+    const HoleSeed seed{ { holes->GetComponent(t, 0) + 0.0, holes->GetComponent(t, 1) + 0.0,
+                           components == 3 ? holes->GetComponent(t, 2) + 0.0 : 0.0 },
+      components == 2 };
     // NaN seeds are passed on (the mesher reports them); they are never "equal".
-    const bool finite = std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
-    if (!finite || seen.insert(p).second)
+    const bool finite =
+      std::isfinite(seed.At[0]) && std::isfinite(seed.At[1]) && std::isfinite(seed.At[2]);
+    if (!finite || seen.insert(seed).second)
     {
-      seeds.push_back(p);
+      seeds.push_back(seed);
     }
   }
+  return true;
 }
 
 } // namespace
@@ -932,26 +949,35 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
   // gathered from every piece (empty pieces included) and deduplicated.
   // The seeds' array takes its place among the others when first seen, and
   // its values at the end: the order of a serial run's input.
-  std::vector<std::array<double, 3>> seeds;
-  std::set<std::array<double, 3>> seenSeeds;
+  std::vector<HoleSeed> seeds;
+  std::set<HoleSeed> seenSeeds;
   bool anyHoles = false;
   vtkNew<vtkDoubleArray> holes;
   holes->SetName(HolePointsName);
-  holes->SetNumberOfComponents(3);
   vtkFieldData* outField = combined->GetFieldData();
   vtkIdType ignoredCells = 0;
-  for (const auto& piece : pieces)
+  for (std::size_t p = 0; p < pieces.size(); ++p)
   {
+    vtkDataObject* piece = pieces[p];
     vtkFieldData* field = piece ? piece->GetFieldData() : nullptr;
     if (!field)
     {
       continue;
     }
     ignoredCells += OverlayStitchIgnoredCells(piece);
-    if (field->GetAbstractArray(HolePointsName))
+    if (vtkAbstractArray* array = field->GetAbstractArray(HolePointsName))
     {
       anyHoles = true;
-      CollectHolePoints(field, seeds, seenSeeds);
+      if (!CollectHolePoints(field, seeds, seenSeeds))
+      {
+        auto* polyData = vtkPolyData::SafeDownCast(piece);
+        notes.push_back({ {},
+          "The field data array HolePoints of " +
+            (polyData ? PieceLabel(polyData, pieceName, p)
+                      : std::string(pieceName) + " " + std::to_string(p)) +
+            " has " + std::to_string(array->GetNumberOfComponents()) +
+            " components (2 or 3 expected: x, y and perhaps z): ignored." });
+      }
     }
     for (int a = 0; a < field->GetNumberOfArrays(); ++a)
     {
@@ -969,10 +995,23 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
   }
   if (anyHoles)
   {
+    // (x, y) seeds stay so, to be lifted onto the input's plane along z, as in
+    // a serial run (a review: taken as (x, y, 0), they were projected across
+    // a tilted plane); beside (x, y, z) seeds they can only be taken at z 0.
+    const auto xy =
+      std::count_if(seeds.begin(), seeds.end(), [](const HoleSeed& h) { return h.XY; });
+    const int components = xy > 0 && xy == static_cast<std::ptrdiff_t>(seeds.size()) ? 2 : 3;
+    if (xy > 0 && components == 3)
+    {
+      notes.push_back({ {},
+        "The field data arrays HolePoints give " + std::to_string(xy) +
+          " seed(s) as (x, y) and others as (x, y, z): the (x, y) ones are taken at z = 0." });
+    }
+    holes->SetNumberOfComponents(components);
     holes->SetNumberOfTuples(static_cast<vtkIdType>(seeds.size()));
     for (std::size_t s = 0; s < seeds.size(); ++s)
     {
-      holes->SetTypedTuple(static_cast<vtkIdType>(s), seeds[s].data());
+      holes->SetTypedTuple(static_cast<vtkIdType>(s), seeds[s].At.data());
     }
   }
 

@@ -464,8 +464,53 @@ int TestTiltedPlane()
   Check(h.NoError() && std::fabs(holed - 84.0) < 1e-9,
     "a field data seed off the plane is projected onto it: the hole is cut (area " + Num(holed) +
       ")");
-  // ... and from the property (x, y), moved along z onto the plane.
+  // ... given as (x, y) in the field data, lifted along z onto the plane,
+  // alone and as a block of a composite (combined as a parallel run's pieces
+  // are: a review found such seeds taken as (x, y, 0) and projected across
+  // the plane). In the plane z = 3x, (1, 1, 0) projects to (0.1, 1, 0.3), in
+  // the ring around the inner square that (1, 1) names.
   input->GetFieldData()->RemoveArray("HolePoints");
+  {
+    auto ramp = MakeLines({ { 0, 0, 0 }, { 4, 0, 12 }, { 4, 4, 12 }, { 0, 4, 0 }, { 0.5, 0.5, 1.5 },
+                            { 1.5, 0.5, 4.5 }, { 1.5, 1.5, 4.5 }, { 0.5, 1.5, 1.5 } },
+      { { 0, 1, 2, 3, 0 }, { 4, 5, 6, 7, 4 } });
+    AddFieldHoles(ramp, { { 1, 1, 0 } }, 2);
+    // Beside an empty block: a single block is read as it is.
+    auto other = vtkSmartPointer<vtkPolyData>::New();
+    other->SetPoints(vtkNew<vtkPoints>());
+    vtkNew<vtkMultiBlockDataSet> blocks;
+    blocks->SetNumberOfBlocks(2);
+    blocks->SetBlock(0, ramp);
+    blocks->SetBlock(1, other);
+    const double ring = 15 * std::sqrt(10.0);
+    for (vtkDataObject* data :
+      { static_cast<vtkDataObject*>(ramp), static_cast<vtkDataObject*>(blocks) })
+    {
+      const std::string what = data == ramp ? "alone" : "as a block";
+      mesh = h.Run(data, "the plane z = 3x, an (x, y) field data hole, " + what);
+      const double area = osmtest::TotalArea(mesh);
+      Check(h.NoError() && std::fabs(area - ring) < 1e-9,
+        "an (x, y) field data seed is lifted onto the plane, " + what +
+          ": the inner square is the hole (area " + Num(area) + ", expected " + Num(ring) + ")");
+    }
+    // Beside (x, y, z) seeds of another block, (x, y) ones are taken at z = 0.
+    AddFieldHoles(other, { { 1, 1, 3 } });
+    blocks->Modified();
+    h.Run(blocks, "the plane z = 3x, (x, y) and (x, y, z) field data holes in two blocks");
+    Check(h.Messages->HasWarning({ "1 seed(s) as (x, y) and others as (x, y, z)", "z = 0" }),
+      "(x, y) seeds beside (x, y, z) ones: a warning says how they are taken");
+    // A block's seeds of 4 components are ignored with a warning, as a single dataset's.
+    other->GetFieldData()->RemoveArray("HolePoints");
+    other->GetPoints()->InsertNextPoint(3, 3, 9); // named by its block id, as a block with points
+    AddFieldHoles(other, { { 1, 1, 3 } }, 4);
+    blocks->Modified();
+    mesh = h.Run(blocks, "the plane z = 3x, a block's field data holes of 4 components");
+    Check(h.Messages->HasWarning({ "HolePoints of block 2 has 4 components", "ignored" }) &&
+        std::fabs(osmtest::TotalArea(mesh) - ring) < 1e-6,
+      "a block's 4-component seeds are ignored with a warning naming the block");
+  }
+
+  // ... and from the property (x, y), moved along z onto the plane.
   h.Mesher->AddHolePoint(center[0], center[1]);
   mesh = h.Run(input, "tilted plane, property hole");
   const double holed2 = osmtest::TotalArea(mesh);
