@@ -6,7 +6,7 @@
 #include "vtkDataArray.h"
 #include "vtkDataSetAttributes.h"
 
-#include "OverlayStitchGather.h"
+#include "OverlayStitchInternalNames.h"
 
 #include <algorithm>
 #include <climits>
@@ -41,10 +41,7 @@ bool IsInternal(const char* name)
 {
   return name &&
     (std::strcmp(name, vtkDataSetAttributes::GhostArrayName()) == 0 ||
-      std::strcmp(name, OverlayStitchBlockIdName) == 0 ||
-      std::strcmp(name, OverlayStitchSourceCellIdName) == 0 ||
-      std::strcmp(name, OverlayStitchSourcePointIdName) == 0 ||
-      std::strcmp(name, OverlayStitchRankName) == 0);
+      OverlayStitchIsInternalName(name));
 }
 } // namespace
 

@@ -3,6 +3,7 @@
 #include "OverlayStitchGather.h"
 
 #include "OverlayStitchArrays.h"
+#include "OverlayStitchInternalNames.h"
 #include "OverlayStitchUnstructured.h"
 
 #include "vtkAbstractArray.h"
@@ -353,9 +354,11 @@ void NoteArraysLeftOut(const std::vector<vtkPolyData*>& used, vtkPolyData* combi
       {
         const char* name = attributes->GetArrayName(i);
         const OverlayStitchArrayName item{ cells ? "cell" : "point", name ? name : "(unnamed)" };
+        // Not the ghost array, nor the ids combining gives pieces (a review:
+        // a rank's polydata beside another's blocks named them).
         if ((!name || !kept->GetAbstractArray(name)) &&
           !(name && std::strcmp(name, vtkDataSetAttributes::GhostArrayName()) == 0) &&
-          seen.insert(item).second)
+          !OverlayStitchIsInternalName(name) && seen.insert(item).second)
         {
           out.push_back(item);
         }

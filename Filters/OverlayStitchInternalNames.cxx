@@ -16,15 +16,6 @@
 
 namespace
 {
-bool IsInternalName(const char* name)
-{
-  const char* const internal[] = { OverlayStitchBlockIdName, OverlayStitchSourceCellIdName,
-    OverlayStitchSourcePointIdName, OverlayStitchRankName, OverlayStitchIgnoredCellsName };
-  return name && std::any_of(std::begin(internal), std::end(internal), [name](const char* own) {
-    return std::strcmp(name, own) == 0;
-  });
-}
-
 /// The internal names among data's arrays.
 std::vector<std::string> InternalNamesIn(vtkFieldData* data)
 {
@@ -32,7 +23,7 @@ std::vector<std::string> InternalNamesIn(vtkFieldData* data)
   for (int i = 0; data && i < data->GetNumberOfArrays(); ++i)
   {
     vtkAbstractArray* array = data->GetAbstractArray(i);
-    if (array && IsInternalName(array->GetName()))
+    if (array && OverlayStitchIsInternalName(array->GetName()))
     {
       names.emplace_back(array->GetName());
     }
@@ -79,6 +70,16 @@ vtkSmartPointer<vtkDataObject> Cleared(
   return copy;
 }
 } // namespace
+
+//------------------------------------------------------------------------------
+bool OverlayStitchIsInternalName(const char* name)
+{
+  const char* const internal[] = { OverlayStitchBlockIdName, OverlayStitchSourceCellIdName,
+    OverlayStitchSourcePointIdName, OverlayStitchRankName, OverlayStitchIgnoredCellsName };
+  return name && std::any_of(std::begin(internal), std::end(internal), [name](const char* own) {
+    return std::strcmp(name, own) == 0;
+  });
+}
 
 //------------------------------------------------------------------------------
 vtkSmartPointer<vtkDataObject> OverlayStitchWithoutInternalArrays(

@@ -16,6 +16,10 @@
 
 class vtkDataObject;
 
+/// Whether an array's name is one the filter gives arrays of its input on
+/// the way (block, rank and source ids; the count of ignored cells).
+bool OverlayStitchIsInternalName(const char* name);
+
 /// input as it is when no point, cell or field data array of it (of any
 /// block of a composite) bears one of the filter's internal names;
 /// otherwise a shallow copy without them, each named in removed ("point
