@@ -1061,7 +1061,8 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   // rank's blocks first), since combining leaves such an id as -1.
   const OverlayStitchGatherSummary& invalid =
     combination.InvalidCells > 0 || !meshHere ? combination : gather;
-  if (invalid.InvalidCells > 0)
+  // Not the cell that stands for a malformed array of this rank's, said above.
+  if (invalid.InvalidCells > 0 && malformed.empty())
   {
     vtkErrorMacro("Cannot mesh the input: " << invalid.FirstInvalidCell << " ("
                                             << invalid.InvalidCells

@@ -3159,6 +3159,9 @@ int TestMalformedCells()
     Check(h.Messages->HasError({ "Cannot mesh the input: a cell array is malformed", c.said }) &&
         mesh->GetNumberOfCells() == 0 && h.Mesher->GetEdgesOutput()->GetNumberOfCells() == 0,
       std::string(c.name) + ": refused, naming the array");
+    // Not also as the cell that stands for it (a review: "cell 0 refers to a
+    // point that does not exist").
+    Check(h.Messages->Errors.size() == 1, std::string(c.name) + ": one error");
   }
   // A failed run fails the pipeline's update, as VTK's readers do (a
   // review: Update() returned 1 after every error); a good one succeeds, also
