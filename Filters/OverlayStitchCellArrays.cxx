@@ -8,11 +8,14 @@
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
+#include "vtkFieldData.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
+
+#include "OverlayStitchGather.h"
 
 namespace
 {
@@ -58,13 +61,10 @@ std::string Problem(vtkCellArray* cells)
   return "";
 }
 
-/// One cell of 2 ids naming point -1.
-vtkSmartPointer<vtkCellArray> MissingPointCell()
+/// Marks data as the stand-in of a piece with a malformed cell array.
+void MarkMalformed(vtkDataObject* data)
 {
-  auto cells = vtkSmartPointer<vtkCellArray>::New();
-  const vtkIdType ids[2] = { -1, -1 };
-  cells->InsertNextCell(2, ids);
-  return cells;
+  data->GetFieldData()->AddArray(OverlayStitchIdArray(OverlayStitchMalformedName, 1, 1));
 }
 
 /// data with its malformed cell arrays replaced (a shallow copy), or null if
@@ -103,10 +103,11 @@ vtkSmartPointer<vtkDataObject> Repaired(
     copy->ShallowCopy(poly);
     // Every cell array goes: a malformed one shifts the ids of the cells after it.
     copy->SetVerts(nullptr);
+    copy->SetLines(nullptr);
     copy->SetPolys(nullptr);
     copy->SetStrips(nullptr);
-    copy->SetLines(MissingPointCell());
     copy->GetCellData()->Initialize();
+    MarkMalformed(copy);
     return copy;
   }
   if (auto* grid = vtkUnstructuredGrid::SafeDownCast(data))
@@ -129,9 +130,10 @@ vtkSmartPointer<vtkDataObject> Repaired(
     copy->SetPoints(grid->GetPoints());
     copy->GetPointData()->ShallowCopy(grid->GetPointData());
     copy->GetFieldData()->ShallowCopy(grid->GetFieldData());
-    vtkNew<vtkUnsignedCharArray> lineType;
-    lineType->InsertNextValue(VTK_LINE);
-    copy->SetCells(lineType, MissingPointCell());
+    vtkNew<vtkUnsignedCharArray> noTypes;
+    vtkNew<vtkCellArray> noCells;
+    copy->SetCells(noTypes, noCells);
+    MarkMalformed(copy);
     return copy;
   }
   return nullptr;
@@ -140,24 +142,22 @@ vtkSmartPointer<vtkDataObject> Repaired(
 } // namespace
 
 //------------------------------------------------------------------------------
-vtkSmartPointer<vtkDataObject> OverlayStitchWithWellFormedCells(
-  vtkDataObject* input, std::string& malformed)
+vtkSmartPointer<vtkDataObject> OverlayStitchWithBlocksReplaced(vtkDataObject* input,
+  const std::function<vtkSmartPointer<vtkDataObject>(vtkDataObject*, int)>& replace)
 {
-  malformed.clear();
   auto* composite = vtkCompositeDataSet::SafeDownCast(input);
   if (!composite)
   {
-    vtkSmartPointer<vtkDataObject> repaired = Repaired(input, "the input", malformed);
-    return repaired ? repaired : vtkSmartPointer<vtkDataObject>(input);
+    vtkSmartPointer<vtkDataObject> replaced = replace(input, -1);
+    return replaced ? replaced : vtkSmartPointer<vtkDataObject>(input);
   }
   vtkSmartPointer<vtkCompositeDataSet> copy;
   auto it = vtk::TakeSmartPointer(composite->NewIterator());
   for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
   {
-    // Blocks are named by their flat index, as the filter's other messages do.
-    vtkSmartPointer<vtkDataObject> repaired = Repaired(it->GetCurrentDataObject(),
-      "block " + std::to_string(it->GetCurrentFlatIndex()) + " of the input", malformed);
-    if (!repaired)
+    vtkSmartPointer<vtkDataObject> replaced =
+      replace(it->GetCurrentDataObject(), static_cast<int>(it->GetCurrentFlatIndex()));
+    if (!replaced)
     {
       continue;
     }
@@ -166,7 +166,19 @@ vtkSmartPointer<vtkDataObject> OverlayStitchWithWellFormedCells(
       copy = vtk::TakeSmartPointer(composite->NewInstance());
       copy->ShallowCopy(composite);
     }
-    copy->SetDataSet(it, repaired);
+    copy->SetDataSet(it, replaced);
   }
   return copy ? vtkSmartPointer<vtkDataObject>(copy) : vtkSmartPointer<vtkDataObject>(input);
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkDataObject> OverlayStitchWithWellFormedCells(
+  vtkDataObject* input, std::string& malformed)
+{
+  malformed.clear();
+  // Blocks are named by their flat index, as the filter's other messages do.
+  return OverlayStitchWithBlocksReplaced(input, [&malformed](vtkDataObject* data, int block) {
+    return Repaired(data,
+      block < 0 ? "the input" : "block " + std::to_string(block) + " of the input", malformed);
+  });
 }

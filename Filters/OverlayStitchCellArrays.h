@@ -10,17 +10,26 @@
 
 #include "vtkSmartPointer.h"
 
+#include <functional>
 #include <string>
 
 class vtkDataObject;
 
+/// input with each dataset of it (input itself, or every block of a
+/// composite) replaced by what replace gives for it, where that is not
+/// null: input itself if none is replaced, else a shallow copy. replace is
+/// given the block's flat index, or -1 for a dataset that is no block.
+vtkSmartPointer<vtkDataObject> OverlayStitchWithBlocksReplaced(vtkDataObject* input,
+  const std::function<vtkSmartPointer<vtkDataObject>(vtkDataObject*, int)>& replace);
+
 /// input as it is when every cell array of it (a polydata's verts, lines,
 /// polys and strips, an unstructured grid's cells and their types; every
-/// block of a composite) is well formed. Otherwise a shallow copy in which
-/// each malformed array is replaced by one cell naming point -1, which the
-/// filter then refuses as a cell naming a point that does not exist, on every
-/// rank alike; malformed names the first one ("the lines of block 2: their
-/// offsets decrease at cell 1").
+/// block of a composite) is well formed. Otherwise a shallow copy in which a
+/// dataset with a malformed array has no cells, and its field data the mark
+/// OverlayStitchMalformedName, which the gather carries to the rank that
+/// meshes: that rank refuses the input (a stand-in cell, as before, was
+/// refused again as a cell naming a missing point: a review). malformed names
+/// the first one ("the lines of block 2: their offsets decrease at cell 1").
 vtkSmartPointer<vtkDataObject> OverlayStitchWithWellFormedCells(
   vtkDataObject* input, std::string& malformed);
 

@@ -252,15 +252,17 @@ struct InvalidCells
         : PieceName
         ? "cell " + std::to_string(cellId) + " of " + PieceName + " " + std::to_string(piece)
         : "cell " + std::to_string(cellId);
-      // A -1 in a combination of blocks is what combining left of an invalid
-      // id (said on that rank); other ids are the input's own (a review).
-      const bool combined = source->GetCellData()->GetArray(OverlayStitchBlockIdName);
+      // A -1 in a rank's combination of blocks is what combining left of an
+      // invalid id (said on that rank); other ids, and those of a block read
+      // on its own rank, are the input's own (a review).
+      const bool block = source->GetCellData()->GetArray(OverlayStitchBlockIdName);
+      const bool combined = block && source->GetCellData()->GetArray(OverlayStitchRankName);
       First = cell + " refers to " +
         (*bad != -1 || !combined ? "point " + std::to_string(*bad)
                                  : std::string("a point that does not exist")) +
         ", but " +
         (PieceName ? std::string("that ") + PieceName
-                   : std::string(combined ? "that block" : "the input")) +
+                   : std::string(block ? "that block" : "the input")) +
         " has " + std::to_string(points) + " point(s)";
     }
   }
@@ -630,6 +632,8 @@ const char* const OverlayStitchSourceCellIdName = "vtkOverlayStitchSourceCellId"
 const char* const OverlayStitchSourcePointIdName = "vtkOverlayStitchSourcePointId";
 const char* const OverlayStitchRankName = "vtkOverlayStitchRank";
 const char* const OverlayStitchIgnoredCellsName = "vtkOverlayStitchIgnoredCells";
+const char* const OverlayStitchMalformedName = "vtkOverlayStitchMalformed";
+const char* const OverlayStitchFloatPointsName = "vtkOverlayStitchFloatPoints";
 
 //------------------------------------------------------------------------------
 vtkSmartPointer<vtkIdTypeArray> OverlayStitchIdArray(const char* name, vtkIdType n, vtkIdType value)
@@ -776,7 +780,7 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
 
   vtkIdType sharedPoints = 0;
   vtkIdType sharedCells = 0;
-  bool anyFloat = false;
+  bool anyFloat = false, allFloat = false;
   if (numberOfUsed > 0)
   {
     // Points: a point equal to one of an earlier piece is that point. Ids are
@@ -841,12 +845,12 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
     // Float points stay float where every piece's are (exactly): the mesher
     // allows their rounding off a tilted plane (a review: a Slice's output
     // meshed serially, not in parallel); any float piece is noted.
-    bool allFloat = true;
+    allFloat = true;
     for (vtkPolyData* piece : used)
     {
       const bool floats = piece->GetPoints() && piece->GetPoints()->GetDataType() == VTK_FLOAT;
       anyFloat = anyFloat || floats;
-      allFloat = allFloat && (floats || piece->GetNumberOfPoints() == 0);
+      allFloat = allFloat && floats;
     }
     points->SetDataType(allFloat ? VTK_FLOAT : VTK_DOUBLE);
     points->SetNumberOfPoints(static_cast<vtkIdType>(sources.size()));
@@ -959,6 +963,8 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
   holes->SetName(HolePointsName);
   vtkFieldData* outField = combined->GetFieldData();
   vtkIdType ignoredCells = 0;
+  vtkIdType malformedPieces = 0;
+  std::string firstMalformed;
   for (std::size_t p = 0; p < pieces.size(); ++p)
   {
     vtkDataObject* piece = pieces[p];
@@ -968,13 +974,22 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
       continue;
     }
     ignoredCells += OverlayStitchIgnoredCells(piece);
+    anyFloat = anyFloat || field->GetArray(OverlayStitchFloatPointsName);
+    if (vtkDataArray* malformed = field->GetArray(OverlayStitchMalformedName))
+    {
+      malformedPieces += malformed->GetNumberOfTuples() > 0 ? 1 : 0;
+      if (firstMalformed.empty())
+      {
+        firstMalformed = std::string(pieceName) + " " + std::to_string(p);
+      }
+    }
     if (vtkAbstractArray* array = field->GetAbstractArray(HolePointsName))
     {
       anyHoles = true;
       if (!CollectHolePoints(field, seeds, seenSeeds))
       {
         auto* polyData = vtkPolyData::SafeDownCast(piece);
-        notes.push_back({ {},
+        notes.push_back({ { "field", HolePointsName },
           "The field data array HolePoints of " +
             (polyData ? PieceLabel(polyData, pieceName, p)
                       : std::string(pieceName) + " " + std::to_string(p)) +
@@ -996,6 +1011,16 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
   {
     outField->AddArray(IdArray(OverlayStitchIgnoredCellsName, 1, ignoredCells)); // the sum
   }
+  if (anyFloat && !allFloat)
+  {
+    // Float points among double ones: said to the rank that combines this
+    // combination with others (the point type cannot say it).
+    outField->AddArray(IdArray(OverlayStitchFloatPointsName, 1, 1));
+  }
+  if (malformedPieces > 0)
+  {
+    outField->AddArray(IdArray(OverlayStitchMalformedName, 1, malformedPieces));
+  }
   if (anyHoles)
   {
     // (x, y) seeds stay so, to be lifted onto the input's plane along z, as in
@@ -1006,7 +1031,7 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
     const int components = xy > 0 && xy == static_cast<std::ptrdiff_t>(seeds.size()) ? 2 : 3;
     if (xy > 0 && components == 3)
     {
-      notes.push_back({ {},
+      notes.push_back({ { "field", HolePointsName },
         "The field data arrays HolePoints give " + std::to_string(xy) +
           " seed(s) as (x, y) and others as (x, y, z): the (x, y) ones are taken at z = 0." });
     }
@@ -1026,6 +1051,8 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
     summary->SharedCellsDropped = sharedCells;
     summary->HolePoints = static_cast<vtkIdType>(seeds.size());
     summary->FloatPoints = anyFloat;
+    summary->MalformedPieces = malformedPieces;
+    summary->FirstMalformedPiece = firstMalformed;
     summary->InvalidCells = invalid.Count;
     summary->FirstInvalidCell = invalid.First;
   }

@@ -88,6 +88,10 @@ struct OverlayStitchGatherSummary
   /// rank 1 refers to point 57, ..."), for the caller to report.
   vtkIdType InvalidCells = 0;
   std::string FirstInvalidCell;
+  /// Pieces with malformed cell arrays (OverlayStitchMalformedName), and the
+  /// first of them, named by its place ("rank 1").
+  vtkIdType MalformedPieces = 0;
+  std::string FirstMalformedPiece;
   /// Point and cell arrays of some pieces but not all: the combined input has
   /// only those common to every piece.
   std::vector<OverlayStitchArrayName> ArraysLeftOut;
@@ -146,6 +150,15 @@ bool OverlayStitchIsGhostCell(vtkDataArray* ghosts, vtkIdType c);
 /// A field data count of the input cells left out before the gather (an
 /// unstructured grid's cells of other types): combining pieces sums it.
 extern const char* const OverlayStitchIgnoredCellsName;
+
+/// A field data count of the malformed cell arrays a piece had (said on the
+/// rank that holds it, OverlayStitchCellArrays.h): combining pieces sums it,
+/// and the rank that meshes refuses the input.
+extern const char* const OverlayStitchMalformedName;
+
+/// A field data mark of a combination whose points are double but came in
+/// part from float ones: combining it again keeps FloatPoints.
+extern const char* const OverlayStitchFloatPointsName;
 
 /// A shallow copy of piece whose field data counts `cells` more left out.
 vtkSmartPointer<vtkPolyData> OverlayStitchWithIgnoredCells(vtkPolyData* piece, vtkIdType cells);

@@ -3,12 +3,11 @@
 #include "OverlayStitchInternalNames.h"
 
 #include "vtkCellData.h"
-#include "vtkCompositeDataIterator.h"
-#include "vtkCompositeDataSet.h"
 #include "vtkDataSet.h"
 #include "vtkFieldData.h"
 #include "vtkPointData.h"
 
+#include "OverlayStitchCellArrays.h"
 #include "OverlayStitchGather.h"
 
 #include <algorithm>
@@ -75,7 +74,8 @@ vtkSmartPointer<vtkDataObject> Cleared(
 bool OverlayStitchIsInternalName(const char* name)
 {
   const char* const internal[] = { OverlayStitchBlockIdName, OverlayStitchSourceCellIdName,
-    OverlayStitchSourcePointIdName, OverlayStitchRankName, OverlayStitchIgnoredCellsName };
+    OverlayStitchSourcePointIdName, OverlayStitchRankName, OverlayStitchIgnoredCellsName,
+    OverlayStitchMalformedName, OverlayStitchFloatPointsName };
   return name && std::any_of(std::begin(internal), std::end(internal), [name](const char* own) {
     return std::strcmp(name, own) == 0;
   });
@@ -86,29 +86,8 @@ vtkSmartPointer<vtkDataObject> OverlayStitchWithoutInternalArrays(
   vtkDataObject* input, std::vector<std::string>& removed)
 {
   removed.clear();
-  auto* composite = vtkCompositeDataSet::SafeDownCast(input);
-  if (!composite)
-  {
-    vtkSmartPointer<vtkDataObject> cleared = Cleared(input, "", removed);
-    return cleared ? cleared : vtkSmartPointer<vtkDataObject>(input);
-  }
-  vtkSmartPointer<vtkCompositeDataSet> copy;
-  auto it = vtk::TakeSmartPointer(composite->NewIterator());
-  for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
-  {
-    // Blocks are named by their flat index, as the filter's other messages do.
-    vtkSmartPointer<vtkDataObject> cleared = Cleared(it->GetCurrentDataObject(),
-      " of block " + std::to_string(it->GetCurrentFlatIndex()), removed);
-    if (!cleared)
-    {
-      continue;
-    }
-    if (!copy)
-    {
-      copy = vtk::TakeSmartPointer(composite->NewInstance());
-      copy->ShallowCopy(composite);
-    }
-    copy->SetDataSet(it, cleared);
-  }
-  return copy ? vtkSmartPointer<vtkDataObject>(copy) : vtkSmartPointer<vtkDataObject>(input);
+  // Blocks are named by their flat index, as the filter's other messages do.
+  return OverlayStitchWithBlocksReplaced(input, [&removed](vtkDataObject* data, int block) {
+    return Cleared(data, block < 0 ? "" : " of block " + std::to_string(block), removed);
+  });
 }

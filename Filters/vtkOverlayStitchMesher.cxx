@@ -42,6 +42,7 @@
 #include "OverlayStitchUnstructured.h"
 #include "Plane.h"
 #include "Pslg.h"
+#include "RunContext.h"
 #include "Statistics.h"
 
 #include <algorithm>
@@ -94,8 +95,7 @@ void PassFieldData(vtkFieldData* in, vtkPolyData* output)
     vtkAbstractArray* array = in->GetAbstractArray(a);
     const char* name = array->GetName();
     if (array->GetNumberOfTuples() > 0 && !(name && std::strcmp(name, "FileFirstIndex") == 0) &&
-      !(name && std::strcmp(name, OverlayStitchIgnoredCellsName) == 0) &&
-      (!name || !out->GetAbstractArray(name)))
+      !OverlayStitchIsInternalName(name) && (!name || !out->GetAbstractArray(name)))
     {
       out->AddArray(array);
     }
@@ -449,6 +449,12 @@ void WarnOf(vtkOverlayStitchMesher* filter, const std::vector<OverlayStitchNote>
 {
   for (const OverlayStitchNote& note : notes)
   {
+    // Notes on the input's hole seeds (combining blocks or ranks) matter only where they are used.
+    if (note.Array.Kind == "field" && note.Array.Name == "HolePoints" &&
+      !filter->GetUseInputHolePoints())
+    {
+      continue;
+    }
     if (Carries(note.Array.Kind, filter->GetInterpolatePointData(), filter->GetPassCellData()))
     {
       vtkWarningWithObjectMacro(filter, << note.Text);
@@ -977,30 +983,29 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
     vtkOverlayStitchMesher* Filter;
     ~ProgressTextReset() { this->Filter->SetProgressText(nullptr); }
   } progressTextReset{ this };
-  // Malformed cell arrays are said here and replaced by a cell naming a
-  // missing point, which every rank's input then refuses alike (an MPI run
-  // still gathers).
+  // Arrays named like those the filter adds would stand for them.
+  std::vector<std::string> internalNames;
+  const vtkSmartPointer<vtkDataObject> withoutInternal =
+    OverlayStitchWithoutInternalArrays(vtkDataObject::GetData(inputVector[0], 0), internalNames);
+  if (!internalNames.empty())
+  {
+    vtkWarningMacro(<< "Ignored " << internalNames.size()
+                    << " input array(s) named like those the filter gives its input internally, "
+                       "e.g. the "
+                    << internalNames.front()
+                    << ". Rename them to have them carried to the outputs.");
+  }
+  // Malformed cell arrays are said here, on the rank that holds them, and
+  // their datasets marked and emptied: every rank still gathers, and the
+  // rank that meshes refuses the input.
   std::string malformed;
   const vtkSmartPointer<vtkDataObject> wellFormed =
-    OverlayStitchWithWellFormedCells(vtkDataObject::GetData(inputVector[0], 0), malformed);
+    OverlayStitchWithWellFormedCells(withoutInternal, malformed);
   if (!malformed.empty())
   {
     vtkErrorMacro("Cannot mesh the input: a cell array is malformed (" << malformed << ").");
   }
-  // Arrays named like those the filter adds would stand for them.
-  std::vector<std::string> internalNames;
-  const vtkSmartPointer<vtkDataObject> withoutInternal =
-    OverlayStitchWithoutInternalArrays(wellFormed, internalNames);
-  if (!internalNames.empty())
-  {
-    vtkWarningMacro(<< "Ignored the input's " << internalNames.front()
-                    << (internalNames.size() > 1
-                           ? " (and " + std::to_string(internalNames.size() - 1) + " more)"
-                           : std::string())
-                    << ": the filter gives arrays of that name to the input internally. Rename "
-                       "it to have it carried to the outputs.");
-  }
-  vtkDataObject* inputObject = withoutInternal;
+  vtkDataObject* inputObject = wellFormed;
   vtkSmartPointer<vtkPolyData> local = vtkPolyData::SafeDownCast(inputObject);
   if (auto* grid = vtkUnstructuredGrid::SafeDownCast(inputObject))
   {
@@ -1061,8 +1066,7 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   // rank's blocks first), since combining leaves such an id as -1.
   const OverlayStitchGatherSummary& invalid =
     combination.InvalidCells > 0 || !meshHere ? combination : gather;
-  // Not the cell that stands for a malformed array of this rank's, said above.
-  if (invalid.InvalidCells > 0 && malformed.empty())
+  if (invalid.InvalidCells > 0)
   {
     vtkErrorMacro("Cannot mesh the input: " << invalid.FirstInvalidCell << " ("
                                             << invalid.InvalidCells
@@ -1073,7 +1077,14 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   {
     return 1;
   }
-  if (combination.InvalidCells > 0 || gather.InvalidCells > 0)
+  // A malformed array of another rank's was said there (rank 0 tells which).
+  if (malformed.empty() && gather.MalformedPieces > 0)
+  {
+    vtkErrorMacro("Cannot mesh the input: a cell array of the piece of "
+      << gather.FirstMalformedPiece << " is malformed (that rank's error says how).");
+  }
+  if (combination.InvalidCells > 0 || gather.InvalidCells > 0 || !malformed.empty() ||
+    gather.MalformedPieces > 0)
   {
     return Failure();
   }
@@ -1286,7 +1297,7 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   {
     vtkErrorMacro("Meshing failed: " << Numbered(explain(result.error), numbering));
     // An abort is no failure of the filter's, as for VTK's own (a review).
-    return progress.aborted() ? 1 : Failure();
+    return result.error == osm::kAbortedByTheUser ? 1 : Failure();
   }
 
   // Phase "output": the three polydata, built in bulk; the abort flag is

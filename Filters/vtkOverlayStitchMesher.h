@@ -305,9 +305,11 @@ public:
   /**
    * Hole seed points (x, y): the region bounded by segments that contains a
    * seed is removed from the output, like the holes of Triangle's .poly files.
-   * See also UseInputHolePoints. AddHolePointCoordinate appends one value
-   * (x, then y: ParaView's HolePoints property passes them one by one, so
-   * that a list of odd length is seen, and said in a warning, not cut short).
+   * See also UseInputHolePoints. ParaView's HolePoints property passes
+   * (x, y) pairs to AddHolePoint, as rows of two columns (a list of odd
+   * length loses its last value there, in ParaView's property). With
+   * AddHolePointCoordinate, which appends one value (x, then y), a last value
+   * without its pair is said in a warning.
    */
   void AddHolePoint(double x, double y);
   void AddHolePointCoordinate(double value);

@@ -508,6 +508,10 @@ int TestTiltedPlane()
     Check(h.Messages->HasWarning({ "HolePoints of block 2 has 4 components", "ignored" }) &&
         std::fabs(osmtest::TotalArea(mesh) - ring) < 1e-6,
       "a block's 4-component seeds are ignored with a warning naming the block");
+    h.Mesher->UseInputHolePointsOff();
+    h.Run(blocks, "the plane z = 3x, a block's field data holes of 4 components, not used");
+    h.Mesher->UseInputHolePointsOn();
+    Check(h.Messages->Warnings.empty(), "seeds not used: nothing said of their components");
   }
 
   // ... and from the property (x, y), moved along z onto the plane.
@@ -3233,6 +3237,15 @@ int TestMalformedCells()
   b.Run(blocks, "a multiblock with a malformed block");
   Check(b.Messages->HasError({ "the line cells of block 2 of the input: their offsets decrease" }),
     "a malformed block is named by its flat index");
+  Check(b.Messages->Errors.size() == 1, "a malformed block: one error");
+  // A cell naming a missing point in another block is said too.
+  auto missing = MakeLines({ { 20, 0, 0 }, { 22, 2, 0 } }, { { 0, 9 } });
+  blocks->SetNumberOfBlocks(3);
+  blocks->SetBlock(2, missing);
+  b.Run(blocks, "a malformed block and a block with a line naming point 9");
+  Check(b.Messages->HasError({ "the line cells of block 2 of the input" }) &&
+      b.Messages->HasError({ "refers to point 9" }) && b.Messages->Errors.size() == 2,
+    "a malformed block and another's missing point: both said");
   // A quadratic edge, and a quadratic triangle, naming points that do not
   // exist: read through GetCell, which copied the missing points' coordinates.
   for (const vtkIdType missing : { vtkIdType(40000000), vtkIdType(7), vtkIdType(-3) })
@@ -3288,10 +3301,11 @@ int TestInternalNames()
   h.Run(input, "user arrays named like the internal ones, a line naming point 9");
   Check(h.Messages->HasError({ "cell 1 refers to point 9, but the input has 5 point(s)" }),
     "the error names the cell by the input's own number");
-  Check(h.Messages->HasWarning({ "Ignored the input's point data array "
-                                 "vtkOverlayStitchSourcePointId (and 1 more)",
-          "Rename it" }),
-    "a warning names the arrays set aside");
+  Check(h.Messages->HasWarning({ "Ignored 2 input array(s) named like those the filter gives its "
+                                 "input internally, e.g. the point data array "
+                                 "vtkOverlayStitchSourcePointId",
+          "Rename them" }),
+    "a warning counts the arrays set aside and names one");
   Check(input->GetPointData()->GetArray("vtkOverlayStitchSourcePointId") &&
       input->GetCellData()->GetArray("vtkOverlayStitchSourceCellId"),
     "the caller's input keeps its arrays");
@@ -3307,8 +3321,8 @@ int TestInternalNames()
   Check(b.NoError() && std::fabs(osmtest::TotalArea(mesh) - 100.0) < 1e-9 &&
       Statistic(mesh, "IgnoredCells") == 0,
     "the block is meshed, and no ignored cells are made up from the field data");
-  Check(b.Messages->HasWarning({ "Ignored the input's cell data array vtkOverlayStitchBlockId "
-                                 "of block 1 (and 1 more)" }),
+  Check(b.Messages->HasWarning(
+          { "Ignored 2 input array(s)", "the cell data array vtkOverlayStitchBlockId of block 1" }),
     "the warning names the block by its flat index");
   return 0;
 }

@@ -247,6 +247,49 @@ int main()
       "the filter's own ids are not among the arrays left out (" + names + " )");
   }
 
+  std::cout << "marks that travel with a rank's combination\n";
+  {
+    // A rank's stand-in for a piece with a malformed cell array (no cells, a
+    // mark): counted, and named by its rank, where rank 0 combines the pieces.
+    auto good = MakePiece({ { 0, 0 }, { 1, 0 } }, { { 0, 1 } }, {}, { 1, 2 }, { 3 }, {});
+    auto standIn = MakePiece({ { 5, 0 } }, {}, {}, { 1 }, {}, {});
+    standIn->GetFieldData()->AddArray(OverlayStitchIdArray(OverlayStitchMalformedName, 1, 1));
+    std::vector<vtkSmartPointer<vtkDataObject>> ranks = { good, standIn };
+    OverlayStitchGatherSummary bad;
+    OverlayStitchCombinePieces(ranks, &bad, "rank");
+    Check(bad.MalformedPieces == 1 && bad.FirstMalformedPiece == "rank 1",
+      "a piece marked malformed is counted and named (" + bad.FirstMalformedPiece + ")");
+    // Float points beside double ones combine to double points, marked: a
+    // second combination (rank 0's of the ranks' own) still knows.
+    auto withPointType = [](vtkPolyData* piece, int type) {
+      vtkNew<vtkPoints> points;
+      points->SetDataType(type);
+      for (vtkIdType i = 0; i < piece->GetNumberOfPoints(); ++i)
+      {
+        points->InsertNextPoint(piece->GetPoint(i));
+      }
+      piece->SetPoints(points);
+    };
+    auto floats = MakePiece({ { 0, 0 }, { 1, 0 } }, { { 0, 1 } }, {}, { 1, 2 }, { 3 }, {});
+    withPointType(floats, VTK_FLOAT);
+    auto doubles = MakePiece({ { 2, 0 }, { 3, 0 } }, { { 0, 1 } }, {}, { 1, 2 }, { 3 }, {});
+    withPointType(doubles, VTK_DOUBLE);
+    std::vector<vtkSmartPointer<vtkDataObject>> mixed = { floats, doubles };
+    OverlayStitchGatherSummary first;
+    vtkSmartPointer<vtkPolyData> rank1 = OverlayStitchCombinePieces(mixed, &first, "block");
+    Check(first.FloatPoints && rank1->GetPoints()->GetDataType() == VTK_DOUBLE,
+      "float and double pieces: double points, and float noted");
+    std::vector<vtkSmartPointer<vtkDataObject>> again = { doubles, rank1 };
+    OverlayStitchGatherSummary second;
+    OverlayStitchCombinePieces(again, &second, "rank");
+    Check(second.FloatPoints, "combined again with double points: float still noted");
+    std::vector<vtkSmartPointer<vtkDataObject>> onlyFloats = { floats, floats };
+    OverlayStitchGatherSummary third;
+    vtkSmartPointer<vtkPolyData> allFloat = OverlayStitchCombinePieces(onlyFloats, &third, "rank");
+    Check(third.FloatPoints && allFloat->GetPoints()->GetDataType() == VTK_FLOAT,
+      "float pieces only: float points");
+  }
+
   std::cout << "no piece at all\n";
   std::vector<vtkSmartPointer<vtkDataObject>> none = { nullptr,
     vtkSmartPointer<vtkPolyData>::New() };
