@@ -15,7 +15,7 @@ struct PolyFile
 {
   bool ok = false;
   /// On failure: "<file>:<line>: <reason>", e.g. "a.poly:12: segment 4 refers to vertex 40, which
-  /// does not exist".
+  /// does not exist (vertices are numbered 1 to 9)".
   std::string error;
   Pslg pslg;          ///< points renumbered from 0 in file order; holes and regions from the file
   int firstIndex = 0; ///< 0 or 1: the numbering the file used
