@@ -32,24 +32,18 @@ int OverlayStitchMarkerValue(double value)
   return value >= lo && value <= hi ? static_cast<int>(value) : value > hi ? INT_MAX : INT_MIN;
 }
 
-namespace
-{
-/// Whether an array is never carried: the ghost array (the outputs are one
-/// piece) or one of the block ids a composite input's cells and points are
-/// given (OverlayStitchGather.h).
-bool IsInternal(const char* name)
+bool OverlayStitchIsNeverCarried(const char* name)
 {
   return name &&
     (std::strcmp(name, vtkDataSetAttributes::GhostArrayName()) == 0 ||
       OverlayStitchIsInternalName(name));
 }
-} // namespace
 
 bool OverlayStitchHasUserArrays(vtkDataSetAttributes* in)
 {
   for (int i = 0; in && i < in->GetNumberOfArrays(); ++i)
   {
-    if (!IsInternal(in->GetArrayName(i)))
+    if (!OverlayStitchIsNeverCarried(in->GetArrayName(i)))
     {
       return true;
     }
@@ -68,7 +62,7 @@ std::vector<vtkAbstractArray*> OverlayStitchCarriedArrays(vtkDataSetAttributes* 
     const char* name = source->GetName();
     const std::string array = std::string("The input's ") + kind + " data array " +
       (name ? name : "(unnamed)") + " is not carried";
-    if (IsInternal(name))
+    if (OverlayStitchIsNeverCarried(name))
     {
       continue;
     }

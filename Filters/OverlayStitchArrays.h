@@ -25,6 +25,10 @@ bool OverlayStitchIsMarker(vtkAbstractArray* array, const char* name);
 /// clamped to it (casting it would be undefined).
 int OverlayStitchMarkerValue(double value);
 
+/// Whether an array is never carried: the ghost array (the outputs are one
+/// piece) or one of the filter's internal ones (OverlayStitchInternalNames.h).
+bool OverlayStitchIsNeverCarried(const char* name);
+
 /// Whether in has arrays to carry: any but the block ids and the ghost array.
 bool OverlayStitchHasUserArrays(vtkDataSetAttributes* in);
 

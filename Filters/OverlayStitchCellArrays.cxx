@@ -83,13 +83,11 @@ vtkSmartPointer<vtkDataObject> Repaired(
     vtkCellArray* kinds[4] = { poly->GetVerts(), poly->GetLines(), poly->GetPolys(),
       poly->GetStrips() };
     const char* names[4] = { "vertex cells", "line cells", "polygon cells", "strip cells" };
-    bool bad[4];
     bool any = false;
     for (int k = 0; k < 4; ++k)
     {
       const std::string problem = Problem(kinds[k]);
-      bad[k] = !problem.empty();
-      if (bad[k])
+      if (!problem.empty())
       {
         note(names[k], problem);
         any = true;

@@ -3,7 +3,6 @@
 #include "OverlayStitchGather.h"
 
 #include "OverlayStitchArrays.h"
-#include "OverlayStitchInternalNames.h"
 #include "OverlayStitchUnstructured.h"
 
 #include "vtkAbstractArray.h"
@@ -358,9 +357,8 @@ void NoteArraysLeftOut(const std::vector<vtkPolyData*>& used, vtkPolyData* combi
         const OverlayStitchArrayName item{ cells ? "cell" : "point", name ? name : "(unnamed)" };
         // Not the ghost array, nor the ids combining gives pieces (a review:
         // a rank's polydata beside another's blocks named them).
-        if ((!name || !kept->GetAbstractArray(name)) &&
-          !(name && std::strcmp(name, vtkDataSetAttributes::GhostArrayName()) == 0) &&
-          !OverlayStitchIsInternalName(name) && seen.insert(item).second)
+        if ((!name || !kept->GetAbstractArray(name)) && !OverlayStitchIsNeverCarried(name) &&
+          seen.insert(item).second)
         {
           out.push_back(item);
         }
