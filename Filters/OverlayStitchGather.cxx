@@ -3,6 +3,7 @@
 #include "OverlayStitchGather.h"
 
 #include "OverlayStitchArrays.h"
+#include "OverlayStitchInternalNames.h"
 #include "OverlayStitchUnstructured.h"
 
 #include "vtkAbstractArray.h"
@@ -293,6 +294,11 @@ private:
   }
 };
 
+bool IsFinite(const std::array<double, 3>& at)
+{
+  return std::isfinite(at[0]) && std::isfinite(at[1]) && std::isfinite(at[2]);
+}
+
 /// A hole seed of a piece's field data: (x, y, z), or (x, y) with z 0.
 struct HoleSeed
 {
@@ -322,9 +328,7 @@ bool CollectHolePoints(vtkFieldData* field, std::vector<HoleSeed>& seeds, std::s
                            components == 3 ? holes->GetComponent(t, 2) + 0.0 : 0.0 },
       components == 2 };
     // NaN seeds are passed on (the mesher reports them); they are never "equal".
-    const bool finite =
-      std::isfinite(seed.At[0]) && std::isfinite(seed.At[1]) && std::isfinite(seed.At[2]);
-    if (!finite || seen.insert(seed).second)
+    if (!IsFinite(seed.At) || seen.insert(seed).second)
     {
       seeds.push_back(seed);
     }
@@ -564,23 +568,40 @@ vtkSmartPointer<vtkPolyData> WithoutGhostCells(vtkPolyData* piece, bool sourceId
   return local;
 }
 
+/// How messages name a piece without block ids: "rank 1" (pieceName and index).
+std::string PieceLabel(const char* pieceName, std::size_t index)
+{
+  return std::string(pieceName) + " " + std::to_string(index);
+}
+
+/// The first value of the id array `name` in the cell, point or field data
+/// of piece, or -1.
+vtkIdType FirstIdOf(vtkPolyData* piece, const char* name)
+{
+  for (vtkFieldData* data : { static_cast<vtkFieldData*>(piece->GetCellData()),
+         static_cast<vtkFieldData*>(piece->GetPointData()), piece->GetFieldData() })
+  {
+    auto* ids = vtkIdTypeArray::SafeDownCast(data->GetAbstractArray(name));
+    if (ids && ids->GetNumberOfTuples() > 0)
+    {
+      return ids->GetValue(0);
+    }
+  }
+  return -1;
+}
+
 /// How messages name a piece: by its block (and rank) when it carries block
 /// ids, else as "rank 1" (pieceName and index).
 std::string PieceLabel(vtkPolyData* piece, const char* pieceName, std::size_t index)
 {
-  for (vtkDataSetAttributes* data : { static_cast<vtkDataSetAttributes*>(piece->GetCellData()),
-         static_cast<vtkDataSetAttributes*>(piece->GetPointData()) })
+  const vtkIdType block = FirstIdOf(piece, OverlayStitchBlockIdName);
+  if (block < 0)
   {
-    auto* block = vtkIdTypeArray::SafeDownCast(data->GetAbstractArray(OverlayStitchBlockIdName));
-    auto* rank = vtkIdTypeArray::SafeDownCast(data->GetAbstractArray(OverlayStitchRankName));
-    if (block && block->GetNumberOfTuples() > 0)
-    {
-      return "block " + std::to_string(block->GetValue(0)) +
-        (rank && rank->GetNumberOfTuples() > 0 ? " on rank " + std::to_string(rank->GetValue(0))
-                                               : std::string());
-    }
+    return PieceLabel(pieceName, index);
   }
-  return std::string(pieceName) + " " + std::to_string(index);
+  const vtkIdType rank = FirstIdOf(piece, OverlayStitchRankName);
+  return "block " + std::to_string(block) +
+    (rank >= 0 ? " on rank " + std::to_string(rank) : std::string());
 }
 
 /// A shallow copy of block whose cells and points carry its flat index and
@@ -595,6 +616,13 @@ vtkSmartPointer<vtkPolyData> WithBlockIds(
   const vtkIdType cells = block->GetNumberOfCells(), points = block->GetNumberOfPoints();
   copy->GetCellData()->AddArray(IdArray(OverlayStitchBlockIdName, cells, index));
   copy->GetPointData()->AddArray(IdArray(OverlayStitchBlockIdName, points, index));
+  // In the field data too, so that a block without points or cells is named
+  // by its flat index, not its place among the blocks (a review). A new field
+  // data: the shallow copy shares the caller's.
+  vtkNew<vtkFieldData> field;
+  field->ShallowCopy(block->GetFieldData());
+  field->AddArray(IdArray(OverlayStitchBlockIdName, 1, index));
+  copy->SetFieldData(field);
   // A block read from an unstructured grid carries its grid's ids already.
   if (!block->GetCellData()->GetArray(OverlayStitchSourceCellIdName))
   {
@@ -611,7 +639,11 @@ vtkSmartPointer<vtkPolyData> WithBlockIds(
 vtkSmartPointer<vtkDataObject> WithRank(vtkDataObject* piece, int rank)
 {
   vtkPolyData* polyData = vtkPolyData::SafeDownCast(piece);
-  if (!polyData || !polyData->GetCellData()->GetArray(OverlayStitchBlockIdName))
+  // A piece without cells may carry its block id in its field data only (the
+  // transfer drops cell arrays of no tuples).
+  if (!polyData ||
+    (!polyData->GetCellData()->GetArray(OverlayStitchBlockIdName) &&
+      FirstIdOf(polyData, OverlayStitchBlockIdName) < 0))
   {
     return piece;
   }
@@ -621,6 +653,10 @@ vtkSmartPointer<vtkDataObject> WithRank(vtkDataObject* piece, int rank)
     IdArray(OverlayStitchRankName, polyData->GetNumberOfCells(), static_cast<vtkIdType>(rank)));
   copy->GetPointData()->AddArray(
     IdArray(OverlayStitchRankName, polyData->GetNumberOfPoints(), static_cast<vtkIdType>(rank)));
+  vtkNew<vtkFieldData> field; // as the block id (WithBlockIds)
+  field->ShallowCopy(polyData->GetFieldData());
+  field->AddArray(IdArray(OverlayStitchRankName, 1, static_cast<vtkIdType>(rank)));
+  copy->SetFieldData(field);
   return copy;
 }
 } // namespace
@@ -978,7 +1014,8 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
       malformedPieces += malformed->GetNumberOfTuples() > 0 ? 1 : 0;
       if (firstMalformed.empty())
       {
-        firstMalformed = std::string(pieceName) + " " + std::to_string(p);
+        auto* polyData = vtkPolyData::SafeDownCast(piece);
+        firstMalformed = polyData ? PieceLabel(polyData, pieceName, p) : PieceLabel(pieceName, p);
       }
     }
     if (vtkAbstractArray* array = field->GetAbstractArray(HolePointsName))
@@ -989,9 +1026,8 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
         auto* polyData = vtkPolyData::SafeDownCast(piece);
         notes.push_back({ { "field", HolePointsName },
           "The field data array HolePoints of " +
-            (polyData ? PieceLabel(polyData, pieceName, p)
-                      : std::string(pieceName) + " " + std::to_string(p)) +
-            " has " + std::to_string(array->GetNumberOfComponents()) +
+            (polyData ? PieceLabel(polyData, pieceName, p) : PieceLabel(pieceName, p)) + " has " +
+            std::to_string(array->GetNumberOfComponents()) +
             " components (2 or 3 expected: x, y and perhaps z): ignored." });
       }
     }
@@ -999,7 +1035,7 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
     {
       vtkAbstractArray* array = field->GetAbstractArray(a);
       const char* name = array ? array->GetName() : nullptr;
-      if (name && !outField->GetAbstractArray(name))
+      if (name && !outField->GetAbstractArray(name) && !OverlayStitchIsInternalName(name))
       {
         outField->AddArray(std::strcmp(name, HolePointsName) == 0 ? holes.Get() : array);
       }
@@ -1032,6 +1068,11 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
       notes.push_back({ { "field", HolePointsName },
         "The field data arrays HolePoints give " + std::to_string(xy) +
           " seed(s) as (x, y) and others as (x, y, z): the (x, y) ones are taken at z = 0." });
+      // Taken so, an (x, y) seed may repeat another piece's (x, y, 0).
+      std::set<std::array<double, 3>> at;
+      seeds.erase(std::remove_if(seeds.begin(), seeds.end(),
+                    [&at](const HoleSeed& h) { return IsFinite(h.At) && !at.insert(h.At).second; }),
+        seeds.end());
     }
     holes->SetNumberOfComponents(components);
     holes->SetNumberOfTuples(static_cast<vtkIdType>(seeds.size()));

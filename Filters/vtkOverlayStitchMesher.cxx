@@ -1080,8 +1080,10 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   // A malformed array of another rank's was said there (rank 0 tells which).
   if (malformed.empty() && gather.MalformedPieces > 0)
   {
-    vtkErrorMacro("Cannot mesh the input: a cell array of the piece of "
-      << gather.FirstMalformedPiece << " is malformed (that rank's error says how).");
+    const std::string& piece = gather.FirstMalformedPiece; // "rank 1", "block 2 on rank 1"
+    vtkErrorMacro("Cannot mesh the input: a cell array of "
+      << (piece.compare(0, 5, "rank ") == 0 ? "the piece of " : "") << piece
+      << " is malformed (that rank's error says how).");
   }
   if (combination.InvalidCells > 0 || gather.InvalidCells > 0 || !malformed.empty() ||
     gather.MalformedPieces > 0)

@@ -508,6 +508,16 @@ int TestTiltedPlane()
     Check(h.Messages->HasWarning({ "HolePoints of block 2 has 4 components", "ignored" }) &&
         std::fabs(osmtest::TotalArea(mesh) - ring) < 1e-6,
       "a block's 4-component seeds are ignored with a warning naming the block");
+    // A block without points is named by its flat index too (a review: by
+    // its place among the blocks, "block 1").
+    auto pointless = vtkSmartPointer<vtkPolyData>::New();
+    pointless->SetPoints(vtkNew<vtkPoints>());
+    AddFieldHoles(pointless, { { 1, 1, 3 } }, 4);
+    blocks->SetBlock(1, pointless);
+    h.Run(blocks, "the plane z = 3x, an empty block's field data holes of 4 components");
+    Check(h.Messages->HasWarning({ "HolePoints of block 2 has 4 components", "ignored" }),
+      "an empty block's 4-component seeds: the warning names the block by its flat index");
+    blocks->SetBlock(1, other);
     h.Mesher->UseInputHolePointsOff();
     h.Run(blocks, "the plane z = 3x, a block's field data holes of 4 components, not used");
     h.Mesher->UseInputHolePointsOn();

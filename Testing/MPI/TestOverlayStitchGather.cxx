@@ -259,6 +259,20 @@ int main()
     OverlayStitchCombinePieces(ranks, &bad, "rank");
     Check(bad.MalformedPieces == 1 && bad.FirstMalformedPiece == "rank 1",
       "a piece marked malformed is counted and named (" + bad.FirstMalformedPiece + ")");
+    // A rank's single block, emptied as malformed: named by its block and
+    // rank, which only its field data can carry (it has no cells left).
+    auto emptied = MakePiece({}, {}, {}, {}, {}, {});
+    emptied->GetFieldData()->AddArray(OverlayStitchIdArray(OverlayStitchMalformedName, 1, 1));
+    emptied->GetFieldData()->AddArray(OverlayStitchIdArray(OverlayStitchBlockIdName, 1, 2));
+    emptied->GetFieldData()->AddArray(OverlayStitchIdArray(OverlayStitchRankName, 1, 1));
+    ranks = { good, emptied };
+    vtkSmartPointer<vtkPolyData> named = OverlayStitchCombinePieces(ranks, &bad, "rank");
+    Check(bad.MalformedPieces == 1 && bad.FirstMalformedPiece == "block 2 on rank 1",
+      "a block without cells is named by the ids in its field data (" + bad.FirstMalformedPiece +
+        ")");
+    Check(!named->GetFieldData()->GetArray(OverlayStitchBlockIdName) &&
+        !named->GetFieldData()->GetArray(OverlayStitchRankName),
+      "the field data's ids are not passed on as the user's field data");
     // Float points beside double ones combine to double points, marked: a
     // second combination (rank 0's of the ranks' own) still knows.
     auto withPointType = [](vtkPolyData* piece, int type) {
@@ -288,6 +302,27 @@ int main()
     vtkSmartPointer<vtkPolyData> allFloat = OverlayStitchCombinePieces(onlyFloats, &third, "rank");
     Check(third.FloatPoints && allFloat->GetPoints()->GetDataType() == VTK_FLOAT,
       "float pieces only: float points");
+  }
+
+  std::cout << "(x, y) seeds beside (x, y, z) ones\n";
+  {
+    // Taken at z = 0 there, an (x, y) seed repeating another piece's (x, y, 0)
+    // is one seed, not two.
+    auto flat = MakePiece({ { 0, 0 } }, {}, {}, { 1 }, {}, {});
+    vtkNew<vtkDoubleArray> xy;
+    xy->SetName("HolePoints");
+    xy->SetNumberOfComponents(2);
+    xy->InsertNextTuple2(0.5, 0.25);
+    flat->GetFieldData()->AddArray(xy);
+    auto spatial = MakePiece({ { 1, 0 } }, {}, {}, { 1 }, {}, { { 0.5, 0.25 }, { 0.75, 0.5 } });
+    std::vector<vtkSmartPointer<vtkDataObject>> seeded = { flat, spatial };
+    OverlayStitchGatherSummary seeds;
+    vtkSmartPointer<vtkPolyData> both = OverlayStitchCombinePieces(seeded, &seeds, "rank");
+    auto* holes = vtkDoubleArray::SafeDownCast(both->GetFieldData()->GetArray("HolePoints"));
+    Check(seeds.HolePoints == 2 && holes && holes->GetNumberOfTuples() == 2 &&
+        holes->GetNumberOfComponents() == 3,
+      "(0.5, 0.25) and (0.5, 0.25, 0) are one seed (" + std::to_string(seeds.HolePoints) +
+        " counted)");
   }
 
   std::cout << "no piece at all\n";
