@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Copyright (c) 2026, the Overlay Stitch Meshing authors
 //
-// A thin layer: vtkPolyData -> osm::Pslg, osm::mesh(), osm::Result -> three
-// vtkPolyData outputs. No geometric algorithm lives here; it is all in the
-// plain C++ core (Filters/Core, namespace osm).
+// The VTK layer: vtkPolyData -> osm::Pslg, osm::mesh(), osm::Result -> three
+// vtkPolyData outputs. The meshing is all in the plain C++ core (Filters/Core,
+// namespace osm); the layer's own geometry is the plane of the input
+// (osm::PlaneMap) and which input polygon holds each triangle, for carrying
+// polygon cell data (OverlayStitchCellData.cxx, with the core's predicates).
 #include "vtkOverlayStitchMesher.h"
 
 #include "vtkCellArray.h"
@@ -53,6 +55,7 @@
 #include <exception>
 #include <functional>
 #include <limits>
+#include <new>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -413,8 +416,8 @@ std::string ExplainSegments(const std::string& text, const osm::Array<SegmentSou
   return out.str();
 }
 
-/// Whether the filter carries arrays of this kind ("point", "cell"; any other
-/// kind is not an array it carries, and counts).
+/// Whether a note on arrays of this kind matters: "point" and "cell" arrays
+/// when the filter carries them; any other kind (field data) always.
 bool Carries(const std::string& kind, bool pointData, bool cellData)
 {
   return kind == "point" ? pointData : kind == "cell" ? cellData : true;
@@ -598,6 +601,10 @@ void Allocate(ArrayT* array, vtkIdType tuples)
   if (values <= 0 || !osm::pages::ownMapping(bytes))
   {
     array->SetNumberOfTuples(tuples);
+    if (array->GetNumberOfTuples() != tuples)
+    {
+      throw std::bad_alloc(); // as the mapping below does; RequestData reports it
+    }
     return;
   }
   char* base = static_cast<char*>(osm::pages::map(bytes));
@@ -975,6 +982,33 @@ int Failure()
 
 //------------------------------------------------------------------------------
 int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
+  vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  // Reading the input and building the outputs allocate too: an exception
+  // must not escape into the executive and the application (a review).
+  try
+  {
+    return this->MeshInput(inputVector, outputVector);
+  }
+  catch (const std::exception& e)
+  {
+    ClearOutputs({ vtkPolyData::GetData(outputVector, 0), vtkPolyData::GetData(outputVector, 1),
+      vtkPolyData::GetData(outputVector, 2) });
+    if (dynamic_cast<const std::bad_alloc*>(&e))
+    {
+      vtkErrorMacro("Cannot mesh the input: out of memory while reading it or building the "
+                    "outputs (turning GenerateEdges and GenerateOverlay off saves memory)");
+    }
+    else
+    {
+      vtkErrorMacro("Internal error in the filter: " << e.what());
+    }
+    return Failure();
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkOverlayStitchMesher::MeshInput(
   vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   // Whichever way the run ends, no phase is left named as current.
@@ -1473,5 +1507,10 @@ void vtkOverlayStitchMesher::PrintSelf(ostream& os, vtkIndent indent)
     double p[2];
     this->GetHolePoint(i, p);
     os << indent.GetNextIndent() << "(" << p[0] << ", " << p[1] << ")\n";
+  }
+  if (this->HolePoints.size() % 2 != 0)
+  {
+    os << indent.GetNextIndent() << "(" << this->HolePoints.back()
+       << ", ?): a lone coordinate (AddHolePointCoordinate), ignored\n";
   }
 }

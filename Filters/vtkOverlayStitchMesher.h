@@ -351,6 +351,9 @@ protected:
   std::vector<double> HolePoints; // x0, y0, x1, y1, ...
 
 private:
+  /// RequestData's work; RequestData reports any exception it throws.
+  int MeshInput(vtkInformationVector** inputVector, vtkInformationVector* outputVector);
+
   vtkOverlayStitchMesher(const vtkOverlayStitchMesher&) = delete;
   void operator=(const vtkOverlayStitchMesher&) = delete;
 };

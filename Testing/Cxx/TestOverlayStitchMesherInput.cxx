@@ -793,7 +793,12 @@ int TestFieldHoles()
   h.Mesher->AddHolePointCoordinate(5);
   h.Mesher->AddHolePointCoordinate(2.5);
   mesh = h.Run(input, "hole seed coordinates 5, 5, 2.5");
+  std::ostringstream printedSeeds;
+  h.Mesher->Print(printedSeeds);
   h.Mesher->RemoveAllHolePoints();
+  Check(printedSeeds.str().find("(5, 5)") != std::string::npos &&
+      printedSeeds.str().find("(2.5, ?): a lone coordinate") != std::string::npos,
+    "PrintSelf shows the seed and the lone coordinate");
   Check(h.Messages->HasWarning({ "odd number of values (3)", "2.5" }) &&
       std::fabs(osmtest::TotalArea(mesh) - 84.0) < 1e-9,
     "a coordinate without its pair is named in a warning; the pair cuts the hole");

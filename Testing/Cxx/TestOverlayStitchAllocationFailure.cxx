@@ -1,0 +1,260 @@
+// Allocation failure injected into vtkOverlayStitchMesher, one large
+// allocation at a time (the filter's counterpart of the core's
+// AllocationFailure.cxx).
+//
+// Reading the input and building the outputs allocate too, outside the
+// core's own guard. This executable replaces the global operator new so that
+// the k-th large allocation of an Update() throws std::bad_alloc, for every k
+// in turn. Each run must end either with the mesh of the run without the
+// failure, or with an "out of memory" error and empty outputs: never an
+// exception out of Update() (it would end the application), a crash, or a
+// partial result. Run with OSM_NO_HUGE_PAGES=1, so that the core's arrays
+// come from operator new too.
+
+#include "vtkCallbackCommand.h"
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkCommand.h"
+#include "vtkDoubleArray.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkObject.h"
+#include "vtkOutputWindow.h"
+#include "vtkOverlayStitchMesher.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+
+#include <atomic>
+#include <cstdlib>
+#include <iostream>
+#include <new>
+#include <string>
+
+namespace
+{
+
+/// Only allocations of at least this size count: arrays, not the small
+/// strings and bookkeeping of VTK's pipeline.
+constexpr std::size_t kLarge = 16 * 1024;
+
+std::atomic<bool> counting{ false };
+std::atomic<long> largeSeen{ 0 };
+std::atomic<long> failAt{ -1 };
+
+void failIfChosen(std::size_t n)
+{
+  if (n >= kLarge && counting.load() && largeSeen.fetch_add(1) == failAt.load())
+  {
+    throw std::bad_alloc();
+  }
+}
+
+void* allocate(std::size_t n)
+{
+  failIfChosen(n);
+  if (void* p = std::malloc(n == 0 ? 1 : n))
+  {
+    return p;
+  }
+  throw std::bad_alloc();
+}
+
+void* allocateAligned(std::size_t n, std::align_val_t alignment)
+{
+  failIfChosen(n);
+  const std::size_t a = static_cast<std::size_t>(alignment);
+  // aligned_alloc wants a size that is a multiple of the alignment.
+  if (void* p = std::aligned_alloc(a, (n + a - 1) / a * a + (n == 0 ? a : 0)))
+  {
+    return p;
+  }
+  throw std::bad_alloc();
+}
+
+/// A grid of k x k unit squares as line cells, with a point scalar and a
+/// cell scalar to carry: about 2k^2 segments, 8k^2 output triangles.
+vtkNew<vtkPolyData> GridOfSquares(int k)
+{
+  vtkNew<vtkPolyData> grid;
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkDoubleArray> height;
+  height->SetName("Height");
+  for (int j = 0; j <= k; ++j)
+  {
+    for (int i = 0; i <= k; ++i)
+    {
+      points->InsertNextPoint(i, j, 0.0);
+      height->InsertNextValue(i * 0.5 + j);
+    }
+  }
+  vtkNew<vtkCellArray> lines;
+  vtkNew<vtkIntArray> marker;
+  marker->SetName("Marker");
+  auto id = [k](int i, int j) { return static_cast<vtkIdType>(j * (k + 1) + i); };
+  for (int j = 0; j <= k; ++j)
+  {
+    for (int i = 0; i <= k; ++i)
+    {
+      if (i < k)
+      {
+        const vtkIdType ids[2] = { id(i, j), id(i + 1, j) };
+        lines->InsertNextCell(2, ids);
+        marker->InsertNextValue(j);
+      }
+      if (j < k)
+      {
+        const vtkIdType ids[2] = { id(i, j), id(i, j + 1) };
+        lines->InsertNextCell(2, ids);
+        marker->InsertNextValue(i);
+      }
+    }
+  }
+  grid->SetPoints(points);
+  grid->SetLines(lines);
+  grid->GetPointData()->AddArray(height);
+  grid->GetCellData()->AddArray(marker);
+  return grid;
+}
+
+struct Outcome
+{
+  bool escaped = false; ///< an exception left Update()
+  std::string errors;
+  vtkIdType triangles = 0, points = 0, edges = 0, overlay = 0;
+};
+
+void CollectError(vtkObject*, unsigned long, void* clientData, void* callData)
+{
+  static_cast<std::string*>(clientData)->append(static_cast<const char*>(callData)).append("\n");
+}
+
+Outcome Run(vtkPolyData* input, long failure)
+{
+  vtkNew<vtkOverlayStitchMesher> mesher;
+  mesher->SetInputData(input);
+  Outcome outcome;
+  vtkNew<vtkCallbackCommand> onError;
+  onError->SetCallback(CollectError);
+  onError->SetClientData(&outcome.errors);
+  mesher->AddObserver(vtkCommand::ErrorEvent, onError);
+  mesher->AddObserver(vtkCommand::WarningEvent, vtkNew<vtkCallbackCommand>()); // quiet
+  largeSeen = 0;
+  failAt = failure;
+  counting = true;
+  try
+  {
+    mesher->Update();
+  }
+  catch (...)
+  {
+    outcome.escaped = true;
+  }
+  counting = false;
+  outcome.triangles = mesher->GetOutput()->GetNumberOfCells();
+  outcome.points = mesher->GetOutput()->GetNumberOfPoints();
+  outcome.edges = mesher->GetEdgesOutput()->GetNumberOfCells();
+  outcome.overlay = mesher->GetOverlayOutput()->GetNumberOfCells();
+  return outcome;
+}
+
+} // namespace
+
+void* operator new(std::size_t n)
+{
+  return allocate(n);
+}
+void* operator new[](std::size_t n)
+{
+  return allocate(n);
+}
+void* operator new(std::size_t n, std::align_val_t a)
+{
+  return allocateAligned(n, a);
+}
+void* operator new[](std::size_t n, std::align_val_t a)
+{
+  return allocateAligned(n, a);
+}
+void operator delete(void* p) noexcept
+{
+  std::free(p);
+}
+void operator delete[](void* p) noexcept
+{
+  std::free(p);
+}
+void operator delete(void* p, std::size_t) noexcept
+{
+  std::free(p);
+}
+void operator delete[](void* p, std::size_t) noexcept
+{
+  std::free(p);
+}
+void operator delete(void* p, std::align_val_t) noexcept
+{
+  std::free(p);
+}
+void operator delete[](void* p, std::align_val_t) noexcept
+{
+  std::free(p);
+}
+void operator delete(void* p, std::size_t, std::align_val_t) noexcept
+{
+  std::free(p);
+}
+void operator delete[](void* p, std::size_t, std::align_val_t) noexcept
+{
+  std::free(p);
+}
+
+int main()
+{
+  // The executive's reports of the injected failures, expected, are not shown.
+  vtkOutputWindow::GetInstance()->SetDisplayModeToNever();
+  vtkNew<vtkPolyData> input = GridOfSquares(40);
+  const Outcome clean = Run(input, -1);
+  const long large = largeSeen.load();
+  int failed = 0;
+  auto check = [&failed](bool ok, const std::string& what) {
+    if (!ok)
+    {
+      ++failed;
+      std::cout << "FAILED  " << what << "\n";
+    }
+  };
+  check(!clean.escaped && clean.errors.empty() && clean.triangles > 0 && clean.edges > 0 &&
+      clean.overlay > 0,
+    "the run without failures meshes (" + std::to_string(clean.triangles) + " triangles)");
+  check(large >= 20, "the run makes large allocations to fail (" + std::to_string(large) + ")");
+  std::cout << "mesh of " << clean.triangles << " triangles; failing each of " << large
+            << " large allocations in turn\n";
+  long sameMesh = 0, outOfMemory = 0;
+  for (long k = 0; k < large; ++k)
+  {
+    const Outcome run = Run(input, k);
+    const std::string which = "allocation " + std::to_string(k) + " failed: ";
+    check(!run.escaped, which + "no exception leaves Update()");
+    if (run.errors.empty())
+    {
+      check(run.triangles == clean.triangles && run.points == clean.points &&
+          run.edges == clean.edges && run.overlay == clean.overlay,
+        which + "without an error, the outputs are those of the clean run");
+      ++sameMesh;
+    }
+    else
+    {
+      check(run.errors.find("out of memory") != std::string::npos,
+        which + "the error says out of memory (" + run.errors + ")");
+      check(run.triangles == 0 && run.points == 0 && run.edges == 0 && run.overlay == 0,
+        which + "after the error, every output is empty");
+      ++outOfMemory;
+    }
+  }
+  std::cout << sameMesh << " run(s) gave the same mesh (a fallback), " << outOfMemory
+            << " the out-of-memory error\n";
+  check(outOfMemory > 0, "some failure is reported as out of memory");
+  std::cout << (failed == 0 ? "PASSED" : "FAILED") << "\n";
+  return failed == 0 ? 0 : 1;
+}
