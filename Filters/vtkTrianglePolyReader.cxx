@@ -229,12 +229,18 @@ int vtkTrianglePolyReader::RequestData(vtkInformation* vtkNotUsed(request),
     vtkErrorMacro("The output data object is missing.");
     return 0;
   }
+  // Empty points, not none: a point set without points keeps its old bounds.
   output->Initialize();
+  output->SetPoints(vtkNew<vtkPoints>());
 
-  int piece = 0;
+  int piece = 0, pieces = 1;
   if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()))
   {
     piece = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER());
+  }
+  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()))
+  {
+    pieces = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES());
   }
   if (piece > 0)
   {
@@ -242,25 +248,30 @@ int vtkTrianglePolyReader::RequestData(vtkInformation* vtkNotUsed(request),
     return 1;
   }
 
-  // A file that cannot be read gives an error and an empty output, not a
-  // failed request: the other pieces cannot know of it (they do not open the
-  // file), and under MPI a filter downstream that gathers (the mesher) would
-  // wait forever for the rank whose request failed.
+  // A file that cannot be read gives an error and an empty output. The
+  // request fails (Update() returns 0) only when this is the one piece: the
+  // other pieces cannot know of it (they do not open the file), and under MPI
+  // a filter downstream that gathers (the mesher) would wait forever for the
+  // rank whose request failed.
+  const int failure = pieces > 1 ? 1 : 0;
   if (!this->FileName || !*this->FileName)
   {
     vtkErrorMacro("No file name: set FileName to a .poly or .node file.");
     AddHolePoints(nullptr, output);
-    return 1;
+    return failure;
   }
 
+  this->UpdateProgress(0.0);
   const osm::PolyFile file = osm::readPolyFile(this->FileName);
   if (!file.ok)
   {
     vtkErrorMacro(<< file.error);
     AddHolePoints(nullptr, output);
-    return 1;
+    return failure;
   }
+  this->UpdateProgress(0.5);
   FillOutput(file, output);
+  this->UpdateProgress(1.0);
   return 1;
 }
 

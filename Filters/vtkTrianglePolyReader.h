@@ -28,7 +28,10 @@
  *   numbering the file used); and, when the file has regional attributes,
  *   `RegionAttributes`: 4 components (x, y, attribute, maximum area).
  *
- * A malformed file gives an error "file:line: reason" and an empty output.
+ * A malformed file gives an error "file:line: reason" and an empty output;
+ * Update() then returns 0, except when the output is one of several pieces
+ * (in parallel the other pieces cannot know, and a gather downstream would
+ * wait for the failed one).
  *
  * In parallel the whole file is read by piece 0; the other pieces are empty
  * (with an empty `HolePoints`), so that the data is delivered once.

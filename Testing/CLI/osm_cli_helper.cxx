@@ -613,8 +613,17 @@ int ReaderContract(int argc, char* argv[])
     f << "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n1 0\n1 1 9\n0\n";
   }
   reader->SetFileName(bad.c_str());
-  reader->Update();
+  // As the mesher: the request fails when this is the only piece (the
+  // executive says so too, on its own), not when it is one of several.
+  const int failed = reader->UpdatePiece(0, 1, 0);
+  Expect(failed == 0, "malformed file: Update() returns 0 (" + std::to_string(failed) + ")");
+  reader->Modified();
+  Expect(reader->UpdatePiece(0, 2, 0) == 1, "malformed file, piece 0 of 2: Update() returns 1");
+  reader->Modified();
+  reader->UpdatePiece(0, 1, 0);
   out = reader->GetOutput();
+  Expect(out->GetPoints() && out->GetNumberOfPoints() == 0,
+    "malformed file: empty points, not none (old bounds would stay)");
   Expect(!errors->Messages.empty() &&
       errors->Messages.front().find("reader-bad.poly:6: segment 1 refers to vertex 9") !=
         std::string::npos,
