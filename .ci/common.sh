@@ -5,10 +5,13 @@
 #   build-vtk/          the VTK-only module, installed into build-vtk/install/
 
 OSM_ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-OSM_PARAVIEW_VTK_DIR=/usr/lib/x86_64-linux-gnu/cmake/paraview-5.11/vtk
+# Debian's multiarch folder (x86_64-linux-gnu on amd64, the machines tested).
+OSM_PARAVIEW_VTK_DIR=/usr/lib/$(uname -m)-linux-gnu/cmake/paraview-5.11/vtk
 OSM_JOBS=2
 # Release, at -O2 rather than CMake's default -O3: quicker to compile on 2 cores.
-OSM_CMAKE_ARGS=(-G Ninja -DCMAKE_BUILD_TYPE=Release "-DCMAKE_CXX_FLAGS_RELEASE=-O2 -DNDEBUG")
+# The system's Python for the test scripts, not one first on PATH (pyenv).
+OSM_CMAKE_ARGS=(-G Ninja -DCMAKE_BUILD_TYPE=Release "-DCMAKE_CXX_FLAGS_RELEASE=-O2 -DNDEBUG"
+  -DPython3_EXECUTABLE=/usr/bin/python3)
 
 # Debian packages the build and the tests need.
 OSM_PACKAGES=(
@@ -50,6 +53,10 @@ osm_install_packages() {
   osm_log "Installing ${#missing[@]} Debian package(s): ${missing[*]}"
   local sudo=()
   if [ "$(id -u)" -ne 0 ]; then
+    if ! command -v sudo > /dev/null; then
+      osm_log "Cannot install them: run this as root, or install sudo and be allowed to use it"
+      return 1
+    fi
     sudo=(sudo)
   fi
   "${sudo[@]}" apt-get update
@@ -81,5 +88,6 @@ osm_build_plugin() {
 
 # Path of the built plugin library.
 osm_plugin_path() {
-  find "$OSM_ROOT/build/lib" -name OverlayStitchMesher.so -path '*/OverlayStitchMesher/*' | head -n 1
+  # -quit, not "| head": under pipefail a second match could end find by SIGPIPE.
+  find "$OSM_ROOT/build/lib" -name OverlayStitchMesher.so -path '*/OverlayStitchMesher/*' -print -quit
 }

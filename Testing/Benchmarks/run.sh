@@ -25,7 +25,7 @@ source "$root/.ci/common.sh"
 OSM_PACKAGES+=(libcgal-dev valgrind linux-perf python3-matplotlib time)
 osm_install_packages
 build="${OSM_BENCH_BUILD:-$root/build-bench}"
-vtk_dir="${VTK_DIR:-/usr/lib/x86_64-linux-gnu/cmake/paraview-5.11/vtk}"
+vtk_dir="${VTK_DIR:-$OSM_PARAVIEW_VTK_DIR}"
 
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
   -DOSM_BUILD_PARAVIEW_PLUGIN=OFF -DVTK_DIR="$vtk_dir" \
