@@ -1015,7 +1015,9 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
       if (firstMalformed.empty())
       {
         auto* polyData = vtkPolyData::SafeDownCast(piece);
-        firstMalformed = polyData ? PieceLabel(polyData, pieceName, p) : PieceLabel(pieceName, p);
+        const std::string label =
+          polyData ? PieceLabel(polyData, pieceName, p) : PieceLabel(pieceName, p);
+        firstMalformed = label.compare(0, 6, "block ") == 0 ? label : "the piece of " + label;
       }
     }
     if (vtkAbstractArray* array = field->GetAbstractArray(HolePointsName))

@@ -89,7 +89,7 @@ struct OverlayStitchGatherSummary
   vtkIdType InvalidCells = 0;
   std::string FirstInvalidCell;
   /// Pieces with malformed cell arrays (OverlayStitchMalformedName), and the
-  /// first of them, named by its place ("rank 1").
+  /// first of them, as messages name it ("the piece of rank 1", "block 2 on rank 1").
   vtkIdType MalformedPieces = 0;
   std::string FirstMalformedPiece;
   /// Point and cell arrays of some pieces but not all: the combined input has

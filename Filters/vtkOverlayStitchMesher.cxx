@@ -65,6 +65,10 @@
 #include <vector>
 
 vtkStandardNewMacro(vtkOverlayStitchMesher);
+// The header's vtkSetClampMacro(MinimumAngle, ...) and the plugin XML's
+// range repeat the core's: change them together.
+static_assert(osm::kMinAngleDegLowest == 1.0 && osm::kMinAngleDegHighest == 35.0,
+  "MinimumAngle's clamp (vtkOverlayStitchMesher.h, OverlayStitchMesher.xml) follows the core's");
 
 namespace
 {
@@ -981,65 +985,99 @@ int Failure()
 } // namespace
 
 //------------------------------------------------------------------------------
-int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
-  vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+/// One run of RequestData: the input made ready (cleaned, combined,
+/// gathered), read as a PSLG, meshed, and the outputs filled. Each step
+/// reports its own errors; one that ends the run returns what RequestData
+/// returns.
+class vtkOverlayStitchMesher::MeshRun
 {
-  // Reading the input and building the outputs allocate too: an exception
-  // must not escape into the executive and the application (a review).
-  try
-  {
-    return this->MeshInput(inputVector, outputVector);
-  }
-  catch (const std::exception& e)
-  {
-    ClearOutputs({ vtkPolyData::GetData(outputVector, 0), vtkPolyData::GetData(outputVector, 1),
-      vtkPolyData::GetData(outputVector, 2) });
-    if (dynamic_cast<const std::bad_alloc*>(&e))
-    {
-      vtkErrorMacro("Cannot mesh the input: out of memory while reading it or building the "
-                    "outputs (turning GenerateEdges and GenerateOverlay off saves memory)");
-    }
-    else
-    {
-      vtkErrorMacro("Internal error in the filter: " << e.what());
-    }
-    return Failure();
-  }
-}
+public:
+  MeshRun(vtkOverlayStitchMesher* self, vtkPolyData* mesh, vtkPolyData* edges, vtkPolyData* overlay)
+    : Self(self)
+    , Mesh(mesh)
+    , Edges(edges)
+    , Overlay(overlay)
+  {}
 
-//------------------------------------------------------------------------------
-int vtkOverlayStitchMesher::MeshInput(
-  vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
-  // Whichever way the run ends, no phase is left named as current.
-  const struct ProgressTextReset
+  int Execute(vtkDataObject* data)
   {
-    vtkOverlayStitchMesher* Filter;
-    ~ProgressTextReset() { this->Filter->SetProgressText(nullptr); }
-  } progressTextReset{ this };
+    if (auto stop = this->Prepare(data))
+    {
+      return *stop;
+    }
+    if (auto stop = this->ReadPslg())
+    {
+      return *stop;
+    }
+    const bool interpolate = this->Self->GetInterpolatePointData() &&
+      OverlayStitchHasUserArrays(this->Input->GetPointData());
+    if (auto stop = this->MeshPslg(interpolate))
+    {
+      return *stop;
+    }
+    return this->FillOutputs(interpolate);
+  }
+
+private:
+  std::optional<int> Prepare(vtkDataObject* data);
+  std::optional<int> ReadPslg();
+  std::optional<int> ReadHoleSeeds();
+  osm::Options MakeOptions(bool interpolate) const;
+  std::optional<int> MeshPslg(bool interpolate);
+  int FillOutputs(bool interpolate);
+  bool Aborted();
+
+  vtkOverlayStitchMesher* Self;
+  vtkPolyData* Mesh;
+  vtkPolyData* Edges;
+  vtkPolyData* Overlay;
+  vtkSmartPointer<vtkDataObject> WellFormed; // the input, cleaned of what it cannot hold
+  vtkSmartPointer<vtkPolyData> Gathered;     // the whole input, on the rank that meshes
+  vtkPolyData* Input = nullptr;              // = Gathered
+  bool Composite = false;
+  OverlayStitchGatherSummary Combination; // of this rank's blocks
+  OverlayStitchGatherSummary Gather;      // of the ranks' pieces
+  osm::Array<osm::Vec3> Points;           // the input's, which Map refers to
+  osm::PlaneMap Map;
+  osm::Pslg Pslg;
+  osm::Array<SegmentSource> SegmentSources;
+  IgnoredCells Ignored;
+  vtkIdType InputHoles = 0;
+  std::string Numbering; // the note on numbers that error messages end with
+  osm::Result Result;
+  // Carrying point data takes its scratch memory from the pages the mesher
+  // frees (kept while this lives) instead of fresh ones, whose first touch
+  // costs most of its time on a virtual machine.
+  std::optional<osm::pages::Reuse> Reuse;
+};
+
+/// Cleans the input (internal names, malformed cell arrays), reads a grid as
+/// polydata, combines a composite's blocks and gathers the ranks' pieces.
+std::optional<int> vtkOverlayStitchMesher::MeshRun::Prepare(vtkDataObject* data)
+{
+  vtkOverlayStitchMesher* self = this->Self;
   // Arrays named like those the filter adds would stand for them.
   std::vector<std::string> internalNames;
   const vtkSmartPointer<vtkDataObject> withoutInternal =
-    OverlayStitchWithoutInternalArrays(vtkDataObject::GetData(inputVector[0], 0), internalNames);
+    OverlayStitchWithoutInternalArrays(data, internalNames);
   if (!internalNames.empty())
   {
-    vtkWarningMacro(<< "Ignored " << internalNames.size()
-                    << " input array(s) named like those the filter gives its input internally, "
-                       "e.g. the "
-                    << internalNames.front()
-                    << ". Rename them to have them carried to the outputs.");
+    vtkWarningWithObjectMacro(
+      self, << "Ignored " << internalNames.size()
+            << " input array(s) named like those the filter gives its input internally, e.g. the "
+            << internalNames.front() << ". Rename them to have them carried to the outputs.");
   }
   // Malformed cell arrays are said here, on the rank that holds them, and
   // their datasets marked and emptied: every rank still gathers, and the
   // rank that meshes refuses the input.
   std::string malformed;
-  const vtkSmartPointer<vtkDataObject> wellFormed =
-    OverlayStitchWithWellFormedCells(withoutInternal, malformed);
+  this->WellFormed = OverlayStitchWithWellFormedCells(withoutInternal, malformed);
   if (!malformed.empty())
   {
-    vtkErrorMacro("Cannot mesh the input: a cell array is malformed (" << malformed << ").");
+    vtkErrorWithObjectMacro(
+      self, "Cannot mesh the input: a cell array is malformed (" << malformed << ").");
   }
-  vtkDataObject* inputObject = wellFormed;
+  vtkDataObject* inputObject = this->WellFormed;
   vtkSmartPointer<vtkPolyData> local = vtkPolyData::SafeDownCast(inputObject);
   if (auto* grid = vtkUnstructuredGrid::SafeDownCast(inputObject))
   {
@@ -1053,13 +1091,450 @@ int vtkOverlayStitchMesher::MeshInput(
     std::vector<OverlayStitchNote> notes;
     vtkIdType ignoredCells = 0;
     local = OverlayStitchPolyDataOf(grid, ranks <= 1, where, notes, ignoredCells);
-    WarnOf(this, notes);
+    WarnOf(self, notes);
     if (ignoredCells > 0)
     {
       // Counted on every rank, summed by the gather.
       local = OverlayStitchWithIgnoredCells(local, ignoredCells);
     }
   }
+  // A composite input is one graph: this rank's polydata (and grid) blocks, combined.
+  if (auto* composite = vtkCompositeDataSet::SafeDownCast(inputObject))
+  {
+    this->Composite = true;
+    std::vector<std::string> ignoredBlocks;
+    local = OverlayStitchCombineBlocks(composite, ignoredBlocks, &this->Combination);
+    if (!ignoredBlocks.empty())
+    {
+      vtkWarningWithObjectMacro(self,
+        << "Ignored " << ignoredBlocks.size()
+        << " block(s) of the composite input that are neither polydata nor unstructured grids "
+           "(the first: "
+        << ignoredBlocks.front()
+        << "); segments come from the polydata and unstructured grid blocks, which are meshed "
+           "together.");
+    }
+    // Said here, on the rank that holds the blocks: other ranks' notes do
+    // not reach rank 0.
+    WarnOf(self, this->Combination.NotCarried);
+  }
+  // Parallel runs (pvbatch, pvserver): every rank takes part in gathering the whole input
+  // on rank 0, which meshes it; the other ranks keep empty outputs (OverlayStitchGather.h).
+  // A rank whose blocks are invalid still takes part, or the others would wait for it.
+  const bool meshHere = OverlayStitchGatherInput(
+    vtkMultiProcessController::GetGlobalController(), local, this->Gathered, &this->Gather);
+  // Cells naming points their piece lacks: said with the piece's own ids (this
+  // rank's blocks first), since combining leaves such an id as -1.
+  const OverlayStitchGatherSummary& invalid =
+    this->Combination.InvalidCells > 0 || !meshHere ? this->Combination : this->Gather;
+  if (invalid.InvalidCells > 0)
+  {
+    vtkErrorWithObjectMacro(self,
+      "Cannot mesh the input: " << invalid.FirstInvalidCell << " (" << invalid.InvalidCells
+                                << " cell(s) refer to points that do not exist).");
+  }
+  this->Input = this->Gathered;
+  if (!meshHere)
+  {
+    return 1;
+  }
+  // A malformed array of another rank's was said there (rank 0 tells which).
+  if (malformed.empty() && this->Gather.MalformedPieces > 0)
+  {
+    vtkErrorWithObjectMacro(self,
+      "Cannot mesh the input: a cell array of " << this->Gather.FirstMalformedPiece
+                                                << " is malformed (that rank's error says how).");
+  }
+  if (this->Combination.InvalidCells > 0 || this->Gather.InvalidCells > 0 || !malformed.empty() ||
+    this->Gather.MalformedPieces > 0)
+  {
+    return Failure();
+  }
+  if (!this->Input)
+  {
+    vtkErrorWithObjectMacro(self, "No input polydata.");
+    return Failure();
+  }
+  WarnOf(self, this->Gather.NotCarried);
+  const std::string leftOut = ArraysLeftOut({ &this->Combination, &this->Gather },
+    self->GetInterpolatePointData(), self->GetPassCellData());
+  if (!leftOut.empty())
+  {
+    vtkWarningWithObjectMacro(
+      self, << "Not carried to the outputs, since not every block or rank's piece of the input has "
+               "them (with the same type and components): "
+            << leftOut << ".");
+  }
+  return std::nullopt;
+}
+
+/// Phase "input": the points, the plane they lie in, the segments, the hole
+/// seeds and the regional attributes, into Pslg.
+std::optional<int> vtkOverlayStitchMesher::MeshRun::ReadPslg()
+{
+  vtkOverlayStitchMesher* self = this->Self;
+  vtkPolyData* input = this->Input;
+  self->SetProgressText("input");
+  self->UpdateProgress(0.0);
+  osm::Array<osm::Vec3>& points = this->Points;
+  std::string inputError = ReadPoints(input, points);
+  if (inputError.empty())
+  {
+    // Float coordinates are rounded to 2^-24 of themselves: a tilted plane's
+    // points, as a slice gives them, lie that far off it.
+    const bool floats = (input->GetPoints() && input->GetPoints()->GetDataType() == VTK_FLOAT) ||
+      this->Combination.FloatPoints || this->Gather.FloatPoints;
+    inputError = this->Map.choose(points, self->GetProjectToXYPlane() != 0, floats ? 0x1p-24 : 0.0);
+  }
+  // Composite blocks and the pieces of a parallel run are meshed as one
+  // combined input, whose numbers are not any single block's.
+  // A composite's cells and points carry their blocks' ids: messages add them.
+  const bool combined = this->Composite || this->Gather.Ranks > 1;
+  this->Numbering = !combined ? NumberingNote(input)
+    : this->Composite
+    ? " (numbers of points, segments and cells in this message count through the combined "
+      "input: every polydata or unstructured grid block, or every rank's piece, in turn; blocks "
+      "are named by their flat index, as InputBlockId does)"
+    : " (numbers of points, segments and cells in this message count through the combined "
+      "input: every rank's piece in turn)";
+  if (!inputError.empty())
+  {
+    vtkErrorWithObjectMacro(self,
+      "Cannot mesh the input: " << Numbered(ExplainPoints(inputError, input), this->Numbering));
+    return Failure();
+  }
+  this->Pslg.points.reserve(points.size());
+  for (const osm::Vec3& p : points)
+  {
+    this->Pslg.points.push_back(this->Map.toPlane(p));
+  }
+  this->Map.indexInputPoints(this->Pslg.points);
+  if (this->Map.isProjected())
+  {
+    vtkWarningWithObjectMacro(
+      self, << "The input points are not in a plane z = constant: projected onto the XY plane "
+               "(ProjectToXYPlane); the outputs lie at z = "
+            << this->Map.z() << ", the mean z.");
+  }
+  this->Ignored.OwnIds =
+    vtkIdTypeArray::SafeDownCast(input->GetCellData()->GetArray(OverlayStitchSourceCellIdName));
+  this->Ignored.BlockIds =
+    vtkIdTypeArray::SafeDownCast(input->GetCellData()->GetArray(OverlayStitchBlockIdName));
+  ReadSegments(input, this->Pslg, this->SegmentSources, this->Ignored);
+  if (this->Ignored.Total() > 0)
+  {
+    vtkWarningWithObjectMacro(self, << this->Ignored.Describe(input));
+  }
+  if (auto stop = this->ReadHoleSeeds())
+  {
+    return stop;
+  }
+  const std::string regionsWarning = ReadRegionAttributes(input, this->Map, this->Pslg);
+  if (!regionsWarning.empty())
+  {
+    vtkWarningWithObjectMacro(self, << regionsWarning);
+  }
+  if (AbortRequested(self))
+  {
+    vtkErrorWithObjectMacro(self, "Meshing failed: aborted by the user");
+    return 1;
+  }
+  self->UpdateProgress(0.05);
+  return std::nullopt;
+}
+
+/// The hole seeds of the HolePoints property, (x, y), and of the input's
+/// field data, (x, y, z) or (x, y).
+std::optional<int> vtkOverlayStitchMesher::MeshRun::ReadHoleSeeds()
+{
+  vtkOverlayStitchMesher* self = this->Self;
+  // In a plane that contains the z direction, an (x, y) seed names a whole
+  // vertical line of the plane: refused rather than placed at some height.
+  vtkFieldData* field = this->Input->GetFieldData();
+  vtkDataArray* fieldHoles =
+    self->GetUseInputHolePoints() ? field->GetArray("HolePoints") : nullptr;
+  const char* xySeeds = !self->HolePoints.empty()            ? "the HolePoints property"
+    : fieldHoles && fieldHoles->GetNumberOfComponents() == 2 ? "the input's 2-component HolePoints"
+    : field->GetArray("RegionAttributes")                    ? "the input's RegionAttributes"
+                                                             : nullptr;
+  if (xySeeds && !this->Map.seedXYDefined())
+  {
+    vtkErrorWithObjectMacro(self,
+      "Cannot mesh the input: its points lie in a plane that contains the z direction, where a "
+      "seed given as (x, y), as in "
+        << xySeeds
+        << ", names no single point; give hole seeds as the input's field data HolePoints with 3 "
+           "components (x, y, z).");
+    return Failure();
+  }
+  const std::vector<double>& property = self->HolePoints;
+  if (property.size() % 2 != 0)
+  {
+    vtkWarningWithObjectMacro(self, << "HolePoints has an odd number of values (" << property.size()
+                                    << "): seeds are (x, y) pairs, and the last value, "
+                                    << property.back() << ", has no y; it is ignored.");
+  }
+  for (std::size_t i = 0; i + 1 < property.size(); i += 2)
+  {
+    this->Pslg.holes.push_back(this->Map.seedXY(property[i], property[i + 1]));
+  }
+  if (!fieldHoles)
+  {
+    return std::nullopt;
+  }
+  const int components = fieldHoles->GetNumberOfComponents();
+  if (components != 2 && components != 3)
+  {
+    vtkWarningWithObjectMacro(
+      self, << "The input's field data array HolePoints has " << components
+            << " components (2 or 3 expected: x, y and perhaps z): ignored.");
+    return std::nullopt;
+  }
+  this->InputHoles = fieldHoles->GetNumberOfTuples();
+  for (vtkIdType i = 0; i < this->InputHoles; ++i)
+  {
+    double seed[3] = { 0.0, 0.0, 0.0 };
+    fieldHoles->GetTuple(i, seed);
+    this->Pslg.holes.push_back(components == 3 && this->Map.isFitted()
+        ? this->Map.toPlane(osm::Vec3{ seed[0], seed[1], seed[2] })
+        : this->Map.seedXY(seed[0], seed[1]));
+  }
+  return std::nullopt;
+}
+
+/// The core's options, from the filter's properties.
+osm::Options vtkOverlayStitchMesher::MeshRun::MakeOptions(bool interpolate) const
+{
+  const vtkOverlayStitchMesher* self = this->Self;
+  osm::Options options;
+  options.minAngleDeg = self->MinimumAngle;
+  options.maxEdgeLength = self->MaximumEdgeLength;
+  switch (self->Domain)
+  {
+    case vtkOverlayStitchMesher::DOMAIN_ENCLOSED:
+      options.domain = osm::Domain::Enclosed;
+      break;
+    case vtkOverlayStitchMesher::DOMAIN_HULL:
+      options.domain = osm::Domain::Hull;
+      break;
+    case vtkOverlayStitchMesher::DOMAIN_BOX:
+      options.domain = osm::Domain::Box;
+      break;
+    default:
+      options.domain = osm::Domain::Auto;
+      break;
+  }
+  options.resolveCrossings = self->ResolveIntersections != 0;
+  options.mergeTolerance = self->MergeTolerance;
+  options.regionAreas = self->ApplyRegionAreas != 0;
+  options.gapRatioOverlay = self->GapRatioOverlay != 0;
+  options.maxSteinerPoints = static_cast<std::size_t>(self->MaximumSteinerPoints);
+  // Triangle's vertex markers need the input subsegments, to know which
+  // vertices lie on a marked segment.
+  options.keepEdges = self->GenerateEdges != 0 ||
+    (interpolate && this->Input->GetPointData()->GetArray("PointMarker"));
+  options.keepOverlay = self->GenerateOverlay != 0;
+  options.keepVertexSegments = interpolate; // the segment of each vertex, to carry data along
+  if (this->Map.isFitted())
+  {
+    // Points named in messages in the input's 3D coordinates, not the plane's 2D frame.
+    const osm::PlaneMap& map = this->Map;
+    options.pointFormat = [&map](const osm::Point& p) { return osm::formatPoint3(map.toSpace(p)); };
+  }
+  return options;
+}
+
+/// The core's phases (clean, overlay, stitch, complete, domain), and its
+/// messages with the input's names for the items they number.
+std::optional<int> vtkOverlayStitchMesher::MeshRun::MeshPslg(bool interpolate)
+{
+  vtkOverlayStitchMesher* self = this->Self;
+  const osm::Options options = this->MakeOptions(interpolate);
+  ProgressAdapter progress(self, 0.05, 0.9);
+  if (interpolate)
+  {
+    this->Reuse.emplace();
+  }
+  try
+  {
+    this->Result = osm::mesh(this->Pslg, options, &progress);
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorWithObjectMacro(self, "Internal error in the mesher: " << e.what());
+    return Failure();
+  }
+
+  // Which cells the named segments are, and which seeds the named holes.
+  const std::size_t propertySeeds = self->HolePoints.size() / 2;
+  auto explain = [&](const std::string& text) {
+    return ExplainHoles(ExplainSegments(ExplainPoints(text, this->Input), this->SegmentSources,
+                          this->Input, this->Composite || this->Gather.Ranks > 1),
+      propertySeeds, this->Pslg.holes.size());
+  };
+  for (const std::string& warning : this->Result.warnings)
+  {
+    vtkWarningWithObjectMacro(self, << Numbered(explain(warning), this->Numbering));
+  }
+  if (!this->Result.ok)
+  {
+    vtkErrorWithObjectMacro(
+      self, "Meshing failed: " << Numbered(explain(this->Result.error), this->Numbering));
+    // An abort is no failure of the filter's, as for VTK's own (a review).
+    return this->Result.error == osm::kAbortedByTheUser ? 1 : Failure();
+  }
+  return std::nullopt;
+}
+
+/// Whether the user asked to abort; then the outputs are emptied, and said so.
+bool vtkOverlayStitchMesher::MeshRun::Aborted()
+{
+  if (!AbortRequested(this->Self))
+  {
+    return false;
+  }
+  ClearOutputs({ this->Mesh, this->Edges, this->Overlay });
+  vtkErrorWithObjectMacro(this->Self, "Meshing failed: aborted by the user");
+  return true;
+}
+
+/// Phase "output": the three polydata, built in bulk, with the input's data
+/// carried; the abort flag is polled between them (an abort empties every
+/// output).
+int vtkOverlayStitchMesher::MeshRun::FillOutputs(bool interpolate)
+{
+  vtkOverlayStitchMesher* self = this->Self;
+  vtkPolyData* input = this->Input;
+  const osm::Result& result = this->Result;
+  self->SetProgressText("output");
+  self->UpdateProgress(0.9);
+  if (this->Aborted())
+  {
+    return 1;
+  }
+  // The output steps: the input data carriers' warnings, and progress from lo
+  // to hi of the whole run, which an abort stops.
+  std::vector<std::string> warnings;
+  auto warn = [self, &warnings]() {
+    for (const std::string& warning : warnings)
+    {
+      vtkWarningWithObjectMacro(self, << warning);
+    }
+    warnings.clear();
+  };
+  auto outputSteps = [self](double lo, double hi) {
+    return [self, lo, hi](double fraction) {
+      self->UpdateProgress(lo + (hi - lo) * fraction);
+      return AbortRequested(self);
+    };
+  };
+  // An output's own arrays, which an input array may not take the name of
+  // (InputBlockId only for a composite input, which alone has it).
+  auto ownNames = [this](std::vector<std::string> names) {
+    if (this->Composite)
+    {
+      names.emplace_back("InputBlockId");
+    }
+    return names;
+  };
+  std::vector<vtkIdType> segmentCells;
+  if (self->InterpolatePointData || (self->PassCellData && self->GenerateEdges))
+  {
+    segmentCells.reserve(this->SegmentSources.size());
+    for (const SegmentSource& source : this->SegmentSources)
+    {
+      segmentCells.push_back(source.Cell);
+    }
+  }
+  vtkNew<vtkPointData> carried;
+  if (interpolate)
+  {
+    OverlayStitchInterpolatePointData(input->GetPointData(), input->GetCellData(), this->Pslg,
+      result, segmentCells, ownNames({ "VertexOrigin", "InputPointId" }), carried,
+      outputSteps(0.9, 0.93), warnings);
+    warn();
+    this->Reuse.reset();
+  }
+  if (this->Aborted())
+  {
+    return 1;
+  }
+  FillMesh(result, this->Map, this->Mesh, outputSteps(0.93, 0.945));
+  if (this->Aborted())
+  {
+    return 1;
+  }
+  OverlayStitchToSourceIds(input->GetPointData(), OverlayStitchSourcePointIdName,
+    vtkIdTypeArray::SafeDownCast(this->Mesh->GetPointData()->GetArray("InputPointId")),
+    this->Mesh->GetPointData());
+  if (self->PassCellData)
+  {
+    OverlayStitchPassPolygonData(input, this->Pslg, result,
+      ownNames({ "MinAngle", "MaxAngle", "RegionId", "RegionAttribute", "InputCellId" }),
+      this->Mesh->GetCellData(), outputSteps(0.945, 0.95), warnings);
+    warn();
+    if (this->Aborted())
+    {
+      return 1;
+    }
+  }
+  OverlayStitchMovePointData(carried, this->Mesh->GetPointData());
+  vtkPolyData* mesh = this->Mesh;
+  auto addCount = [mesh](const char* name, double value) {
+    auto array = MakeArray<vtkDoubleArray>(name, 1);
+    array->SetValue(0, value);
+    mesh->GetFieldData()->AddArray(array);
+  };
+  addCount(
+    "IgnoredCells", static_cast<double>(this->Ignored.Total() + OverlayStitchIgnoredCells(input)));
+  addCount("InputHolePoints", static_cast<double>(this->InputHoles));
+  addCount("InputPlaneFitted", this->Map.isFitted() ? 1.0 : 0.0);
+  addCount("InputProjectedToXY", this->Map.isProjected() ? 1.0 : 0.0);
+  self->UpdateProgress(0.95);
+  if (this->Aborted())
+  {
+    return 1;
+  }
+  if (self->GenerateEdges)
+  {
+    FillEdges(result, this->Map, this->Edges, outputSteps(0.95, 0.97));
+    if (self->PassCellData && !AbortRequested(self))
+    {
+      OverlayStitchPassCellData(input->GetCellData(), input->GetNumberOfCells(), this->Pslg, result,
+        segmentCells,
+        ownNames({ "Overlay", "Kept", "Discarded", "Input", "EdgeClass", "InputCellId" }),
+        this->Edges->GetCellData(), outputSteps(0.97, 0.98), warnings);
+      // The input's active cell scalars came along active; the Edges output
+      // opens colored by its classes all the same.
+      this->Edges->GetCellData()->SetActiveScalars("EdgeClass");
+      warn();
+    }
+  }
+  self->UpdateProgress(0.98);
+  if (this->Aborted())
+  {
+    return 1;
+  }
+  if (self->GenerateOverlay)
+  {
+    MakeTriangles(result.overlay, this->Map, this->Overlay, outputSteps(0.98, 1.0));
+  }
+  for (vtkPolyData* output : { this->Mesh, this->Edges, this->Overlay })
+  {
+    PassFieldData(input->GetFieldData(), output);
+  }
+  self->SetProgressText(nullptr);
+  self->UpdateProgress(1.0);
+  // An abort requested by the last progress report still counts: the flag
+  // stays set, so a mesh kept here would make the next run fail instead.
+  this->Aborted();
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
+  vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
   vtkPolyData* mesh = vtkPolyData::GetData(outputVector, 0);
   vtkPolyData* edges = vtkPolyData::GetData(outputVector, 1);
   vtkPolyData* overlay = vtkPolyData::GetData(outputVector, 2);
@@ -1070,407 +1545,35 @@ int vtkOverlayStitchMesher::MeshInput(
   }
   // Outputs stay empty unless meshing succeeds.
   ClearOutputs({ mesh, edges, overlay });
-  // A composite input is one graph: this rank's polydata (and grid) blocks, combined.
-  OverlayStitchGatherSummary combination;
-  if (auto* composite = vtkCompositeDataSet::SafeDownCast(inputObject))
+  // Whichever way the run ends, no phase is left named as current.
+  const struct ProgressTextReset
   {
-    std::vector<std::string> ignoredBlocks;
-    local = OverlayStitchCombineBlocks(composite, ignoredBlocks, &combination);
-    if (!ignoredBlocks.empty())
-    {
-      vtkWarningMacro(<< "Ignored " << ignoredBlocks.size()
-                      << " block(s) of the composite input that are neither polydata nor "
-                         "unstructured grids (the first: "
-                      << ignoredBlocks.front()
-                      << "); segments come from the polydata and unstructured grid blocks, "
-                         "which are meshed together.");
-    }
-    // Said here, on the rank that holds the blocks: other ranks' notes do
-    // not reach rank 0.
-    WarnOf(this, combination.NotCarried);
-  }
-  // Parallel runs (pvbatch, pvserver): every rank takes part in gathering the whole input
-  // on rank 0, which meshes it; the other ranks keep empty outputs (OverlayStitchGather.h).
-  // A rank whose blocks are invalid still takes part, or the others would wait for it.
-  vtkSmartPointer<vtkPolyData> gathered;
-  OverlayStitchGatherSummary gather;
-  const bool meshHere = OverlayStitchGatherInput(
-    vtkMultiProcessController::GetGlobalController(), local, gathered, &gather);
-  // Cells naming points their piece lacks: said with the piece's own ids (this
-  // rank's blocks first), since combining leaves such an id as -1.
-  const OverlayStitchGatherSummary& invalid =
-    combination.InvalidCells > 0 || !meshHere ? combination : gather;
-  if (invalid.InvalidCells > 0)
-  {
-    vtkErrorMacro("Cannot mesh the input: " << invalid.FirstInvalidCell << " ("
-                                            << invalid.InvalidCells
-                                            << " cell(s) refer to points that do not exist).");
-  }
-  vtkPolyData* input = gathered;
-  if (!meshHere)
-  {
-    return 1;
-  }
-  // A malformed array of another rank's was said there (rank 0 tells which).
-  if (malformed.empty() && gather.MalformedPieces > 0)
-  {
-    const std::string& piece = gather.FirstMalformedPiece; // "rank 1", "block 2 on rank 1"
-    vtkErrorMacro("Cannot mesh the input: a cell array of "
-      << (piece.compare(0, 5, "rank ") == 0 ? "the piece of " : "") << piece
-      << " is malformed (that rank's error says how).");
-  }
-  if (combination.InvalidCells > 0 || gather.InvalidCells > 0 || !malformed.empty() ||
-    gather.MalformedPieces > 0)
-  {
-    return Failure();
-  }
-  if (!input)
-  {
-    vtkErrorMacro("No input polydata.");
-    return Failure();
-  }
-  WarnOf(this, gather.NotCarried);
-  const std::string leftOut =
-    ArraysLeftOut({ &combination, &gather }, this->InterpolatePointData, this->PassCellData);
-  if (!leftOut.empty())
-  {
-    vtkWarningMacro(<< "Not carried to the outputs, since not every block or rank's piece of the "
-                       "input has them (with the same type and components): "
-                    << leftOut << ".");
-  }
-
-  // Phase "input": points, the plane they lie in, segments, hole seeds.
-  this->SetProgressText("input");
-  this->UpdateProgress(0.0);
-  osm::Array<osm::Vec3> points;
-  std::string inputError = ReadPoints(input, points);
-  osm::PlaneMap map;
-  if (inputError.empty())
-  {
-    // Float coordinates are rounded to 2^-24 of themselves: a tilted plane's
-    // points, as a slice gives them, lie that far off it.
-    const bool floats = (input->GetPoints() && input->GetPoints()->GetDataType() == VTK_FLOAT) ||
-      combination.FloatPoints || gather.FloatPoints;
-    inputError = map.choose(points, this->ProjectToXYPlane != 0, floats ? 0x1p-24 : 0.0);
-  }
-  // Composite blocks and the pieces of a parallel run are meshed as one
-  // combined input, whose numbers are not any single block's.
-  // A composite's cells and points carry their blocks' ids: messages add them.
-  const bool composite = vtkCompositeDataSet::SafeDownCast(inputObject) != nullptr;
-  const bool combined = composite || gather.Ranks > 1;
-  const std::string numbering = !combined ? NumberingNote(input)
-    : composite
-    ? " (numbers of points, segments and cells in this message count through the combined "
-      "input: every polydata or unstructured grid block, or every rank's piece, in turn; blocks "
-      "are named by their "
-      "flat index, as InputBlockId does)"
-    : " (numbers of points, segments and cells in this message count through the combined "
-      "input: every rank's piece in turn)";
-  if (!inputError.empty())
-  {
-    vtkErrorMacro(
-      "Cannot mesh the input: " << Numbered(ExplainPoints(inputError, input), numbering));
-    return Failure();
-  }
-  osm::Pslg pslg;
-  pslg.points.reserve(points.size());
-  for (const osm::Vec3& p : points)
-  {
-    pslg.points.push_back(map.toPlane(p));
-  }
-  map.indexInputPoints(pslg.points);
-  if (map.isProjected())
-  {
-    vtkWarningMacro(<< "The input points are not in a plane z = constant: projected onto the XY "
-                       "plane (ProjectToXYPlane); the outputs lie at z = "
-                    << map.z() << ", the mean z.");
-  }
-  IgnoredCells ignored;
-  ignored.OwnIds =
-    vtkIdTypeArray::SafeDownCast(input->GetCellData()->GetArray(OverlayStitchSourceCellIdName));
-  ignored.BlockIds =
-    vtkIdTypeArray::SafeDownCast(input->GetCellData()->GetArray(OverlayStitchBlockIdName));
-  osm::Array<SegmentSource> segmentSources;
-  ReadSegments(input, pslg, segmentSources, ignored);
-  if (ignored.Total() > 0)
-  {
-    vtkWarningMacro(<< ignored.Describe(input));
-  }
-  // In a plane that contains the z direction, an (x, y) seed names a whole
-  // vertical line of the plane: refused rather than placed at some height.
-  vtkFieldData* field = input->GetFieldData();
-  vtkDataArray* fieldHoles = this->UseInputHolePoints ? field->GetArray("HolePoints") : nullptr;
-  const char* xySeeds = !this->HolePoints.empty()            ? "the HolePoints property"
-    : fieldHoles && fieldHoles->GetNumberOfComponents() == 2 ? "the input's 2-component HolePoints"
-    : field->GetArray("RegionAttributes")                    ? "the input's RegionAttributes"
-                                                             : nullptr;
-  if (xySeeds && !map.seedXYDefined())
-  {
-    vtkErrorMacro("Cannot mesh the input: its points lie in a plane that contains the z "
-                  "direction, where a seed given as (x, y), as in "
-      << xySeeds
-      << ", names no single point; give hole seeds as the input's field data HolePoints "
-         "with 3 components (x, y, z).");
-    return Failure();
-  }
-  if (this->HolePoints.size() % 2 != 0)
-  {
-    vtkWarningMacro(<< "HolePoints has an odd number of values (" << this->HolePoints.size()
-                    << "): seeds are (x, y) pairs, and the last value, " << this->HolePoints.back()
-                    << ", has no y; it is ignored.");
-  }
-  for (std::size_t i = 0; i + 1 < this->HolePoints.size(); i += 2)
-  {
-    pslg.holes.push_back(map.seedXY(this->HolePoints[i], this->HolePoints[i + 1]));
-  }
-  vtkIdType inputHoles = 0;
-  if (this->UseInputHolePoints)
-  {
-    if (vtkDataArray* seeds = input->GetFieldData()->GetArray("HolePoints"))
-    {
-      const int components = seeds->GetNumberOfComponents();
-      if (components == 2 || components == 3)
-      {
-        inputHoles = seeds->GetNumberOfTuples();
-        for (vtkIdType i = 0; i < inputHoles; ++i)
-        {
-          double seed[3] = { 0.0, 0.0, 0.0 };
-          seeds->GetTuple(i, seed);
-          pslg.holes.push_back(components == 3 && map.isFitted()
-              ? map.toPlane(osm::Vec3{ seed[0], seed[1], seed[2] })
-              : map.seedXY(seed[0], seed[1]));
-        }
-      }
-      else
-      {
-        vtkWarningMacro(<< "The input's field data array HolePoints has " << components
-                        << " components (2 or 3 expected: x, y and perhaps z): ignored.");
-      }
-    }
-  }
-  const std::string regionsWarning = ReadRegionAttributes(input, map, pslg);
-  if (!regionsWarning.empty())
-  {
-    vtkWarningMacro(<< regionsWarning);
-  }
-  if (AbortRequested(this))
-  {
-    vtkErrorMacro("Meshing failed: aborted by the user");
-    return 1;
-  }
-  this->UpdateProgress(0.05);
-
-  const bool interpolate =
-    this->InterpolatePointData && OverlayStitchHasUserArrays(input->GetPointData());
-  osm::Options options;
-  options.minAngleDeg = this->MinimumAngle;
-  options.maxEdgeLength = this->MaximumEdgeLength;
-  switch (this->Domain)
-  {
-    case DOMAIN_ENCLOSED:
-      options.domain = osm::Domain::Enclosed;
-      break;
-    case DOMAIN_HULL:
-      options.domain = osm::Domain::Hull;
-      break;
-    case DOMAIN_BOX:
-      options.domain = osm::Domain::Box;
-      break;
-    default:
-      options.domain = osm::Domain::Auto;
-      break;
-  }
-  options.resolveCrossings = this->ResolveIntersections != 0;
-  options.mergeTolerance = this->MergeTolerance;
-  options.regionAreas = this->ApplyRegionAreas != 0;
-  options.gapRatioOverlay = this->GapRatioOverlay != 0;
-  options.maxSteinerPoints = static_cast<std::size_t>(this->MaximumSteinerPoints);
-  // Triangle's vertex markers need the input subsegments, to know which
-  // vertices lie on a marked segment.
-  options.keepEdges =
-    this->GenerateEdges != 0 || (interpolate && input->GetPointData()->GetArray("PointMarker"));
-  options.keepOverlay = this->GenerateOverlay != 0;
-  options.keepVertexSegments = interpolate; // the segment of each vertex, to carry data along
-  if (map.isFitted())
-  {
-    // Points named in messages in the input's 3D coordinates, not the plane's 2D frame.
-    options.pointFormat = [&map](const osm::Point& p) { return osm::formatPoint3(map.toSpace(p)); };
-  }
-
-  // The core's phases (clean, overlay, stitch, complete, domain).
-  ProgressAdapter progress(this, 0.05, 0.9);
-  // Carrying point data takes its scratch memory from the pages the mesher
-  // frees (kept while this scope lives) instead of fresh ones, whose first
-  // touch costs most of its time on a virtual machine.
-  std::optional<osm::pages::Reuse> reuse;
-  if (interpolate)
-  {
-    reuse.emplace();
-  }
-  osm::Result result;
+    vtkOverlayStitchMesher* Filter;
+    ~ProgressTextReset() { this->Filter->SetProgressText(nullptr); }
+  } progressTextReset{ this };
+  // Reading the input and building the outputs allocate too: an exception
+  // must not escape into the executive and the application (a review).
   try
   {
-    result = osm::mesh(pslg, options, &progress);
+    MeshRun run(this, mesh, edges, overlay);
+    return run.Execute(vtkDataObject::GetData(inputVector[0], 0));
   }
   catch (const std::exception& e)
   {
-    vtkErrorMacro("Internal error in the mesher: " << e.what());
+    ClearOutputs({ mesh, edges, overlay });
+    if (dynamic_cast<const std::bad_alloc*>(&e))
+    {
+      vtkErrorMacro("Cannot mesh the input: out of memory while reading it or building the "
+                    "outputs (turning GenerateEdges and GenerateOverlay off saves memory)");
+    }
+    else
+    {
+      vtkErrorMacro("Internal error in the filter: " << e.what());
+    }
     return Failure();
   }
-
-  // Which cells the named segments are, and which seeds the named holes.
-  const std::size_t propertySeeds = this->HolePoints.size() / 2;
-  auto explain = [&](const std::string& text) {
-    return ExplainHoles(
-      ExplainSegments(ExplainPoints(text, input), segmentSources, input, combined), propertySeeds,
-      pslg.holes.size());
-  };
-  for (const std::string& warning : result.warnings)
-  {
-    vtkWarningMacro(<< Numbered(explain(warning), numbering));
-  }
-  if (!result.ok)
-  {
-    vtkErrorMacro("Meshing failed: " << Numbered(explain(result.error), numbering));
-    // An abort is no failure of the filter's, as for VTK's own (a review).
-    return result.error == osm::kAbortedByTheUser ? 1 : Failure();
-  }
-
-  // Phase "output": the three polydata, built in bulk; the abort flag is
-  // polled between them (an abort empties every output).
-  auto aborted = [&]() {
-    if (!AbortRequested(this))
-    {
-      return false;
-    }
-    ClearOutputs({ mesh, edges, overlay });
-    vtkErrorMacro("Meshing failed: aborted by the user");
-    return true;
-  };
-  this->SetProgressText("output");
-  this->UpdateProgress(0.9);
-  if (aborted())
-  {
-    return 1;
-  }
-  // The output steps: the input data carriers' warnings, and progress from lo
-  // to hi of the whole run, which an abort stops.
-  std::vector<std::string> warnings;
-  auto warn = [this, &warnings]() {
-    for (const std::string& warning : warnings)
-    {
-      vtkWarningMacro(<< warning);
-    }
-    warnings.clear();
-  };
-  auto outputSteps = [this](double lo, double hi) {
-    return [this, lo, hi](double fraction) {
-      this->UpdateProgress(lo + (hi - lo) * fraction);
-      return AbortRequested(this);
-    };
-  };
-  // An output's own arrays, which an input array may not take the name of
-  // (InputBlockId only for a composite input, which alone has it).
-  auto ownNames = [composite](std::vector<std::string> names) {
-    if (composite)
-    {
-      names.emplace_back("InputBlockId");
-    }
-    return names;
-  };
-  std::vector<vtkIdType> segmentCells;
-  if (this->InterpolatePointData || (this->PassCellData && this->GenerateEdges))
-  {
-    segmentCells.reserve(segmentSources.size());
-    for (const SegmentSource& source : segmentSources)
-    {
-      segmentCells.push_back(source.Cell);
-    }
-  }
-  vtkNew<vtkPointData> carried;
-  if (interpolate)
-  {
-    OverlayStitchInterpolatePointData(input->GetPointData(), input->GetCellData(), pslg, result,
-      segmentCells, ownNames({ "VertexOrigin", "InputPointId" }), carried, outputSteps(0.9, 0.93),
-      warnings);
-    warn();
-    reuse.reset();
-  }
-  if (aborted())
-  {
-    return 1;
-  }
-  FillMesh(result, map, mesh, outputSteps(0.93, 0.945));
-  if (aborted())
-  {
-    return 1;
-  }
-  OverlayStitchToSourceIds(input->GetPointData(), OverlayStitchSourcePointIdName,
-    vtkIdTypeArray::SafeDownCast(mesh->GetPointData()->GetArray("InputPointId")),
-    mesh->GetPointData());
-  if (this->PassCellData)
-  {
-    OverlayStitchPassPolygonData(input, pslg, result,
-      ownNames({ "MinAngle", "MaxAngle", "RegionId", "RegionAttribute", "InputCellId" }),
-      mesh->GetCellData(), outputSteps(0.945, 0.95), warnings);
-    warn();
-    if (aborted())
-    {
-      return 1;
-    }
-  }
-  OverlayStitchMovePointData(carried, mesh->GetPointData());
-  auto addCount = [mesh](const char* name, double value) {
-    auto array = MakeArray<vtkDoubleArray>(name, 1);
-    array->SetValue(0, value);
-    mesh->GetFieldData()->AddArray(array);
-  };
-  addCount("IgnoredCells", static_cast<double>(ignored.Total() + OverlayStitchIgnoredCells(input)));
-  addCount("InputHolePoints", static_cast<double>(inputHoles));
-  addCount("InputPlaneFitted", map.isFitted() ? 1.0 : 0.0);
-  addCount("InputProjectedToXY", map.isProjected() ? 1.0 : 0.0);
-  this->UpdateProgress(0.95);
-  if (aborted())
-  {
-    return 1;
-  }
-  if (this->GenerateEdges)
-  {
-    FillEdges(result, map, edges, outputSteps(0.95, 0.97));
-    if (this->PassCellData && !AbortRequested(this))
-    {
-      OverlayStitchPassCellData(input->GetCellData(), input->GetNumberOfCells(), pslg, result,
-        segmentCells,
-        ownNames({ "Overlay", "Kept", "Discarded", "Input", "EdgeClass", "InputCellId" }),
-        edges->GetCellData(), outputSteps(0.97, 0.98), warnings);
-      // The input's active cell scalars came along active; the Edges output
-      // opens colored by its classes all the same.
-      edges->GetCellData()->SetActiveScalars("EdgeClass");
-      warn();
-    }
-  }
-  this->UpdateProgress(0.98);
-  if (aborted())
-  {
-    return 1;
-  }
-  if (this->GenerateOverlay)
-  {
-    MakeTriangles(result.overlay, map, overlay, outputSteps(0.98, 1.0));
-  }
-  for (vtkPolyData* output : { mesh, edges, overlay })
-  {
-    PassFieldData(input->GetFieldData(), output);
-  }
-  this->SetProgressText(nullptr);
-  this->UpdateProgress(1.0);
-  // An abort requested by the last progress report still counts: the flag
-  // stays set, so a mesh kept here would make the next run fail instead.
-  aborted();
-  return 1;
 }
 
-//------------------------------------------------------------------------------
 //------------------------------------------------------------------------------
 void vtkOverlayStitchMesher::SetMergeTolerance(double tolerance)
 {

@@ -351,8 +351,7 @@ protected:
   std::vector<double> HolePoints; // x0, y0, x1, y1, ...
 
 private:
-  /// RequestData's work; RequestData reports any exception it throws.
-  int MeshInput(vtkInformationVector** inputVector, vtkInformationVector* outputVector);
+  class MeshRun; // one run of RequestData's steps (in the .cxx)
 
   vtkOverlayStitchMesher(const vtkOverlayStitchMesher&) = delete;
   void operator=(const vtkOverlayStitchMesher&) = delete;

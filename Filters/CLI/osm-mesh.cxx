@@ -556,7 +556,7 @@ bool ParseArguments(int argc, char* argv[], Arguments& args)
     {
       args.minAngle = ParseNumber(arg, needValue());
       args.minAngleGiven = true;
-      if (args.minAngle < 1.0 || args.minAngle > 35.0)
+      if (args.minAngle < osm::kMinAngleDegLowest || args.minAngle > osm::kMinAngleDegHighest)
       {
         Fail("--min-angle must be between 1 and 35 degrees, got " + Number(args.minAngle), 2);
       }
@@ -651,8 +651,8 @@ bool ParseArguments(int argc, char* argv[], Arguments& args)
   {
     // theta1 = asin(1 / (2 gamma)) must lie in [1, 35] degrees.
     const double degrees = 180.0 / std::acos(-1.0);
-    const double lo = 1.0 / (2.0 * std::sin(35.0 / degrees));
-    const double hi = 1.0 / (2.0 * std::sin(1.0 / degrees));
+    const double lo = 1.0 / (2.0 * std::sin(osm::kMinAngleDegHighest / degrees));
+    const double hi = 1.0 / (2.0 * std::sin(osm::kMinAngleDegLowest / degrees));
     if (!(gamma >= lo && gamma <= hi))
     {
       Fail("--gamma must be between " + Number(lo) + " and " + Number(hi) +
@@ -661,7 +661,8 @@ bool ParseArguments(int argc, char* argv[], Arguments& args)
     }
     args.minAngle = std::asin(1.0 / (2.0 * gamma)) * degrees;
     // Rounding at the ends of the range must not fall outside the filter's clamp.
-    args.minAngle = std::min(35.0, std::max(1.0, args.minAngle));
+    args.minAngle =
+      std::min(osm::kMinAngleDegHighest, std::max(osm::kMinAngleDegLowest, args.minAngle));
   }
 
   // Never overwrite the input (e.g. "osm-mesh points.node -o points.node").

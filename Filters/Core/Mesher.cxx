@@ -887,7 +887,7 @@ Result Mesher::execute()
   st.inputPoints = input.points.size();
   st.inputSegments = input.segments.size();
   st.theta1Deg = options.minAngleDeg;
-  if (!(options.minAngleDeg >= 1.0 && options.minAngleDeg <= 35.0))
+  if (!(options.minAngleDeg >= kMinAngleDegLowest && options.minAngleDeg <= kMinAngleDegHighest))
     throw Stop{ "the overlay minimum angle must be between 1 and 35 degrees, not " +
       formatNumber(options.minAngleDeg) };
   if (!(options.maxEdgeLength >= 0.0) || !std::isfinite(options.maxEdgeLength))

@@ -22,6 +22,11 @@ enum class Domain
   Box       ///< The whole padded bounding box of the overlay.
 };
 
+/// The range of θ1 (Options::minAngleDeg) the mesher takes, in degrees; the
+/// command-line tool and the VTK filter check or clamp to the same.
+inline constexpr double kMinAngleDegLowest = 1.0;
+inline constexpr double kMinAngleDegHighest = 35.0;
+
 struct Options
 {
   /// θ1: the smallest angle of the overlay mesh, in degrees (Γ = 1 / (2 sin θ1)).

@@ -70,11 +70,6 @@ namespace
 // the lifts and cross terms; since |bdx*cdy| + |cdx*bdy| <= (blift + clift) / 2, all of it is
 // bounded by a few 2^-1074 * (1 + alift + blift + clift). Both slacks are normal numbers (no slow
 // subnormal arithmetic on the hot path) and far too small to matter for ordinary inputs.
-using detail::kIncircleBound;
-using detail::kIncircleSlack;
-using detail::kOrientBound;
-using detail::kOrientSlack;
-using detail::kU;
 
 // ---------------------------------------------------------------------------------------------
 // Error-free transformations: hi is the rounded result and hi + lo the exact one.

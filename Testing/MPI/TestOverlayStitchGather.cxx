@@ -257,7 +257,7 @@ int main()
     std::vector<vtkSmartPointer<vtkDataObject>> ranks = { good, standIn };
     OverlayStitchGatherSummary bad;
     OverlayStitchCombinePieces(ranks, &bad, "rank");
-    Check(bad.MalformedPieces == 1 && bad.FirstMalformedPiece == "rank 1",
+    Check(bad.MalformedPieces == 1 && bad.FirstMalformedPiece == "the piece of rank 1",
       "a piece marked malformed is counted and named (" + bad.FirstMalformedPiece + ")");
     // A rank's single block, emptied as malformed: named by its block and
     // rank, which only its field data can carry (it has no cells left).
