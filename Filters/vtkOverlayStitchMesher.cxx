@@ -1,11 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Copyright (c) 2026, the Overlay Stitch Meshing authors
 //
-// The VTK layer: vtkPolyData -> osm::Pslg, osm::mesh(), osm::Result -> three
-// vtkPolyData outputs. The meshing is all in the plain C++ core (Filters/Core,
-// namespace osm); the layer's own geometry is the plane of the input
-// (osm::PlaneMap) and which input polygon holds each triangle, for carrying
-// polygon cell data (OverlayStitchCellData.cxx, with the core's predicates).
+// A thin layer: vtkPolyData -> osm::Pslg, osm::mesh(), osm::Result -> three
+// vtkPolyData outputs. No geometric algorithm lives here: the mesher, the
+// input's plane (osm::PlaneMap) and which input polygon holds each region
+// (osm::innermostPolygons) are in the plain C++ core (Filters/Core).
 #include "vtkOverlayStitchMesher.h"
 
 #include "vtkCellArray.h"
