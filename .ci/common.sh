@@ -5,8 +5,20 @@
 #   build-vtk/          the VTK-only module, installed into build-vtk/install/
 
 OSM_ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-# Debian's multiarch folder (x86_64-linux-gnu on amd64, the machines tested).
-OSM_PARAVIEW_VTK_DIR=/usr/lib/$(uname -m)-linux-gnu/cmake/paraview-5.11/vtk
+# ParaView's bundled VTK, in Debian's multiarch folder (x86_64-linux-gnu on
+# amd64, the machines tested): found once paraview-dev is installed
+# (osm_install_packages looks again), else amd64's.
+osm_paraview_vtk_dir() {
+  local dir
+  for dir in /usr/lib/*/cmake/paraview-5.11/vtk; do
+    if [ -d "$dir" ]; then
+      echo "$dir"
+      return
+    fi
+  done
+  echo /usr/lib/x86_64-linux-gnu/cmake/paraview-5.11/vtk
+}
+OSM_PARAVIEW_VTK_DIR=$(osm_paraview_vtk_dir)
 OSM_JOBS=2
 # Release, at -O2 rather than CMake's default -O3: quicker to compile on 2 cores.
 # The system's Python for the test scripts, not one first on PATH (pyenv).
@@ -61,6 +73,7 @@ osm_install_packages() {
   fi
   "${sudo[@]}" apt-get update
   "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y "${missing[@]}"
+  OSM_PARAVIEW_VTK_DIR=$(osm_paraview_vtk_dir)
 }
 
 # The VTK-only module, built against ParaView's bundled VTK and installed.

@@ -9,8 +9,10 @@
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
@@ -61,10 +63,14 @@ std::string Problem(vtkCellArray* cells)
   return "";
 }
 
-/// Marks data as the stand-in of a piece with a malformed cell array.
+/// Marks data as the stand-in of a piece with a malformed cell array (its
+/// block id, -1, is filled in when blocks are combined).
 void MarkMalformed(vtkDataObject* data)
 {
-  data->GetFieldData()->AddArray(OverlayStitchIdArray(OverlayStitchMalformedName, 1, 1));
+  vtkNew<vtkIdTypeArray> mark;
+  mark->SetName(OverlayStitchMalformedName);
+  mark->InsertNextValue(-1);
+  data->GetFieldData()->AddArray(mark);
 }
 
 /// data with its malformed cell arrays replaced (a shallow copy), or null if
@@ -138,6 +144,15 @@ vtkSmartPointer<vtkDataObject> Repaired(
 }
 
 } // namespace
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkPolyData> OverlayStitchRefusedPiece()
+{
+  auto piece = vtkSmartPointer<vtkPolyData>::New();
+  piece->SetPoints(vtkNew<vtkPoints>());
+  MarkMalformed(piece);
+  return piece;
+}
 
 //------------------------------------------------------------------------------
 vtkSmartPointer<vtkDataObject> OverlayStitchWithBlocksReplaced(vtkDataObject* input,

@@ -14,6 +14,7 @@
 #include <string>
 
 class vtkDataObject;
+class vtkPolyData;
 
 /// input with each dataset of it (input itself, or every block of a
 /// composite) replaced by what replace gives for it, where that is not
@@ -32,5 +33,10 @@ vtkSmartPointer<vtkDataObject> OverlayStitchWithBlocksReplaced(vtkDataObject* in
 /// the first one ("the lines of block 2: their offsets decrease at cell 1").
 vtkSmartPointer<vtkDataObject> OverlayStitchWithWellFormedCells(
   vtkDataObject* input, std::string& malformed);
+
+/// An empty piece with the mark OverlayStitchMalformedName: what a rank that
+/// cannot read its piece (out of memory) gathers instead, so that the other
+/// ranks do not wait for it and the rank that meshes refuses the input.
+vtkSmartPointer<vtkPolyData> OverlayStitchRefusedPiece();
 
 #endif

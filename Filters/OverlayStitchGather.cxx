@@ -997,7 +997,9 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
   holes->SetName(HolePointsName);
   vtkFieldData* outField = combined->GetFieldData();
   vtkIdType ignoredCells = 0;
-  vtkIdType malformedPieces = 0;
+  // The refused pieces' block ids (-1 where not a block's), and how
+  // messages name the first.
+  std::vector<vtkIdType> refused;
   std::string firstMalformed;
   for (std::size_t p = 0; p < pieces.size(); ++p)
   {
@@ -1009,15 +1011,26 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
     }
     ignoredCells += OverlayStitchIgnoredCells(piece);
     anyFloat = anyFloat || field->GetArray(OverlayStitchFloatPointsName);
-    if (vtkDataArray* malformed = field->GetArray(OverlayStitchMalformedName))
+    if (vtkDataArray* marks = field->GetArray(OverlayStitchMalformedName))
     {
-      malformedPieces += malformed->GetNumberOfTuples() > 0 ? 1 : 0;
-      if (firstMalformed.empty())
+      // A block's own id is in its field data alone (a rank's combination of
+      // blocks carries each refused one's in its marks: its cells' ids are
+      // those of the blocks that were not refused, a review).
+      auto* ownIds =
+        vtkIdTypeArray::SafeDownCast(field->GetAbstractArray(OverlayStitchBlockIdName));
+      const vtkIdType own = ownIds && ownIds->GetNumberOfTuples() > 0 ? ownIds->GetValue(0) : -1;
+      const bool ranks = std::strcmp(pieceName, "rank") == 0;
+      for (vtkIdType m = 0; m < marks->GetNumberOfTuples(); ++m)
       {
-        auto* polyData = vtkPolyData::SafeDownCast(piece);
-        const std::string label =
-          polyData ? PieceLabel(polyData, pieceName, p) : PieceLabel(pieceName, p);
-        firstMalformed = label.compare(0, 6, "block ") == 0 ? label : "the piece of " + label;
+        const auto mark = static_cast<vtkIdType>(marks->GetComponent(m, 0));
+        const vtkIdType block = mark >= 0 ? mark : own;
+        refused.push_back(block);
+        if (firstMalformed.empty())
+        {
+          firstMalformed = block < 0 ? "the piece of " + PieceLabel(pieceName, p)
+            : ranks ? "block " + std::to_string(block) + " on rank " + std::to_string(p)
+                    : "block " + std::to_string(block);
+        }
       }
     }
     if (vtkAbstractArray* array = field->GetAbstractArray(HolePointsName))
@@ -1053,9 +1066,11 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
     // combination with others (the point type cannot say it).
     outField->AddArray(IdArray(OverlayStitchFloatPointsName, 1, 1));
   }
-  if (malformedPieces > 0)
+  if (!refused.empty())
   {
-    outField->AddArray(IdArray(OverlayStitchMalformedName, 1, malformedPieces));
+    auto marks = IdArray(OverlayStitchMalformedName, static_cast<vtkIdType>(refused.size()), -1);
+    std::copy(refused.begin(), refused.end(), marks->GetPointer(0));
+    outField->AddArray(marks);
   }
   if (anyHoles)
   {
@@ -1092,7 +1107,7 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
     summary->SharedCellsDropped = sharedCells;
     summary->HolePoints = static_cast<vtkIdType>(seeds.size());
     summary->FloatPoints = anyFloat;
-    summary->MalformedPieces = malformedPieces;
+    summary->MalformedPieces = static_cast<vtkIdType>(refused.size());
     summary->FirstMalformedPiece = firstMalformed;
     summary->InvalidCells = invalid.Count;
     summary->FirstInvalidCell = invalid.First;

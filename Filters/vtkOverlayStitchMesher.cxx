@@ -1019,6 +1019,7 @@ public:
 
 private:
   std::optional<int> Prepare(vtkDataObject* data);
+  vtkSmartPointer<vtkPolyData> LocalPiece(vtkDataObject* data, std::string& refused);
   std::optional<int> ReadPslg();
   std::optional<int> ReadHoleSeeds();
   osm::Options MakeOptions(bool interpolate) const;
@@ -1050,9 +1051,11 @@ private:
   std::optional<osm::pages::Reuse> Reuse;
 };
 
-/// Cleans the input (internal names, malformed cell arrays), reads a grid as
-/// polydata, combines a composite's blocks and gathers the ranks' pieces.
-std::optional<int> vtkOverlayStitchMesher::MeshRun::Prepare(vtkDataObject* data)
+/// This rank's piece of the input, cleaned (internal names, malformed cell
+/// arrays), a grid read as polydata, a composite's blocks combined; refused
+/// says why it is refused, if it is.
+vtkSmartPointer<vtkPolyData> vtkOverlayStitchMesher::MeshRun::LocalPiece(
+  vtkDataObject* data, std::string& refused)
 {
   vtkOverlayStitchMesher* self = this->Self;
   // Arrays named like those the filter adds would stand for them.
@@ -1069,7 +1072,7 @@ std::optional<int> vtkOverlayStitchMesher::MeshRun::Prepare(vtkDataObject* data)
   // Malformed cell arrays are said here, on the rank that holds them, and
   // their datasets marked and emptied: every rank still gathers, and the
   // rank that meshes refuses the input.
-  std::string malformed;
+  std::string& malformed = refused;
   this->WellFormed = OverlayStitchWithWellFormedCells(withoutInternal, malformed);
   if (!malformed.empty())
   {
@@ -1117,6 +1120,27 @@ std::optional<int> vtkOverlayStitchMesher::MeshRun::Prepare(vtkDataObject* data)
     // not reach rank 0.
     WarnOf(self, this->Combination.NotCarried);
   }
+  return local;
+}
+
+/// This rank's piece, gathered with the others' on the rank that meshes.
+std::optional<int> vtkOverlayStitchMesher::MeshRun::Prepare(vtkDataObject* data)
+{
+  vtkOverlayStitchMesher* self = this->Self;
+  std::string refused;
+  vtkSmartPointer<vtkPolyData> local;
+  try
+  {
+    local = this->LocalPiece(data, refused);
+  }
+  catch (const std::bad_alloc&)
+  {
+    // Still gathered, as a refused piece: a rank that left the gather would
+    // leave the others waiting for it (a review).
+    refused = "out of memory";
+    vtkErrorWithObjectMacro(self, "Cannot mesh the input: out of memory while reading it.");
+    local = OverlayStitchRefusedPiece();
+  }
   // Parallel runs (pvbatch, pvserver): every rank takes part in gathering the whole input
   // on rank 0, which meshes it; the other ranks keep empty outputs (OverlayStitchGather.h).
   // A rank whose blocks are invalid still takes part, or the others would wait for it.
@@ -1137,14 +1161,15 @@ std::optional<int> vtkOverlayStitchMesher::MeshRun::Prepare(vtkDataObject* data)
   {
     return 1;
   }
-  // A malformed array of another rank's was said there (rank 0 tells which).
-  if (malformed.empty() && this->Gather.MalformedPieces > 0)
+  // Another rank's refusal was said there (rank 0 tells which).
+  if (refused.empty() && this->Gather.MalformedPieces > 0)
   {
     vtkErrorWithObjectMacro(self,
-      "Cannot mesh the input: a cell array of " << this->Gather.FirstMalformedPiece
-                                                << " is malformed (that rank's error says how).");
+      "Cannot mesh the input: " << this->Gather.FirstMalformedPiece
+                                << " was refused on its rank (a malformed cell array, or too "
+                                   "little memory: that rank's error says which).");
   }
-  if (this->Combination.InvalidCells > 0 || this->Gather.InvalidCells > 0 || !malformed.empty() ||
+  if (this->Combination.InvalidCells > 0 || this->Gather.InvalidCells > 0 || !refused.empty() ||
     this->Gather.MalformedPieces > 0)
   {
     return Failure();
@@ -1559,16 +1584,23 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   }
   catch (const std::exception& e)
   {
-    ClearOutputs({ mesh, edges, overlay });
-    if (dynamic_cast<const std::bad_alloc*>(&e))
+    // Saying so allocates too: with no memory left, the outputs stay as they
+    // are and the error unsaid, rather than an exception leaving.
+    try
     {
-      vtkErrorMacro("Cannot mesh the input: out of memory while reading it or building the "
-                    "outputs (turning GenerateEdges and GenerateOverlay off saves memory)");
+      ClearOutputs({ mesh, edges, overlay });
+      if (dynamic_cast<const std::bad_alloc*>(&e))
+      {
+        vtkErrorMacro("Cannot mesh the input: out of memory while reading it or building the "
+                      "outputs.");
+      }
+      else
+      {
+        vtkErrorMacro("Internal error in the filter: " << e.what());
+      }
     }
-    else
-    {
-      vtkErrorMacro("Internal error in the filter: " << e.what());
-    }
+    catch (...)
+    {}
     return Failure();
   }
 }

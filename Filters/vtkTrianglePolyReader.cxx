@@ -233,14 +233,10 @@ int vtkTrianglePolyReader::RequestData(vtkInformation* vtkNotUsed(request),
   output->Initialize();
   output->SetPoints(vtkNew<vtkPoints>());
 
-  int piece = 0, pieces = 1;
+  int piece = 0;
   if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()))
   {
     piece = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER());
-  }
-  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()))
-  {
-    pieces = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES());
   }
   if (piece > 0)
   {
@@ -248,17 +244,17 @@ int vtkTrianglePolyReader::RequestData(vtkInformation* vtkNotUsed(request),
     return 1;
   }
 
-  // A file that cannot be read gives an error and an empty output. The
-  // request fails (Update() returns 0) only when this is the one piece: the
-  // other pieces cannot know of it (they do not open the file), and under MPI
-  // a filter downstream that gathers (the mesher) would wait forever for the
-  // rank whose request failed.
-  const int failure = pieces > 1 ? 1 : 0;
+  // A file that cannot be read gives an error and an empty output, not a
+  // failed request: the filters downstream then run on the empty output
+  // (after a failed request they would not run, and keep their last outputs,
+  // a mesh of the file read before: a review), and under MPI a filter
+  // downstream that gathers (the mesher) would wait forever for the rank
+  // whose request failed; the other pieces cannot know of it.
   if (!this->FileName || !*this->FileName)
   {
     vtkErrorMacro("No file name: set FileName to a .poly or .node file.");
     AddHolePoints(nullptr, output);
-    return failure;
+    return 1;
   }
 
   this->UpdateProgress(0.0);
@@ -267,7 +263,7 @@ int vtkTrianglePolyReader::RequestData(vtkInformation* vtkNotUsed(request),
   {
     vtkErrorMacro(<< file.error);
     AddHolePoints(nullptr, output);
-    return failure;
+    return 1;
   }
   this->UpdateProgress(0.5);
   FillOutput(file, output);

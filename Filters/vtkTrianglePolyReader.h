@@ -29,9 +29,9 @@
  *   `RegionAttributes`: 4 components (x, y, attribute, maximum area).
  *
  * A malformed file gives an error "file:line: reason" and an empty output;
- * Update() then returns 0, except when the output is one of several pieces
- * (in parallel the other pieces cannot know, and a gather downstream would
- * wait for the failed one).
+ * the request does not fail (Update() returns 1), so that the filters
+ * downstream run on the empty output instead of keeping their last outputs,
+ * and a gather downstream in parallel does not wait for a failed piece.
  *
  * In parallel the whole file is read by piece 0; the other pieces are empty
  * (with an empty `HolePoints`), so that the data is delivered once.

@@ -1614,9 +1614,16 @@ def write_report(data, profile, md_path, png_path, plot_note):
         w("| %s | %d | %.2f°, %.2f° | %d of %d | %.3g°, %.3g° | %d of %d |" % (
             CLASS_LABEL.get(cls, cls), n, omax, mmax, worse_max, n, omin, mmin, worse_min, n))
     w("")
-    w("So on most inputs Mesh_2's mesh is the better shaped, its largest angles included; "
-      "OSM's advantage is the bound, which holds on inputs where Mesh_2's does not (its "
-      "largest angles there: see the real inputs' row).")
+    rows = angle_rows(data)
+    both = sum(r[1] for r in rows)
+    larger = sum(r[4] for r in rows)
+    if both and 2 * larger > both:
+        w("So on most inputs (%d of %d) Mesh_2's largest angle is the smaller: OSM's "
+          "advantage is the bound, which holds on inputs where Mesh_2's does not (the "
+          "largest angle column)." % (larger, both))
+    elif both:
+        w("OSM's largest angle is the smaller on %d of the %d inputs both meshed." % (
+            both - larger, both))
     w("")
     w("## Targets (issue 5)")
     w("")

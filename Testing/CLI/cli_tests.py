@@ -828,10 +828,14 @@ def group_errors():
     # A folder or a file the user may not write to fails before meshing too
     # (it failed after). Root may write anywhere: it runs without the
     # capabilities that let it (as nobody, it could not load the build's
-    # libraries from a clone under /root, which is 0700: a review).
+    # libraries from a clone under /root, which is 0700: a review), dropped
+    # from the inheritable set too (some containers give them there).
+    drop = "-dac_override,-dac_read_search"
     as_user = [] if os.geteuid() != 0 else (
-        ["setpriv", "--bounding-set=-dac_override,-dac_read_search"]
+        ["setpriv", "--inh-caps=" + drop, "--bounding-set=" + drop]
         if shutil.which("setpriv") else None)
+    if as_user and subprocess.run(as_user + ["true"], capture_output=True).returncode != 0:
+        as_user = None  # setpriv may not drop them here (no CAP_SETPCAP)
     if as_user is None:
         print("skip  unwritable folders: running as root without setpriv")
     else:

@@ -95,6 +95,15 @@ vtkSmartPointer<vtkPolyData> MakePiece(const std::vector<std::array<double, 2>>&
   return piece;
 }
 
+/// The mark of a refused piece, as a rank makes it (its block id unknown).
+vtkSmartPointer<vtkIdTypeArray> RefusedMark()
+{
+  auto mark = vtkSmartPointer<vtkIdTypeArray>::New();
+  mark->SetName(OverlayStitchMalformedName);
+  mark->InsertNextValue(-1);
+  return mark;
+}
+
 std::array<double, 2> PointOf(vtkPolyData* data, vtkIdType id)
 {
   double x[3];
@@ -253,7 +262,7 @@ int main()
     // mark): counted, and named by its rank, where rank 0 combines the pieces.
     auto good = MakePiece({ { 0, 0 }, { 1, 0 } }, { { 0, 1 } }, {}, { 1, 2 }, { 3 }, {});
     auto standIn = MakePiece({ { 5, 0 } }, {}, {}, { 1 }, {}, {});
-    standIn->GetFieldData()->AddArray(OverlayStitchIdArray(OverlayStitchMalformedName, 1, 1));
+    standIn->GetFieldData()->AddArray(RefusedMark());
     std::vector<vtkSmartPointer<vtkDataObject>> ranks = { good, standIn };
     OverlayStitchGatherSummary bad;
     OverlayStitchCombinePieces(ranks, &bad, "rank");
@@ -262,7 +271,7 @@ int main()
     // A rank's single block, emptied as malformed: named by its block and
     // rank, which only its field data can carry (it has no cells left).
     auto emptied = MakePiece({}, {}, {}, {}, {}, {});
-    emptied->GetFieldData()->AddArray(OverlayStitchIdArray(OverlayStitchMalformedName, 1, 1));
+    emptied->GetFieldData()->AddArray(RefusedMark());
     emptied->GetFieldData()->AddArray(OverlayStitchIdArray(OverlayStitchBlockIdName, 1, 2));
     emptied->GetFieldData()->AddArray(OverlayStitchIdArray(OverlayStitchRankName, 1, 1));
     ranks = { good, emptied };
@@ -273,6 +282,25 @@ int main()
     Check(!named->GetFieldData()->GetArray(OverlayStitchBlockIdName) &&
         !named->GetFieldData()->GetArray(OverlayStitchRankName),
       "the field data's ids are not passed on as the user's field data");
+    // A rank's blocks, one of them refused: the rank's combination carries the
+    // refused block's id in its mark, which rank 0 names (a review found the
+    // id of the other block's cells named).
+    auto goodBlock = MakePiece({ { 3, 0 }, { 4, 0 } }, { { 0, 1 } }, {}, { 1, 2 }, { 3 }, {});
+    goodBlock->GetCellData()->AddArray(OverlayStitchIdArray(OverlayStitchBlockIdName, 1, 1));
+    goodBlock->GetPointData()->AddArray(OverlayStitchIdArray(OverlayStitchBlockIdName, 2, 1));
+    goodBlock->GetFieldData()->AddArray(OverlayStitchIdArray(OverlayStitchBlockIdName, 1, 1));
+    auto badBlock = MakePiece({}, {}, {}, {}, {}, {});
+    badBlock->GetFieldData()->AddArray(RefusedMark());
+    badBlock->GetFieldData()->AddArray(OverlayStitchIdArray(OverlayStitchBlockIdName, 1, 2));
+    std::vector<vtkSmartPointer<vtkDataObject>> blocks = { goodBlock, badBlock };
+    OverlayStitchGatherSummary onRank1;
+    vtkSmartPointer<vtkPolyData> rank1Piece = OverlayStitchCombinePieces(blocks, &onRank1, "block");
+    Check(onRank1.MalformedPieces == 1 && onRank1.FirstMalformedPiece == "block 2",
+      "a rank's refused block is named by its own id (" + onRank1.FirstMalformedPiece + ")");
+    ranks = { good, rank1Piece };
+    OverlayStitchCombinePieces(ranks, &bad, "rank");
+    Check(bad.MalformedPieces == 1 && bad.FirstMalformedPiece == "block 2 on rank 1",
+      "rank 0 names the refused block of a rank's several (" + bad.FirstMalformedPiece + ")");
     // Float points beside double ones combine to double points, marked: a
     // second combination (rank 0's of the ranks' own) still knows.
     auto withPointType = [](vtkPolyData* piece, int type) {
