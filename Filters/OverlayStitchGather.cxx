@@ -756,293 +756,352 @@ void OverlayStitchToSourceIds(vtkDataSetAttributes* in, const char* sourceIdName
 }
 
 //------------------------------------------------------------------------------
-vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
-  const std::vector<vtkSmartPointer<vtkDataObject>>& pieces, OverlayStitchGatherSummary* summary,
-  const char* pieceName)
+namespace
 {
-  auto combined = vtkSmartPointer<vtkPolyData>::New();
-  InvalidCells invalid{ pieceName };
-
-  // The pieces with points; point and cell arrays are those common to all of them.
-  // A piece without points has no valid cell (its cells are reported, not lost).
-  std::vector<vtkPolyData*> used;
-  std::vector<std::size_t> usedIndex;
-  // Arrays too short for their piece are left out (the copies below would
-  // read past them), each noted.
-  std::vector<vtkSmartPointer<vtkPolyData>> trimmed(pieces.size());
-  std::vector<OverlayStitchNote> notes;
-  for (std::size_t p = 0; p < pieces.size(); ++p)
+/// One combination of pieces (OverlayStitchCombinePieces), step by step.
+class PieceCombination
+{
+public:
+  PieceCombination(const std::vector<vtkSmartPointer<vtkDataObject>>& pieces, const char* pieceName)
+    : Pieces(pieces)
+    , PieceName(pieceName)
+    , Invalid{ pieceName }
   {
-    vtkPolyData* polyData = vtkPolyData::SafeDownCast(pieces[p]);
+    this->Holes->SetName(HolePointsName);
+  }
+
+  vtkSmartPointer<vtkPolyData> Combine(OverlayStitchGatherSummary* summary)
+  {
+    this->SelectPieces();
+    if (!this->Used.empty())
+    {
+      this->MergePoints();
+      this->MergeCells();
+    }
+    this->MergeFieldData();
+    if (summary)
+    {
+      NoteArraysLeftOut(this->Used, this->Combined, summary->ArraysLeftOut);
+      summary->NotCarried = this->Notes;
+      summary->SharedPointsMerged = this->SharedPoints;
+      summary->SharedCellsDropped = this->SharedCells;
+      summary->HolePoints = static_cast<vtkIdType>(this->Seeds.size());
+      summary->FloatPoints = this->AnyFloat;
+      summary->MalformedPieces = static_cast<vtkIdType>(this->Refused.size());
+      summary->FirstMalformedPiece = this->FirstRefused;
+      summary->InvalidCells = this->Invalid.Count;
+      summary->FirstInvalidCell = this->Invalid.First;
+    }
+    return this->Combined;
+  }
+
+private:
+  void SelectPieces();
+  void MergePoints();
+  void MergeCells();
+  void MergeFieldData();
+  void NoteRefused(vtkFieldData* field, std::size_t p);
+  void SetHoleSeeds();
+
+  const std::vector<vtkSmartPointer<vtkDataObject>>& Pieces;
+  const char* PieceName;
+  vtkSmartPointer<vtkPolyData> Combined = vtkSmartPointer<vtkPolyData>::New();
+  InvalidCells Invalid;
+  std::vector<OverlayStitchNote> Notes;
+  // The pieces with points (their arrays too short for them left out), and
+  // their places among the pieces.
+  std::vector<vtkPolyData*> Used;
+  std::vector<std::size_t> UsedIndex;
+  std::vector<vtkSmartPointer<vtkPolyData>> Trimmed;
+  std::vector<std::vector<vtkIdType>> NewId; // per used piece, its points' ids in Combined
+  vtkIdType SharedPoints = 0;
+  vtkIdType SharedCells = 0;
+  bool AnyFloat = false;
+  bool AllFloat = false;
+  std::vector<HoleSeed> Seeds;
+  std::set<HoleSeed> SeenSeeds;
+  bool AnyHoles = false;
+  vtkNew<vtkDoubleArray> Holes;
+  vtkIdType IgnoredCells = 0;
+  // The refused pieces' block ids (-1 where not a block's), and how messages
+  // name the first.
+  std::vector<vtkIdType> Refused;
+  std::string FirstRefused;
+};
+
+/// The pieces with points; a piece without points has no valid cell (its
+/// cells are reported, not lost). Arrays too short for their piece are left
+/// out (the copies would read past them), each noted.
+void PieceCombination::SelectPieces()
+{
+  this->Trimmed.resize(this->Pieces.size());
+  for (std::size_t p = 0; p < this->Pieces.size(); ++p)
+  {
+    vtkPolyData* polyData = vtkPolyData::SafeDownCast(this->Pieces[p]);
     if (polyData && HasShortArrays(polyData))
     {
-      trimmed[p] = vtkSmartPointer<vtkPolyData>::New();
-      trimmed[p]->ShallowCopy(polyData);
-      DropShortArrays(trimmed[p], PieceLabel(polyData, pieceName, p), &notes);
-      polyData = trimmed[p];
+      this->Trimmed[p] = vtkSmartPointer<vtkPolyData>::New();
+      this->Trimmed[p]->ShallowCopy(polyData);
+      DropShortArrays(this->Trimmed[p], PieceLabel(polyData, this->PieceName, p), &this->Notes);
+      polyData = this->Trimmed[p];
     }
     if (polyData && polyData->GetNumberOfPoints() > 0)
     {
-      used.push_back(polyData);
-      usedIndex.push_back(p);
+      this->Used.push_back(polyData);
+      this->UsedIndex.push_back(p);
     }
     else if (polyData)
     {
-      invalid.NotePiecesCells(polyData, p);
+      this->Invalid.NotePiecesCells(polyData, p);
     }
   }
-  const int numberOfUsed = static_cast<int>(used.size());
-  vtkDataSetAttributes::FieldList pointFields(numberOfUsed);
-  vtkDataSetAttributes::FieldList cellFields(numberOfUsed);
+}
+
+/// Points: a point equal to one of an earlier piece is that point; point
+/// arrays are those common to every piece.
+void PieceCombination::MergePoints()
+{
+  const std::vector<vtkPolyData*>& used = this->Used;
+  vtkDataSetAttributes::FieldList pointFields(static_cast<int>(used.size()));
   vtkIdType totalPoints = 0;
-  vtkIdType totalCells = 0;
-  for (int u = 0; u < numberOfUsed; ++u)
+  for (std::size_t u = 0; u < used.size(); ++u)
   {
     if (u == 0)
     {
       pointFields.InitializeFieldList(used[u]->GetPointData());
-      cellFields.InitializeFieldList(used[u]->GetCellData());
     }
     else
     {
       pointFields.IntersectFieldList(used[u]->GetPointData());
-      cellFields.IntersectFieldList(used[u]->GetCellData());
     }
     totalPoints += used[u]->GetNumberOfPoints();
+  }
+  vtkPolyData* combined = this->Combined;
+  std::vector<std::vector<vtkIdType>>& newId = this->NewId;
+  vtkIdType& sharedPoints = this->SharedPoints;
+  bool& anyFloat = this->AnyFloat;
+  bool& allFloat = this->AllFloat;
+  // Ids are first given in first-seen order, then, when every piece numbers
+  // its points with global ids, in global id order: the input's order, which
+  // the mesh may depend on (see the header).
+  struct Source
+  {
+    std::size_t Piece;
+    vtkIdType Id;
+    double GlobalId;
+  };
+  std::vector<Source> sources;
+  sources.reserve(static_cast<std::size_t>(totalPoints));
+  bool globalIds = true;
+  for (vtkPolyData* piece : used)
+  {
+    globalIds = globalIds && piece->GetPointData()->GetGlobalIds() &&
+      piece->GetPointData()->GetGlobalIds()->GetNumberOfComponents() == 1;
+  }
+  std::unordered_map<PointKey, FirstSeen, PointKeyHash> firstPoint;
+  firstPoint.reserve(static_cast<std::size_t>(totalPoints));
+  newId.assign(used.size(), {});
+  for (std::size_t u = 0; u < used.size(); ++u)
+  {
+    vtkPolyData* piece = used[u];
+    vtkDataArray* ids = globalIds ? piece->GetPointData()->GetGlobalIds() : nullptr;
+    newId[u].resize(static_cast<std::size_t>(piece->GetNumberOfPoints()));
+    for (vtkIdType i = 0; i < piece->GetNumberOfPoints(); ++i)
+    {
+      double x[3];
+      piece->GetPoint(i, x);
+      const PointKey key = { x[0] + 0.0, x[1] + 0.0, x[2] + 0.0 };
+      const bool finite = std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]);
+      auto found = finite ? firstPoint.find(key) : firstPoint.end();
+      if (found != firstPoint.end() && found->second.Piece != u)
+      {
+        newId[u][static_cast<std::size_t>(i)] = found->second.Id;
+        ++sharedPoints;
+        continue;
+      }
+      const auto id = static_cast<vtkIdType>(sources.size());
+      sources.push_back({ u, i, ids ? ids->GetComponent(i, 0) : 0.0 });
+      newId[u][static_cast<std::size_t>(i)] = id;
+      if (finite && found == firstPoint.end())
+      {
+        firstPoint.emplace(key, FirstSeen{ u, id });
+      }
+    }
+  }
+  std::vector<vtkIdType> order(sources.size());
+  std::iota(order.begin(), order.end(), vtkIdType(0));
+  if (globalIds)
+  {
+    std::stable_sort(order.begin(), order.end(), [&sources](vtkIdType a, vtkIdType b) {
+      return sources[static_cast<std::size_t>(a)].GlobalId <
+        sources[static_cast<std::size_t>(b)].GlobalId;
+    });
+  }
+  std::vector<vtkIdType> finalId(sources.size());
+  vtkNew<vtkPoints> points;
+  // Float points stay float where every piece's are (exactly): the mesher
+  // allows their rounding off a tilted plane (a review: a Slice's output
+  // meshed serially, not in parallel); any float piece is noted.
+  allFloat = true;
+  for (vtkPolyData* piece : used)
+  {
+    const bool floats = piece->GetPoints() && piece->GetPoints()->GetDataType() == VTK_FLOAT;
+    anyFloat = anyFloat || floats;
+    allFloat = allFloat && floats;
+  }
+  points->SetDataType(allFloat ? VTK_FLOAT : VTK_DOUBLE);
+  points->SetNumberOfPoints(static_cast<vtkIdType>(sources.size()));
+  // Each point and cell is copied once, so global ids keep their meaning
+  // (vtkDataSetAttributes leaves them out by default).
+  vtkPointData* outPointData = combined->GetPointData();
+  outPointData->CopyGlobalIdsOn();
+  outPointData->CopyAllocate(pointFields, static_cast<vtkIdType>(sources.size()));
+  for (std::size_t k = 0; k < order.size(); ++k)
+  {
+    const Source& source = sources[static_cast<std::size_t>(order[k])];
+    finalId[static_cast<std::size_t>(order[k])] = static_cast<vtkIdType>(k);
+    double x[3];
+    used[source.Piece]->GetPoint(source.Id, x);
+    points->SetPoint(static_cast<vtkIdType>(k), x);
+    outPointData->CopyData(pointFields, used[source.Piece]->GetPointData(),
+      static_cast<int>(source.Piece), source.Id, static_cast<vtkIdType>(k));
+  }
+  for (auto& pieceIds : newId)
+  {
+    for (vtkIdType& id : pieceIds)
+    {
+      id = finalId[static_cast<std::size_t>(id)];
+    }
+  }
+  combined->SetPoints(points);
+}
+
+/// Cells, kind by kind (verts, lines, polys, strips: vtkPolyData's cell id
+/// order), each piece in turn; a cell equal to one of an earlier piece is
+/// that cell. Cell arrays are those common to every piece.
+void PieceCombination::MergeCells()
+{
+  const std::vector<vtkPolyData*>& used = this->Used;
+  const std::vector<std::size_t>& usedIndex = this->UsedIndex;
+  vtkDataSetAttributes::FieldList cellFields(static_cast<int>(used.size()));
+  vtkIdType totalCells = 0;
+  for (std::size_t u = 0; u < used.size(); ++u)
+  {
+    if (u == 0)
+    {
+      cellFields.InitializeFieldList(used[u]->GetCellData());
+    }
+    else
+    {
+      cellFields.IntersectFieldList(used[u]->GetCellData());
+    }
     totalCells += used[u]->GetNumberOfCells();
   }
-
-  vtkIdType sharedPoints = 0;
-  vtkIdType sharedCells = 0;
-  bool anyFloat = false, allFloat = false;
-  if (numberOfUsed > 0)
+  vtkPolyData* combined = this->Combined;
+  const std::vector<std::vector<vtkIdType>>& newId = this->NewId;
+  vtkIdType& sharedCells = this->SharedCells;
+  InvalidCells& invalid = this->Invalid;
+  vtkCellData* outCellData = combined->GetCellData();
+  outCellData->CopyGlobalIdsOn();
+  outCellData->CopyAllocate(cellFields, totalCells);
+  vtkIdType nextCellId = 0;
+  for (int kind = 0; kind < 4; ++kind)
   {
-    // Points: a point equal to one of an earlier piece is that point. Ids are
-    // first given in first-seen order, then, when every piece numbers its points
-    // with global ids, in global id order: the input's order, which the mesh may
-    // depend on (see the header).
-    struct Source
-    {
-      std::size_t Piece;
-      vtkIdType Id;
-      double GlobalId;
-    };
-    std::vector<Source> sources;
-    sources.reserve(static_cast<std::size_t>(totalPoints));
-    bool globalIds = true;
-    for (vtkPolyData* piece : used)
-    {
-      globalIds = globalIds && piece->GetPointData()->GetGlobalIds() &&
-        piece->GetPointData()->GetGlobalIds()->GetNumberOfComponents() == 1;
-    }
-    std::unordered_map<PointKey, FirstSeen, PointKeyHash> firstPoint;
-    firstPoint.reserve(static_cast<std::size_t>(totalPoints));
-    std::vector<std::vector<vtkIdType>> newId(used.size());
+    vtkNew<vtkCellArray> cells;
+    std::unordered_map<CellKey, FirstSeen, CellKeyHash> firstCell;
+    std::vector<vtkIdType> ids;
+    CellKey key;
+    CellKey reversed;
     for (std::size_t u = 0; u < used.size(); ++u)
     {
       vtkPolyData* piece = used[u];
-      vtkDataArray* ids = globalIds ? piece->GetPointData()->GetGlobalIds() : nullptr;
-      newId[u].resize(static_cast<std::size_t>(piece->GetNumberOfPoints()));
-      for (vtkIdType i = 0; i < piece->GetNumberOfPoints(); ++i)
+      // Cell ids of this kind in the piece start after those of the earlier kinds.
+      vtkIdType pieceCellId = 0;
+      for (int earlier = 0; earlier < kind; ++earlier)
       {
-        double x[3];
-        piece->GetPoint(i, x);
-        const PointKey key = { x[0] + 0.0, x[1] + 0.0, x[2] + 0.0 };
-        const bool finite = std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]);
-        auto found = finite ? firstPoint.find(key) : firstPoint.end();
-        if (found != firstPoint.end() && found->second.Piece != u)
+        pieceCellId += CellsOfKind(piece, earlier)->GetNumberOfCells();
+      }
+      vtkCellArray* pieceCells = CellsOfKind(piece, kind);
+      auto it = vtk::TakeSmartPointer(pieceCells->NewIterator());
+      for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++pieceCellId)
+      {
+        vtkIdType n;
+        const vtkIdType* pieceIds;
+        it->GetCurrentCell(n, pieceIds);
+        ids.resize(static_cast<std::size_t>(n));
+        const vtkIdType pointsInPiece = static_cast<vtkIdType>(newId[u].size());
+        for (vtkIdType k = 0; k < n; ++k)
         {
-          newId[u][static_cast<std::size_t>(i)] = found->second.Id;
-          ++sharedPoints;
+          const vtkIdType id = pieceIds[k];
+          ids[static_cast<std::size_t>(k)] =
+            (id >= 0 && id < pointsInPiece) ? newId[u][static_cast<std::size_t>(id)] : -1;
+        }
+        // An invalid id stays invalid (-1); which one it was is said here.
+        invalid.Note(n, pieceIds, pointsInPiece, pieceCellId, usedIndex[u], piece);
+        key.assign(ids.begin(), ids.end());
+        reversed.assign(ids.rbegin(), ids.rend());
+        if (reversed < key)
+        {
+          key.swap(reversed);
+        }
+        auto found = firstCell.find(key);
+        if (found != firstCell.end() && found->second.Piece != u)
+        {
+          ++sharedCells;
           continue;
         }
-        const auto id = static_cast<vtkIdType>(sources.size());
-        sources.push_back({ u, i, ids ? ids->GetComponent(i, 0) : 0.0 });
-        newId[u][static_cast<std::size_t>(i)] = id;
-        if (finite && found == firstPoint.end())
+        cells->InsertNextCell(n, ids.data());
+        outCellData->CopyData(
+          cellFields, piece->GetCellData(), static_cast<int>(u), pieceCellId, nextCellId);
+        if (found == firstCell.end())
         {
-          firstPoint.emplace(key, FirstSeen{ u, id });
+          firstCell.emplace(key, FirstSeen{ u, nextCellId });
         }
+        ++nextCellId;
       }
     }
-    std::vector<vtkIdType> order(sources.size());
-    std::iota(order.begin(), order.end(), vtkIdType(0));
-    if (globalIds)
+    if (cells->GetNumberOfCells() > 0)
     {
-      std::stable_sort(order.begin(), order.end(), [&sources](vtkIdType a, vtkIdType b) {
-        return sources[static_cast<std::size_t>(a)].GlobalId <
-          sources[static_cast<std::size_t>(b)].GlobalId;
-      });
-    }
-    std::vector<vtkIdType> finalId(sources.size());
-    vtkNew<vtkPoints> points;
-    // Float points stay float where every piece's are (exactly): the mesher
-    // allows their rounding off a tilted plane (a review: a Slice's output
-    // meshed serially, not in parallel); any float piece is noted.
-    allFloat = true;
-    for (vtkPolyData* piece : used)
-    {
-      const bool floats = piece->GetPoints() && piece->GetPoints()->GetDataType() == VTK_FLOAT;
-      anyFloat = anyFloat || floats;
-      allFloat = allFloat && floats;
-    }
-    points->SetDataType(allFloat ? VTK_FLOAT : VTK_DOUBLE);
-    points->SetNumberOfPoints(static_cast<vtkIdType>(sources.size()));
-    // Each point and cell is copied once, so global ids keep their meaning
-    // (vtkDataSetAttributes leaves them out by default).
-    vtkPointData* outPointData = combined->GetPointData();
-    outPointData->CopyGlobalIdsOn();
-    outPointData->CopyAllocate(pointFields, static_cast<vtkIdType>(sources.size()));
-    for (std::size_t k = 0; k < order.size(); ++k)
-    {
-      const Source& source = sources[static_cast<std::size_t>(order[k])];
-      finalId[static_cast<std::size_t>(order[k])] = static_cast<vtkIdType>(k);
-      double x[3];
-      used[source.Piece]->GetPoint(source.Id, x);
-      points->SetPoint(static_cast<vtkIdType>(k), x);
-      outPointData->CopyData(pointFields, used[source.Piece]->GetPointData(),
-        static_cast<int>(source.Piece), source.Id, static_cast<vtkIdType>(k));
-    }
-    for (auto& pieceIds : newId)
-    {
-      for (vtkIdType& id : pieceIds)
+      // The serial filter's storage (32-bit when the ids fit), so that the
+      // gathered output is the serial one to the byte when written.
+      if (cells->CanConvertTo32BitStorage())
       {
-        id = finalId[static_cast<std::size_t>(id)];
+        cells->ConvertTo32BitStorage();
       }
-    }
-    combined->SetPoints(points);
-
-    // Cells, kind by kind (verts, lines, polys, strips: vtkPolyData's cell id order),
-    // each piece in turn; a cell equal to one of an earlier piece is that cell.
-    vtkCellData* outCellData = combined->GetCellData();
-    outCellData->CopyGlobalIdsOn();
-    outCellData->CopyAllocate(cellFields, totalCells);
-    vtkIdType nextCellId = 0;
-    for (int kind = 0; kind < 4; ++kind)
-    {
-      vtkNew<vtkCellArray> cells;
-      std::unordered_map<CellKey, FirstSeen, CellKeyHash> firstCell;
-      std::vector<vtkIdType> ids;
-      CellKey key;
-      CellKey reversed;
-      for (std::size_t u = 0; u < used.size(); ++u)
-      {
-        vtkPolyData* piece = used[u];
-        // Cell ids of this kind in the piece start after those of the earlier kinds.
-        vtkIdType pieceCellId = 0;
-        for (int earlier = 0; earlier < kind; ++earlier)
-        {
-          pieceCellId += CellsOfKind(piece, earlier)->GetNumberOfCells();
-        }
-        vtkCellArray* pieceCells = CellsOfKind(piece, kind);
-        auto it = vtk::TakeSmartPointer(pieceCells->NewIterator());
-        for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++pieceCellId)
-        {
-          vtkIdType n;
-          const vtkIdType* pieceIds;
-          it->GetCurrentCell(n, pieceIds);
-          ids.resize(static_cast<std::size_t>(n));
-          const vtkIdType pointsInPiece = static_cast<vtkIdType>(newId[u].size());
-          for (vtkIdType k = 0; k < n; ++k)
-          {
-            const vtkIdType id = pieceIds[k];
-            ids[static_cast<std::size_t>(k)] =
-              (id >= 0 && id < pointsInPiece) ? newId[u][static_cast<std::size_t>(id)] : -1;
-          }
-          // An invalid id stays invalid (-1); which one it was is said here.
-          invalid.Note(n, pieceIds, pointsInPiece, pieceCellId, usedIndex[u], piece);
-          key.assign(ids.begin(), ids.end());
-          reversed.assign(ids.rbegin(), ids.rend());
-          if (reversed < key)
-          {
-            key.swap(reversed);
-          }
-          auto found = firstCell.find(key);
-          if (found != firstCell.end() && found->second.Piece != u)
-          {
-            ++sharedCells;
-            continue;
-          }
-          cells->InsertNextCell(n, ids.data());
-          outCellData->CopyData(
-            cellFields, piece->GetCellData(), static_cast<int>(u), pieceCellId, nextCellId);
-          if (found == firstCell.end())
-          {
-            firstCell.emplace(key, FirstSeen{ u, nextCellId });
-          }
-          ++nextCellId;
-        }
-      }
-      if (cells->GetNumberOfCells() > 0)
-      {
-        // The serial filter's storage (32-bit when the ids fit), so that the
-        // gathered output is the serial one to the byte when written.
-        if (cells->CanConvertTo32BitStorage())
-        {
-          cells->ConvertTo32BitStorage();
-        }
-        SetCellsOfKind(combined, kind, cells);
-      }
+      SetCellsOfKind(combined, kind, cells);
     }
   }
+}
 
-  // Field data: the first array of each name, except the hole seeds, which are
-  // gathered from every piece (empty pieces included) and deduplicated.
-  // The seeds' array takes its place among the others when first seen, and
-  // its values at the end: the order of a serial run's input.
-  std::vector<HoleSeed> seeds;
-  std::set<HoleSeed> seenSeeds;
-  bool anyHoles = false;
-  vtkNew<vtkDoubleArray> holes;
-  holes->SetName(HolePointsName);
-  vtkFieldData* outField = combined->GetFieldData();
-  vtkIdType ignoredCells = 0;
-  // The refused pieces' block ids (-1 where not a block's), and how
-  // messages name the first.
-  std::vector<vtkIdType> refused;
-  std::string firstMalformed;
-  for (std::size_t p = 0; p < pieces.size(); ++p)
+/// Field data: the first array of each name, except the hole seeds, which are
+/// gathered from every piece (empty pieces included) and deduplicated. The
+/// seeds' array takes its place among the others when first seen, and its
+/// values at the end: the order of a serial run's input. The marks (ignored
+/// cells, float points, refused pieces) are summed up.
+void PieceCombination::MergeFieldData()
+{
+  vtkFieldData* outField = this->Combined->GetFieldData();
+  for (std::size_t p = 0; p < this->Pieces.size(); ++p)
   {
-    vtkDataObject* piece = pieces[p];
+    vtkDataObject* piece = this->Pieces[p];
     vtkFieldData* field = piece ? piece->GetFieldData() : nullptr;
     if (!field)
     {
       continue;
     }
-    ignoredCells += OverlayStitchIgnoredCells(piece);
-    anyFloat = anyFloat || field->GetArray(OverlayStitchFloatPointsName);
-    if (vtkDataArray* marks = field->GetArray(OverlayStitchMalformedName))
-    {
-      // A block's own id is in its field data alone (a rank's combination of
-      // blocks carries each refused one's in its marks: its cells' ids are
-      // those of the blocks that were not refused, a review).
-      auto* ownIds =
-        vtkIdTypeArray::SafeDownCast(field->GetAbstractArray(OverlayStitchBlockIdName));
-      const vtkIdType own = ownIds && ownIds->GetNumberOfTuples() > 0 ? ownIds->GetValue(0) : -1;
-      const bool ranks = std::strcmp(pieceName, "rank") == 0;
-      for (vtkIdType m = 0; m < marks->GetNumberOfTuples(); ++m)
-      {
-        const auto mark = static_cast<vtkIdType>(marks->GetComponent(m, 0));
-        const vtkIdType block = mark >= 0 ? mark : own;
-        refused.push_back(block);
-        if (firstMalformed.empty())
-        {
-          firstMalformed = block < 0 ? "the piece of " + PieceLabel(pieceName, p)
-            : ranks ? "block " + std::to_string(block) + " on rank " + std::to_string(p)
-                    : "block " + std::to_string(block);
-        }
-      }
-    }
+    this->IgnoredCells += OverlayStitchIgnoredCells(piece);
+    this->AnyFloat = this->AnyFloat || field->GetArray(OverlayStitchFloatPointsName);
+    this->NoteRefused(field, p);
     if (vtkAbstractArray* array = field->GetAbstractArray(HolePointsName))
     {
-      anyHoles = true;
-      if (!CollectHolePoints(field, seeds, seenSeeds))
+      this->AnyHoles = true;
+      if (!CollectHolePoints(field, this->Seeds, this->SeenSeeds))
       {
         auto* polyData = vtkPolyData::SafeDownCast(piece);
-        notes.push_back({ { "field", HolePointsName },
+        this->Notes.push_back({ { "field", HolePointsName },
           "The field data array HolePoints of " +
-            (polyData ? PieceLabel(polyData, pieceName, p) : PieceLabel(pieceName, p)) + " has " +
-            std::to_string(array->GetNumberOfComponents()) +
+            (polyData ? PieceLabel(polyData, this->PieceName, p) : PieceLabel(this->PieceName, p)) +
+            " has " + std::to_string(array->GetNumberOfComponents()) +
             " components (2 or 3 expected: x, y and perhaps z): ignored." });
       }
     }
@@ -1052,67 +1111,96 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
       const char* name = array ? array->GetName() : nullptr;
       if (name && !outField->GetAbstractArray(name) && !OverlayStitchIsInternalName(name))
       {
-        outField->AddArray(std::strcmp(name, HolePointsName) == 0 ? holes.Get() : array);
+        outField->AddArray(std::strcmp(name, HolePointsName) == 0 ? this->Holes.Get() : array);
       }
     }
   }
-  if (ignoredCells > 0)
+  if (this->IgnoredCells > 0)
   {
-    outField->AddArray(IdArray(OverlayStitchIgnoredCellsName, 1, ignoredCells)); // the sum
+    outField->AddArray(IdArray(OverlayStitchIgnoredCellsName, 1, this->IgnoredCells)); // the sum
   }
-  if (anyFloat && !allFloat)
+  if (this->AnyFloat && !this->AllFloat)
   {
     // Float points among double ones: said to the rank that combines this
     // combination with others (the point type cannot say it).
     outField->AddArray(IdArray(OverlayStitchFloatPointsName, 1, 1));
   }
-  if (!refused.empty())
+  if (!this->Refused.empty())
   {
-    auto marks = IdArray(OverlayStitchMalformedName, static_cast<vtkIdType>(refused.size()), -1);
-    std::copy(refused.begin(), refused.end(), marks->GetPointer(0));
+    auto marks =
+      IdArray(OverlayStitchMalformedName, static_cast<vtkIdType>(this->Refused.size()), -1);
+    std::copy(this->Refused.begin(), this->Refused.end(), marks->GetPointer(0));
     outField->AddArray(marks);
   }
-  if (anyHoles)
+  if (this->AnyHoles)
   {
-    // (x, y) seeds stay so, to be lifted onto the input's plane along z, as in
-    // a serial run (a review: taken as (x, y, 0), they were projected across
-    // a tilted plane); beside (x, y, z) seeds they can only be taken at z 0.
-    const auto xy =
-      std::count_if(seeds.begin(), seeds.end(), [](const HoleSeed& h) { return h.XY; });
-    const int components = xy > 0 && xy == static_cast<std::ptrdiff_t>(seeds.size()) ? 2 : 3;
-    if (xy > 0 && components == 3)
-    {
-      notes.push_back({ { "field", HolePointsName },
-        "The field data arrays HolePoints give " + std::to_string(xy) +
-          " seed(s) as (x, y) and others as (x, y, z): the (x, y) ones are taken at z = 0." });
-      // Taken so, an (x, y) seed may repeat another piece's (x, y, 0).
-      std::set<std::array<double, 3>> at;
-      seeds.erase(std::remove_if(seeds.begin(), seeds.end(),
-                    [&at](const HoleSeed& h) { return IsFinite(h.At) && !at.insert(h.At).second; }),
-        seeds.end());
-    }
-    holes->SetNumberOfComponents(components);
-    holes->SetNumberOfTuples(static_cast<vtkIdType>(seeds.size()));
-    for (std::size_t s = 0; s < seeds.size(); ++s)
-    {
-      holes->SetTypedTuple(static_cast<vtkIdType>(s), seeds[s].At.data());
-    }
+    this->SetHoleSeeds();
   }
+}
 
-  if (summary)
+/// The refused pieces among the marks of a piece's field data.
+void PieceCombination::NoteRefused(vtkFieldData* field, std::size_t p)
+{
+  vtkDataArray* marks = field->GetArray(OverlayStitchMalformedName);
+  if (!marks)
   {
-    NoteArraysLeftOut(used, combined, summary->ArraysLeftOut);
-    summary->NotCarried = notes;
-    summary->SharedPointsMerged = sharedPoints;
-    summary->SharedCellsDropped = sharedCells;
-    summary->HolePoints = static_cast<vtkIdType>(seeds.size());
-    summary->FloatPoints = anyFloat;
-    summary->MalformedPieces = static_cast<vtkIdType>(refused.size());
-    summary->FirstMalformedPiece = firstMalformed;
-    summary->InvalidCells = invalid.Count;
-    summary->FirstInvalidCell = invalid.First;
+    return;
   }
-  return combined;
+  // A block's own id is in its field data alone (a rank's combination of
+  // blocks carries each refused one's in its marks: its cells' ids are those
+  // of the blocks that were not refused, a review).
+  auto* ownIds = vtkIdTypeArray::SafeDownCast(field->GetAbstractArray(OverlayStitchBlockIdName));
+  const vtkIdType own = ownIds && ownIds->GetNumberOfTuples() > 0 ? ownIds->GetValue(0) : -1;
+  const bool ranks = std::strcmp(this->PieceName, "rank") == 0;
+  for (vtkIdType m = 0; m < marks->GetNumberOfTuples(); ++m)
+  {
+    const auto mark = static_cast<vtkIdType>(marks->GetComponent(m, 0));
+    const vtkIdType block = mark >= 0 ? mark : own;
+    this->Refused.push_back(block);
+    if (this->FirstRefused.empty())
+    {
+      this->FirstRefused = block < 0 ? "the piece of " + PieceLabel(this->PieceName, p)
+        : ranks ? "block " + std::to_string(block) + " on rank " + std::to_string(p)
+                : "block " + std::to_string(block);
+    }
+  }
+}
+
+/// The hole seeds gathered, into the combination's HolePoints. (x, y) seeds
+/// stay so, to be lifted onto the input's plane along z, as in a serial run
+/// (a review: taken as (x, y, 0), they were projected across a tilted plane);
+/// beside (x, y, z) seeds they can only be taken at z 0.
+void PieceCombination::SetHoleSeeds()
+{
+  std::vector<HoleSeed>& seeds = this->Seeds;
+  const auto xy = std::count_if(seeds.begin(), seeds.end(), [](const HoleSeed& h) { return h.XY; });
+  const int components = xy > 0 && xy == static_cast<std::ptrdiff_t>(seeds.size()) ? 2 : 3;
+  if (xy > 0 && components == 3)
+  {
+    this->Notes.push_back({ { "field", HolePointsName },
+      "The field data arrays HolePoints give " + std::to_string(xy) +
+        " seed(s) as (x, y) and others as (x, y, z): the (x, y) ones are taken at z = 0." });
+    // Taken so, an (x, y) seed may repeat another piece's (x, y, 0).
+    std::set<std::array<double, 3>> at;
+    seeds.erase(std::remove_if(seeds.begin(), seeds.end(),
+                  [&at](const HoleSeed& h) { return IsFinite(h.At) && !at.insert(h.At).second; }),
+      seeds.end());
+  }
+  this->Holes->SetNumberOfComponents(components);
+  this->Holes->SetNumberOfTuples(static_cast<vtkIdType>(seeds.size()));
+  for (std::size_t s = 0; s < seeds.size(); ++s)
+  {
+    this->Holes->SetTypedTuple(static_cast<vtkIdType>(s), seeds[s].At.data());
+  }
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
+  const std::vector<vtkSmartPointer<vtkDataObject>>& pieces, OverlayStitchGatherSummary* summary,
+  const char* pieceName)
+{
+  return PieceCombination(pieces, pieceName).Combine(summary);
 }
 
 //------------------------------------------------------------------------------
