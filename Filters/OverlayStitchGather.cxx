@@ -758,7 +758,8 @@ void OverlayStitchToSourceIds(vtkDataSetAttributes* in, const char* sourceIdName
 //------------------------------------------------------------------------------
 namespace
 {
-/// One combination of pieces (OverlayStitchCombinePieces), step by step.
+/// One combination of pieces (OverlayStitchCombinePieces), step by step;
+/// single use: Combine() once.
 class PieceCombination
 {
 public:
