@@ -758,6 +758,30 @@ void OverlayStitchToSourceIds(vtkDataSetAttributes* in, const char* sourceIdName
 //------------------------------------------------------------------------------
 namespace
 {
+/// The point (or cell) arrays common to every piece of used, with the same
+/// type and components, into fields; returns the pieces' points (or cells).
+vtkIdType CommonFields(
+  const std::vector<vtkPolyData*>& used, bool cells, vtkDataSetAttributes::FieldList& fields)
+{
+  vtkIdType total = 0;
+  for (std::size_t u = 0; u < used.size(); ++u)
+  {
+    vtkDataSetAttributes* data = cells
+      ? static_cast<vtkDataSetAttributes*>(used[u]->GetCellData())
+      : static_cast<vtkDataSetAttributes*>(used[u]->GetPointData());
+    if (u == 0)
+    {
+      fields.InitializeFieldList(data);
+    }
+    else
+    {
+      fields.IntersectFieldList(data);
+    }
+    total += cells ? used[u]->GetNumberOfCells() : used[u]->GetNumberOfPoints();
+  }
+  return total;
+}
+
 /// One combination of pieces (OverlayStitchCombinePieces), step by step;
 /// single use: Combine() once.
 class PieceCombination
@@ -864,19 +888,7 @@ void PieceCombination::MergePoints()
 {
   const std::vector<vtkPolyData*>& used = this->Used;
   vtkDataSetAttributes::FieldList pointFields(static_cast<int>(used.size()));
-  vtkIdType totalPoints = 0;
-  for (std::size_t u = 0; u < used.size(); ++u)
-  {
-    if (u == 0)
-    {
-      pointFields.InitializeFieldList(used[u]->GetPointData());
-    }
-    else
-    {
-      pointFields.IntersectFieldList(used[u]->GetPointData());
-    }
-    totalPoints += used[u]->GetNumberOfPoints();
-  }
+  const vtkIdType totalPoints = CommonFields(used, false, pointFields);
   vtkPolyData* combined = this->Combined;
   std::vector<std::vector<vtkIdType>>& newId = this->NewId;
   vtkIdType& sharedPoints = this->SharedPoints;
@@ -985,19 +997,7 @@ void PieceCombination::MergeCells()
   const std::vector<vtkPolyData*>& used = this->Used;
   const std::vector<std::size_t>& usedIndex = this->UsedIndex;
   vtkDataSetAttributes::FieldList cellFields(static_cast<int>(used.size()));
-  vtkIdType totalCells = 0;
-  for (std::size_t u = 0; u < used.size(); ++u)
-  {
-    if (u == 0)
-    {
-      cellFields.InitializeFieldList(used[u]->GetCellData());
-    }
-    else
-    {
-      cellFields.IntersectFieldList(used[u]->GetCellData());
-    }
-    totalCells += used[u]->GetNumberOfCells();
-  }
+  const vtkIdType totalCells = CommonFields(used, true, cellFields);
   vtkPolyData* combined = this->Combined;
   const std::vector<std::vector<vtkIdType>>& newId = this->NewId;
   vtkIdType& sharedCells = this->SharedCells;

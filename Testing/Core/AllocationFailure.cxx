@@ -10,102 +10,13 @@
 // It is its own executable because the replacement applies to the whole
 // program.
 
+#include "FailingAllocation.h"
 #include "Mesher.h"
 
 #include <gtest/gtest.h>
 
-#include <atomic>
-#include <cstdlib>
-#include <new>
 #include <random>
 #include <string>
-
-namespace
-{
-
-/// Only allocations of at least this size count: the mesher's arrays, not
-/// the small strings and scratch of its bookkeeping.
-constexpr std::size_t kLarge = 16 * 1024;
-
-std::atomic<bool> counting{ false };
-std::atomic<long> largeSeen{ 0 };
-std::atomic<long> failAt{ -1 };
-
-void failIfChosen(std::size_t n)
-{
-  if (n >= kLarge && counting.load() && largeSeen.fetch_add(1) == failAt.load())
-    throw std::bad_alloc();
-}
-
-void* allocate(std::size_t n)
-{
-  failIfChosen(n);
-  if (void* p = std::malloc(n == 0 ? 1 : n))
-    return p;
-  throw std::bad_alloc();
-}
-
-/// Over-aligned types (the triangulation's 32-byte slots) come here.
-void* allocateAligned(std::size_t n, std::align_val_t alignment)
-{
-  failIfChosen(n);
-  const std::size_t a = static_cast<std::size_t>(alignment);
-  // aligned_alloc wants a size that is a multiple of the alignment.
-  if (void* p = std::aligned_alloc(a, (n + a - 1) / a * a + (n == 0 ? a : 0)))
-    return p;
-  throw std::bad_alloc();
-}
-
-} // namespace
-
-void* operator new(std::size_t n)
-{
-  return allocate(n);
-}
-void* operator new[](std::size_t n)
-{
-  return allocate(n);
-}
-void* operator new(std::size_t n, std::align_val_t a)
-{
-  return allocateAligned(n, a);
-}
-void* operator new[](std::size_t n, std::align_val_t a)
-{
-  return allocateAligned(n, a);
-}
-void operator delete(void* p, std::align_val_t) noexcept
-{
-  std::free(p);
-}
-void operator delete[](void* p, std::align_val_t) noexcept
-{
-  std::free(p);
-}
-void operator delete(void* p, std::size_t, std::align_val_t) noexcept
-{
-  std::free(p);
-}
-void operator delete[](void* p, std::size_t, std::align_val_t) noexcept
-{
-  std::free(p);
-}
-void operator delete(void* p) noexcept
-{
-  std::free(p);
-}
-void operator delete[](void* p) noexcept
-{
-  std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept
-{
-  std::free(p);
-}
-void operator delete[](void* p, std::size_t) noexcept
-{
-  std::free(p);
-}
 
 namespace osm
 {
@@ -131,12 +42,9 @@ Pslg squareWithHole()
 /// number of large allocations made.
 long meshFailingAt(const Pslg& in, long k, Result& r)
 {
-  largeSeen = 0;
-  failAt = k;
-  counting = true;
+  failing_allocation::start(k);
   r = mesh(in, Options{});
-  counting = false;
-  return largeSeen.load();
+  return failing_allocation::stop();
 }
 
 bool sameMesh(const Result& a, const Result& b)

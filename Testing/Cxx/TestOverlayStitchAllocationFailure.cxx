@@ -13,6 +13,7 @@
 // does not fail: a VTK array the filter cannot size is checked in the
 // filter (Allocate) but not reached here.
 
+#include "FailingAllocation.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -29,52 +30,11 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 
-#include <atomic>
-#include <cstdlib>
 #include <iostream>
-#include <new>
 #include <string>
 
 namespace
 {
-
-/// Only allocations of at least this size count: arrays, not the small
-/// strings and bookkeeping of VTK's pipeline.
-constexpr std::size_t kLarge = 16 * 1024;
-
-std::atomic<bool> counting{ false };
-std::atomic<long> largeSeen{ 0 };
-std::atomic<long> failAt{ -1 };
-
-void failIfChosen(std::size_t n)
-{
-  if (n >= kLarge && counting.load() && largeSeen.fetch_add(1) == failAt.load())
-  {
-    throw std::bad_alloc();
-  }
-}
-
-void* allocate(std::size_t n)
-{
-  failIfChosen(n);
-  if (void* p = std::malloc(n == 0 ? 1 : n))
-  {
-    return p;
-  }
-  throw std::bad_alloc();
-}
-
-void* allocateAligned(std::size_t n, std::align_val_t alignment)
-{
-  failIfChosen(n);
-  const std::size_t a = static_cast<std::size_t>(alignment);
-  // aligned_alloc wants a size that is a multiple of the alignment.
-  if (void* p = std::aligned_alloc(a, (n + a - 1) / a * a + (n == 0 ? a : 0)))
-  {
-    return p;
-  }
-  throw std::bad_alloc();
-}
 
 /// A grid of k x k unit squares as line cells, with a point scalar and a
 /// cell scalar to carry: about 2k^2 segments, 8k^2 output triangles.
@@ -144,9 +104,7 @@ Outcome Run(vtkPolyData* input, long failure)
   onError->SetClientData(&outcome.errors);
   mesher->AddObserver(vtkCommand::ErrorEvent, onError);
   mesher->AddObserver(vtkCommand::WarningEvent, vtkNew<vtkCallbackCommand>()); // quiet
-  largeSeen = 0;
-  failAt = failure;
-  counting = true;
+  failing_allocation::start(failure);
   try
   {
     outcome.status = mesher->GetExecutive()->Update();
@@ -155,7 +113,7 @@ Outcome Run(vtkPolyData* input, long failure)
   {
     outcome.escaped = true;
   }
-  counting = false;
+  failing_allocation::stop();
   outcome.triangles = mesher->GetOutput()->GetNumberOfCells();
   outcome.points = mesher->GetOutput()->GetNumberOfPoints();
   outcome.edges = mesher->GetEdgesOutput()->GetNumberOfCells();
@@ -165,55 +123,6 @@ Outcome Run(vtkPolyData* input, long failure)
 
 } // namespace
 
-void* operator new(std::size_t n)
-{
-  return allocate(n);
-}
-void* operator new[](std::size_t n)
-{
-  return allocate(n);
-}
-void* operator new(std::size_t n, std::align_val_t a)
-{
-  return allocateAligned(n, a);
-}
-void* operator new[](std::size_t n, std::align_val_t a)
-{
-  return allocateAligned(n, a);
-}
-void operator delete(void* p) noexcept
-{
-  std::free(p);
-}
-void operator delete[](void* p) noexcept
-{
-  std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept
-{
-  std::free(p);
-}
-void operator delete[](void* p, std::size_t) noexcept
-{
-  std::free(p);
-}
-void operator delete(void* p, std::align_val_t) noexcept
-{
-  std::free(p);
-}
-void operator delete[](void* p, std::align_val_t) noexcept
-{
-  std::free(p);
-}
-void operator delete(void* p, std::size_t, std::align_val_t) noexcept
-{
-  std::free(p);
-}
-void operator delete[](void* p, std::size_t, std::align_val_t) noexcept
-{
-  std::free(p);
-}
-
 int main()
 {
   // The executive's reports of the injected failures are expected: not shown
@@ -222,7 +131,7 @@ int main()
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
   vtkNew<vtkPolyData> input = GridOfSquares(40);
   const Outcome clean = Run(input, -1);
-  const long large = largeSeen.load();
+  const long large = failing_allocation::largeSeen.load();
   int failed = 0;
   auto check = [&failed](bool ok, const std::string& what) {
     if (!ok)

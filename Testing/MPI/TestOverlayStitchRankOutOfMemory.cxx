@@ -4,6 +4,7 @@
 // in the gather for ever (a review; the test's time limit catches that).
 // Now rank 1 gathers a refused piece: both ranks return, with empty outputs,
 // and rank 0 says which rank refused its piece.
+#include "FailingAllocation.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
 #include "vtkCommand.h"
@@ -15,29 +16,11 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 
-#include <atomic>
-#include <cstdlib>
 #include <iostream>
-#include <new>
 #include <string>
 
 namespace
 {
-
-std::atomic<bool> failNextLarge{ false };
-
-void* allocate(std::size_t n)
-{
-  if (n >= 16 * 1024 && failNextLarge.exchange(false))
-  {
-    throw std::bad_alloc();
-  }
-  if (void* p = std::malloc(n == 0 ? 1 : n))
-  {
-    return p;
-  }
-  throw std::bad_alloc();
-}
 
 /// A zigzag line of n points at height y.
 vtkNew<vtkPolyData> Zigzag(int n, double y)
@@ -65,31 +48,6 @@ void CollectError(vtkObject*, unsigned long, void* clientData, void* callData)
 }
 
 } // namespace
-
-void* operator new(std::size_t n)
-{
-  return allocate(n);
-}
-void* operator new[](std::size_t n)
-{
-  return allocate(n);
-}
-void operator delete(void* p) noexcept
-{
-  std::free(p);
-}
-void operator delete[](void* p) noexcept
-{
-  std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept
-{
-  std::free(p);
-}
-void operator delete[](void* p, std::size_t) noexcept
-{
-  std::free(p);
-}
 
 int main(int argc, char* argv[])
 {
@@ -119,9 +77,9 @@ int main(int argc, char* argv[])
     onError->SetCallback(CollectError);
     onError->SetClientData(&errors);
     mesher->AddObserver(vtkCommand::ErrorEvent, onError);
-    failNextLarge = rank == 1;
+    failing_allocation::start(rank == 1 ? 0 : -1); // rank 1's first large one fails
     mesher->Update();
-    failNextLarge = false;
+    failing_allocation::stop();
     const std::string expected =
       rank == 1 ? "out of memory while reading it" : "the piece of rank 1 was refused on its rank";
     auto check = [&](bool ok, const std::string& what) {
