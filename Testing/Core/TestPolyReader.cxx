@@ -1,6 +1,7 @@
 // Tests of the Triangle .poly/.node reader: inline texts for every feature and every
 // error path (with the exact line reported), then the real files in ../shared/data/pslg.
 #include "PolyReader.h"
+#include "SharedData.h"
 
 #include <gtest/gtest.h>
 
@@ -11,10 +12,6 @@
 #include <random>
 #include <sstream>
 #include <string>
-
-#ifndef OSM_SHARED_DATA_DIR
-#define OSM_SHARED_DATA_DIR "" // no data folder known: the real-data tests skip
-#endif
 
 using namespace osm;
 namespace fs = std::filesystem;
@@ -613,25 +610,24 @@ class PolyReaderData : public ::testing::Test
 protected:
   void SetUp() override
   {
-    if (!fs::is_directory(dir()))
-      GTEST_SKIP() << "shared PSLG data folder not found at '" << dir().string()
-                   << "'; real-data reader tests skipped";
+    // The tests below read these by name.
+    for (const char* name : { "la.poly", "A.poly", "face.poly", "aust.poly" })
+      if (!fs::is_regular_file(dir() / name))
+        GTEST_SKIP() << "no " << name << " in " << dir() << "; real-data reader tests skipped";
   }
-  static fs::path dir() { return fs::path(OSM_SHARED_DATA_DIR); }
+  static fs::path dir() { return shared_data::folder(); }
   static PolyFile read(const std::string& name) { return readPolyFile((dir() / name).string()); }
 };
 
 TEST_F(PolyReaderData, EveryPolyFileParses)
 {
   std::size_t count = 0;
-  for (const auto& entry : fs::directory_iterator(dir()))
+  for (const fs::path& file : shared_data::polyFiles())
   {
-    if (entry.path().extension() != ".poly")
-      continue;
     ++count;
-    const PolyFile f = readPolyFile(entry.path().string());
+    const PolyFile f = readPolyFile(file.string());
     EXPECT_TRUE(f.ok) << f.error;
-    EXPECT_GT(f.pslg.points.size(), 0u) << entry.path();
+    EXPECT_GT(f.pslg.points.size(), 0u) << file;
   }
   EXPECT_GT(count, 0u) << "no .poly files in " << dir();
 }

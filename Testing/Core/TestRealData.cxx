@@ -2,6 +2,7 @@
 // Skips cleanly where the folder is absent (a user's clone has no ../shared).
 #include "MeshTestUtils.h"
 #include "PolyReader.h"
+#include "SharedData.h"
 
 #include <chrono>
 #include <cstdio>
@@ -12,15 +13,9 @@ namespace fs = std::filesystem;
 
 TEST(RealData, EveryPolyFileMeshesWithinTheBound)
 {
-  const fs::path dir(OSM_SHARED_DATA_DIR);
-  if (!fs::is_directory(dir))
-    GTEST_SKIP() << "no shared data folder at " << dir;
-  std::vector<fs::path> files;
-  for (const auto& entry : fs::directory_iterator(dir))
-    if (entry.path().extension() == ".poly")
-      files.push_back(entry.path());
-  std::sort(files.begin(), files.end());
-  ASSERT_FALSE(files.empty());
+  const std::vector<fs::path> files = shared_data::polyFiles();
+  if (files.empty())
+    GTEST_SKIP() << "no .poly file in " << shared_data::folder();
   std::printf("%-26s %9s %9s %9s %9s %8s %5s %8s\n", "input", "in.verts", "verts", "triangles",
     "min.angle", "max.angle", "face", "seconds");
   for (const fs::path& f : files)
@@ -41,15 +36,13 @@ TEST(RealData, MaximumEdgeLengthHoldsOnEveryEdge)
 {
   // A bound of 1/250 of the input's extent: completion's diagonals exceed it
   // on most of these inputs (by up to 8%) and are split.
-  const fs::path dir(OSM_SHARED_DATA_DIR);
-  if (!fs::is_directory(dir))
-    GTEST_SKIP() << "no shared data folder at " << dir;
+  const std::vector<fs::path> files = shared_data::polyFiles();
+  if (files.empty())
+    GTEST_SKIP() << "no .poly file in " << shared_data::folder();
   std::size_t split = 0;
-  for (const auto& entry : fs::directory_iterator(dir))
+  for (const fs::path& file : files)
   {
-    if (entry.path().extension() != ".poly")
-      continue;
-    const PolyFile poly = readPolyFile(entry.path().string());
+    const PolyFile poly = readPolyFile(file.string());
     ASSERT_TRUE(poly.ok) << poly.error;
     const Pslg& p = poly.pslg;
     double lx = p.points[0].x, hx = lx, ly = p.points[0].y, hy = ly;
@@ -59,7 +52,7 @@ TEST(RealData, MaximumEdgeLengthHoldsOnEveryEdge)
     Options o;
     o.maxEdgeLength = std::max(hx - lx, hy - ly) / 250;
     // The validator checks every edge against the bound.
-    const Result r = meshAndValidate(p, entry.path().filename().string(), o);
+    const Result r = meshAndValidate(p, file.filename().string(), o);
     split += r.stats.longEdgesSplit;
   }
   EXPECT_GT(split, 0u);
