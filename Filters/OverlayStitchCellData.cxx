@@ -16,10 +16,13 @@
 #include "OverlayStitchArrays.h"
 #include "OverlayStitchGather.h"
 #include "OverlayStitchMarkers.h"
+#include "Plane.h"
 #include "Pslg.h"
 #include "RegionPolygons.h"
 #include "TriangleMarkers.h"
 
+#include <algorithm>
+#include <cstdio>
 #include <functional>
 #include <limits>
 #include <utility>
@@ -175,9 +178,72 @@ bool OverlayStitchPassCellData(vtkCellData* in, vtkIdType inputCells, const osm:
   return true;
 }
 
+namespace
+{
+
+/// Input made of polygons alone is a surface: a region that no polygon holds
+/// (a hole in it, or the space between its parts) is meshed all the same, as
+/// the domain's rules say, but hardly what the user meant; says where.
+void NoteRegionsOutsidePolygons(const osm::Result& result, const std::vector<int>& polygonOf,
+  const osm::PlaneMap& map, std::vector<std::string>& warnings)
+{
+  const auto& points = result.mesh.vertices;
+  auto area = [&points](const osm::Triangle& t) {
+    const osm::Point &a = points[t[0]], &b = points[t[1]], &c = points[t[2]];
+    return 0.5 * ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+  };
+  std::vector<double> largest(polygonOf.size(), -1.0); // per region outside every polygon
+  std::vector<std::size_t> largestAt(polygonOf.size(), 0);
+  double outside = 0.0, all = 0.0;
+  for (std::size_t t = 0; t < result.mesh.triangles.size(); ++t)
+  {
+    const double a = area(result.mesh.triangles[t]);
+    all += a;
+    const int r = t < result.regionId.size() ? result.regionId[t] : -1;
+    if (r < 0 || polygonOf[static_cast<std::size_t>(r)] >= 0)
+    {
+      continue;
+    }
+    outside += a;
+    if (a > largest[static_cast<std::size_t>(r)])
+    {
+      largest[static_cast<std::size_t>(r)] = a;
+      largestAt[static_cast<std::size_t>(r)] = t;
+    }
+  }
+  const auto regions =
+    std::count_if(largest.begin(), largest.end(), [](double a) { return a >= 0; });
+  if (regions == 0)
+  {
+    return;
+  }
+  // The centroid of the example region's largest triangle lies well inside it.
+  const std::size_t r =
+    std::find_if(largest.begin(), largest.end(), [](double a) { return a >= 0; }) - largest.begin();
+  const osm::Triangle& t = result.mesh.triangles[largestAt[r]];
+  const osm::Point c{ (points[t[0]].x + points[t[1]].x + points[t[2]].x) / 3,
+    (points[t[0]].y + points[t[1]].y + points[t[2]].y) / 3 };
+  const osm::Vec3 seed = map.toSpace(c);
+  char text[400];
+  std::snprintf(text, sizeof text,
+    "%lld region(s) of the mesh lie in no input polygon (holes in the polygons, or space their "
+    "edges enclose between them), area %.6g of the mesh's %.6g: they are meshed, with InputCellId "
+    "-1. To leave them out, give a hole point (HolePoints) in each, e.g. (%.9g, %.9g%s",
+    static_cast<long long>(regions), outside, all, seed.x, seed.y, map.isFitted() ? ", " : ")");
+  std::string warning = text;
+  if (map.isFitted())
+  {
+    std::snprintf(text, sizeof text, "%.9g)", seed.z);
+    warning += text;
+  }
+  warnings.push_back(warning + " for region " + std::to_string(r) + " (RegionId)");
+}
+
+} // namespace
+
 bool OverlayStitchPassPolygonData(vtkPolyData* input, const osm::Pslg& pslg,
-  const osm::Result& result, const std::vector<std::string>& reserved, vtkCellData* out,
-  const Poll& poll, std::vector<std::string>& warnings)
+  const osm::Result& result, const osm::PlaneMap& map, const std::vector<std::string>& reserved,
+  vtkCellData* out, const Poll& poll, std::vector<std::string>& warnings)
 {
   if (!input->GetPolys() || input->GetPolys()->GetNumberOfCells() == 0)
   {
@@ -206,6 +272,10 @@ bool OverlayStitchPassPolygonData(vtkPolyData* input, const osm::Pslg& pslg,
     {
       fromCells.push_back(t);
     }
+  }
+  if (!input->GetLines() || input->GetLines()->GetNumberOfCells() == 0)
+  {
+    NoteRegionsOutsidePolygons(result, polygonOf, map, warnings);
   }
   CarriedArrays carried;
   return Carry(input->GetCellData(), input->GetNumberOfCells(), cellIds, fromCells, reserved,

@@ -42,6 +42,7 @@
 #include "OverlayStitchPointData.h"
 #include "OverlayStitchUnstructured.h"
 #include "Plane.h"
+#include "Predicates.h"
 #include "Pslg.h"
 #include "RunContext.h"
 #include "Statistics.h"
@@ -223,6 +224,17 @@ struct IgnoredCells
 };
 
 /// Reads the input's points. Returns an error message, or "" on success.
+/// Whether the points lie on one line (exactly, or all one point).
+bool OnOneLine(const osm::Array<osm::Point>& points)
+{
+  const auto other = std::find_if(
+    points.begin(), points.end(), [&points](const osm::Point& p) { return p != points.front(); });
+  return other == points.end() ||
+    std::all_of(points.begin(), points.end(), [&points, other](const osm::Point& p) {
+      return osm::orient2d(points.front(), *other, p) == 0;
+    });
+}
+
 std::string ReadPoints(vtkPolyData* input, osm::Array<osm::Vec3>& points)
 {
   const vtkIdType numberOfPoints = input->GetNumberOfPoints();
@@ -1233,6 +1245,14 @@ std::optional<int> vtkOverlayStitchMesher::MeshRun::ReadPslg()
     this->Pslg.points.push_back(this->Map.toPlane(p));
   }
   this->Map.indexInputPoints(this->Pslg.points);
+  if (this->Map.isProjected() && OnOneLine(this->Pslg.points))
+  {
+    vtkErrorWithObjectMacro(self,
+      "Cannot mesh the input: projected onto the XY plane (ProjectToXYPlane), its points lie on "
+      "one line, which has no area to mesh (the input stands in a vertical plane or surface); "
+      "turn ProjectToXYPlane off to mesh a vertical plane in its own plane.");
+    return Failure();
+  }
   if (this->Map.isProjected())
   {
     vtkWarningWithObjectMacro(
@@ -1493,7 +1513,7 @@ int vtkOverlayStitchMesher::MeshRun::FillOutputs(bool interpolate)
     this->Mesh->GetPointData());
   if (self->PassCellData)
   {
-    OverlayStitchPassPolygonData(input, this->Pslg, result,
+    OverlayStitchPassPolygonData(input, this->Pslg, result, this->Map,
       ownNames({ "MinAngle", "MaxAngle", "RegionId", "RegionAttribute", "InputCellId" }),
       this->Mesh->GetCellData(), outputSteps(0.945, 0.95), warnings);
     warn();

@@ -596,6 +596,15 @@ int TestProjectToXY()
   Check(kept == 6, "on: every input point keeps its exact x and y");
   Check(std::fabs(osmtest::TotalArea(mesh) - 100.0) < 1e-9, "on: the projected square is meshed");
 
+  // A vertical plane projects onto a line: an error, not a box around it.
+  mesh = h.Run(MakeLines({ { 0, 0.3, 0 }, { 10, 0.3, 0 }, { 10, 0.3, 10 }, { 0, 0.3, 10 } },
+                 { { 0, 1, 2, 3, 0 } }),
+    "a vertical plane, projection on");
+  Check(h.Messages->HasError(
+          { "projected onto the XY plane", "lie on one line", "turn ProjectToXYPlane off" }) &&
+      osmtest::AllOutputsEmpty(h.Mesher),
+    "on: a vertical plane, which projects onto a line, is an error with empty outputs");
+
   // A plane z = constant is never changed by the option.
   mesh = h.Run(Square(10.0, 7.5), "z = 7.5, projection on");
   mesh->GetBounds(bounds);
@@ -2424,6 +2433,24 @@ int TestPolygonData()
   };
   h.Mesher->SetMaximumEdgeLength(0.0);
   h.Mesher->SetDomainToAuto();
+
+  // A frame of four quads around a square hole, as Clip gives a surface
+  // with a hole: the hole lies in no polygon, is meshed, and a warning says
+  // where to put a hole point; with one there, it is left out.
+  auto frame = polygonsOnly({ { 0, 0, 0 }, { 30, 0, 0 }, { 30, 30, 0 }, { 0, 30, 0 }, { 10, 10, 0 },
+                              { 20, 10, 0 }, { 20, 20, 0 }, { 10, 20, 0 } },
+    { { 0, 1, 5, 4 }, { 1, 2, 6, 5 }, { 2, 3, 7, 6 }, { 3, 0, 4, 7 } });
+  vtkPolyData* framed = h.Run(frame, "polygon data, a frame around a hole");
+  Check(h.NoError() && std::fabs(osmtest::TotalArea(framed) - 900) < 1e-9 &&
+      h.Messages->HasWarning({ "1 region(s) of the mesh lie in no input polygon",
+        "area 100 of the mesh's 900", "give a hole point (HolePoints) in each, e.g. (1" }),
+    "polygon data: a hole in the polygons is meshed, and a warning names its region and a seed");
+  h.Mesher->AddHolePoint(15, 15);
+  framed = h.Run(frame, "polygon data, a frame around a hole, a hole point in it");
+  Check(h.NoError() && std::fabs(osmtest::TotalArea(framed) - 800) < 1e-9 &&
+      !h.Messages->HasWarning({ "no input polygon" }),
+    "polygon data: with a hole point in the hole, it is left out and nothing warns");
+  h.Mesher->RemoveAllHolePoints();
 
   // A self-crossing loop (a bowtie) whose lobes' signed areas cancel: both
   // lobes are inside it (even-odd).
