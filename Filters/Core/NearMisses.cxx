@@ -74,7 +74,8 @@ NearMisses findNearMisses(const Array<Point>& points, const Array<Segment>& segm
   for (std::size_t p = 0; p < points.size(); ++p)
     if (degree[p] == 1)
       ends.push_back(static_cast<int>(p));
-  if (ends.empty() || !(reach > 0))
+  // An extent beyond the doubles' range gives no reach to judge by.
+  if (ends.empty() || !(reach > 0) || !std::isfinite(reach))
     return out;
   const EndGrid grid(points, ends);
   // Per end, its nearest segment within reach (distance, segment).
@@ -109,7 +110,7 @@ NearMisses findNearMisses(const Array<Point>& points, const Array<Segment>& segm
           if (e == segments[s][0] || e == segments[s][1])
             continue;
           const double d = distanceToSegment(points[e], a, b);
-          if (d > reach || onSegment(points[e], a, b))
+          if (!(d <= reach) || onSegment(points[e], a, b)) // NaN: lengths overflow
             continue;
           if (nearest[e] < 0 || d < nearest[e])
             nearest[e] = d, nearestSegment[e] = static_cast<int>(s);

@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <set>
 #include <string>
 
@@ -103,4 +105,15 @@ TEST(NearMisses, TheMesherWarnsAndAMergeToleranceAboveTheGapJoins)
   ASSERT_TRUE(j.ok) << j.error;
   EXPECT_TRUE(warningWith(j, "stop short").empty());
   EXPECT_EQ(std::set<int>(j.regionId.begin(), j.regionId.end()).size(), 2u);
+}
+
+TEST(NearMisses, CoordinatesNearTheDoublesLimitGiveNoNaN)
+{
+  // A segment whose length overflows, and an end 1 from it.
+  const Array<Point> points = { { -1e308, 0 }, { 1e308, 0 }, { 0, 1e300 }, { 0, 1 } };
+  const Array<Segment> segments = { { 0, 1 }, { 2, 3 } };
+  // Its extent overflows too: no reach.
+  EXPECT_EQ(findNearMisses(points, segments, std::numeric_limits<double>::infinity()).count, 0u);
+  const NearMisses m = findNearMisses(points, segments, 1e302);
+  EXPECT_TRUE(m.count == 0 || std::isfinite(m.distance)) << m.distance;
 }
