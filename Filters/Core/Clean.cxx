@@ -2,7 +2,6 @@
 
 #include "Geometry.h"
 #include "HugePages.h"
-#include "NearMisses.h"
 #include "Predicates.h"
 #include "Snap.h"
 
@@ -284,36 +283,6 @@ void warnAboutSeedsAcrossMerges(const Pslg& in, const CleanPslg& out, double tol
       example);
 }
 
-/// Segment ends within a millionth of the input's extent of another segment
-/// (rounding, not design, at that scale), which they do not reach.
-void warnAboutNearMisses(
-  const CleanPslg& out, const PointFormat& format, std::vector<std::string>& warnings)
-{
-  if (out.points.empty())
-    return;
-  Bounds b{ out.points.front(), out.points.front() };
-  for (const Point& p : out.points)
-    extend(b, p);
-  const double extent = std::max(b.width(), b.height());
-  const NearMisses misses = findNearMisses(out.points, out.segments, 1e-6 * extent);
-  if (misses.count == 0)
-    return;
-  // A tolerance a little above the largest gap, to one significant digit.
-  const double power = std::pow(10.0, std::floor(std::log10(2 * misses.distance)));
-  const double tolerance = std::ceil(2 * misses.distance / power) * power;
-  const auto first = std::find(out.pointOf.begin(), out.pointOf.end(), misses.point);
-  warnings.push_back(std::to_string(misses.count) +
-    " segment end(s) stop short of another segment, within a millionth of the input's extent "
-    "(the farthest: point " +
-    std::to_string(first - out.pointOf.begin()) + " at " +
-    formatPoint(out.points[misses.point], format) + ", " + roughNumber(misses.distance) +
-    " from segment " + std::to_string(out.segmentOrigin[misses.segment]) +
-    "): each dangles, so the regions it was to part are one, and its gap takes many tiny "
-    "triangles to mesh; a merge tolerance above the gap, e.g. " +
-    roughNumber(tolerance) +
-    ", joins them (osm-mesh --merge-tolerance, the filter's MergeTolerance)");
-}
-
 /// The segments on the merged points; with a tolerance, split at the points
 /// within it (Snap.h); zero-length and duplicate ones dropped.
 std::string mapSegments(const Pslg& in, CleanPslg& out, Statistics& stats,
@@ -372,8 +341,6 @@ std::string mapSegments(const Pslg& in, CleanPslg& out, Statistics& stats,
     out.segments.push_back(segment);
     out.segmentOrigin.push_back(origin);
   }
-  if (snap)
-    warnAboutNearMisses(out, format, warnings);
   warnAboutSeedsAcrossMerges(in, out, tol, format, warnings);
   warnAboutSeedsBesideBends(in, out.points, split, tol, warnings);
   return {};
