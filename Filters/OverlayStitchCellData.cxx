@@ -12,6 +12,7 @@
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 
+#include "Clean.h"
 #include "Mesher.h"
 #include "OverlayStitchArrays.h"
 #include "OverlayStitchGather.h"
@@ -224,19 +225,29 @@ void NoteRegionsOutsidePolygons(const osm::Result& result, const std::vector<int
   const osm::Point c{ (points[t[0]].x + points[t[1]].x + points[t[2]].x) / 3,
     (points[t[0]].y + points[t[1]].y + points[t[2]].y) / 3 };
   const osm::Vec3 seed = map.toSpace(c);
-  char text[400];
-  std::snprintf(text, sizeof text,
-    "%lld region(s) of the mesh lie in no input polygon (holes in the polygons, or space their "
-    "edges enclose between them), area %.6g of the mesh's %.6g: they are meshed, with InputCellId "
-    "-1. To leave them out, give a hole point (HolePoints) in each, e.g. (%.9g, %.9g%s",
-    static_cast<long long>(regions), outside, all, seed.x, seed.y, map.isFitted() ? ", " : ")");
-  std::string warning = text;
-  if (map.isFitted())
+  // Round-trip digits: a seed rounded for print may fall across a thin
+  // region's edge.
+  std::string where;
+  if (map.seedXYDefined())
   {
-    std::snprintf(text, sizeof text, "%.9g)", seed.z);
-    warning += text;
+    where = "a hole point (HolePoints) in each, e.g. (" + osm::formatNumber(seed.x) + ", " +
+      osm::formatNumber(seed.y) + ")";
   }
-  warnings.push_back(warning + " for region " + std::to_string(r) + " (RegionId)");
+  else
+  {
+    // In a vertical plane an (x, y) seed leaves the height undefined.
+    where = "an (x, y, z) seed in each in the input's field data HolePoints, e.g. (" +
+      osm::formatNumber(seed.x) + ", " + osm::formatNumber(seed.y) + ", " +
+      osm::formatNumber(seed.z) + ")";
+  }
+  char counts[256];
+  std::snprintf(counts, sizeof counts,
+    "%lld region(s) of the mesh lie in no input polygon (holes in the polygons, or space their "
+    "edges enclose between them), area %.6g of the mesh's %.6g",
+    static_cast<long long>(regions), outside, all);
+  warnings.push_back(std::string(counts) +
+    ": they are meshed, with InputCellId -1. To leave them out, give " + where + " for region " +
+    std::to_string(r) + " (RegionId)");
 }
 
 } // namespace
@@ -273,7 +284,10 @@ bool OverlayStitchPassPolygonData(vtkPolyData* input, const osm::Pslg& pslg,
       fromCells.push_back(t);
     }
   }
-  if (!input->GetLines() || input->GetLines()->GetNumberOfCells() == 0)
+  // Only the enclosed domain is the polygons' (the hull's and the box's
+  // padding is asked for).
+  if ((!input->GetLines() || input->GetLines()->GetNumberOfCells() == 0) &&
+    result.domain == osm::Domain::Enclosed)
   {
     NoteRegionsOutsidePolygons(result, polygonOf, map, warnings);
   }

@@ -223,18 +223,43 @@ struct IgnoredCells
   }
 };
 
-/// Reads the input's points. Returns an error message, or "" on success.
-/// Whether the points lie on one line (exactly, or all one point).
-bool OnOneLine(const osm::Array<osm::Point>& points)
+/// Whether the points lie on one line (or are all one point), within the
+/// plane fit's tolerance (PlaneMap::relativeTolerance of their extent) and
+/// the rounding of their coordinates (roundoff of the largest, as stored).
+bool OnOneLine(const osm::Array<osm::Point>& points, double roundoff)
 {
-  const auto other = std::find_if(
-    points.begin(), points.end(), [&points](const osm::Point& p) { return p != points.front(); });
-  return other == points.end() ||
-    std::all_of(points.begin(), points.end(), [&points, other](const osm::Point& p) {
-      return osm::orient2d(points.front(), *other, p) == 0;
-    });
+  if (points.empty())
+  {
+    return true;
+  }
+  // The line through the extreme points along the wider side.
+  osm::Bounds box{ points.front(), points.front() };
+  double largest = 0.0;
+  for (const osm::Point& p : points)
+  {
+    osm::extend(box, p);
+    largest = std::max({ largest, std::fabs(p.x), std::fabs(p.y) });
+  }
+  const bool alongX = box.width() >= box.height();
+  auto byAxis = [alongX](const osm::Point& p, const osm::Point& q) {
+    return alongX ? p.x < q.x : p.y < q.y;
+  };
+  const osm::Point a = *std::min_element(points.begin(), points.end(), byAxis);
+  const osm::Point b = *std::max_element(points.begin(), points.end(), byAxis);
+  const double length = std::hypot(b.x - a.x, b.y - a.y);
+  if (length == 0)
+  {
+    return true;
+  }
+  const double tolerance =
+    osm::PlaneMap::relativeTolerance * std::hypot(box.width(), box.height()) +
+    4 * roundoff * largest;
+  return std::all_of(points.begin(), points.end(), [&](const osm::Point& p) {
+    return std::fabs((b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x)) / length <= tolerance;
+  });
 }
 
+/// Reads the input's points. Returns an error message, or "" on success.
 std::string ReadPoints(vtkPolyData* input, osm::Array<osm::Vec3>& points)
 {
   const vtkIdType numberOfPoints = input->GetNumberOfPoints();
@@ -1222,13 +1247,14 @@ std::optional<int> vtkOverlayStitchMesher::MeshRun::ReadPslg()
   self->UpdateProgress(0.0);
   osm::Array<osm::Vec3>& points = this->Points;
   std::string inputError = ReadPoints(input, points);
+  // Float coordinates are rounded to 2^-24 of themselves: a tilted plane's
+  // points, as a slice gives them, lie that far off it.
+  const bool floats = (input->GetPoints() && input->GetPoints()->GetDataType() == VTK_FLOAT) ||
+    this->Combination.FloatPoints || this->Gather.FloatPoints;
+  const double roundoff = floats ? 0x1p-24 : 0.0;
   if (inputError.empty())
   {
-    // Float coordinates are rounded to 2^-24 of themselves: a tilted plane's
-    // points, as a slice gives them, lie that far off it.
-    const bool floats = (input->GetPoints() && input->GetPoints()->GetDataType() == VTK_FLOAT) ||
-      this->Combination.FloatPoints || this->Gather.FloatPoints;
-    inputError = this->Map.choose(points, self->GetProjectToXYPlane() != 0, floats ? 0x1p-24 : 0.0);
+    inputError = this->Map.choose(points, self->GetProjectToXYPlane() != 0, roundoff);
   }
   // Composite blocks and the pieces of a parallel run are meshed as one
   // combined input, whose numbers are not any single block's.
@@ -1253,7 +1279,7 @@ std::optional<int> vtkOverlayStitchMesher::MeshRun::ReadPslg()
     this->Pslg.points.push_back(this->Map.toPlane(p));
   }
   this->Map.indexInputPoints(this->Pslg.points);
-  if (this->Map.isProjected() && OnOneLine(this->Pslg.points))
+  if (this->Map.isProjected() && OnOneLine(this->Pslg.points, roundoff))
   {
     vtkErrorWithObjectMacro(self,
       "Cannot mesh the input: projected onto the XY plane (ProjectToXYPlane), its points lie on "

@@ -43,6 +43,7 @@
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkIntArray.h"
+#include "vtkMath.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
 #include "vtkPartitionedDataSet.h"
@@ -596,14 +597,23 @@ int TestProjectToXY()
   Check(kept == 6, "on: every input point keeps its exact x and y");
   Check(std::fabs(osmtest::TotalArea(mesh) - 100.0) < 1e-9, "on: the projected square is meshed");
 
-  // A vertical plane projects onto a line: an error, not a box around it.
-  mesh = h.Run(MakeLines({ { 0, 0.3, 0 }, { 10, 0.3, 0 }, { 10, 0.3, 10 }, { 0, 0.3, 10 } },
-                 { { 0, 1, 2, 3, 0 } }),
-    "a vertical plane, projection on");
-  Check(h.Messages->HasError(
-          { "projected onto the XY plane", "lie on one line", "turn ProjectToXYPlane off" }) &&
-      osmtest::AllOutputsEmpty(h.Mesher),
-    "on: a vertical plane, which projects onto a line, is an error with empty outputs");
+  // A vertical plane projects onto a line: an error, not a box around it;
+  // also one at 30 degrees to the axes, whose points round off the line.
+  const double c30 = std::cos(vtkMath::Pi() / 6), s30 = std::sin(vtkMath::Pi() / 6);
+  for (const bool turned : { false, true })
+  {
+    auto at = [&](double u, double z) -> Xyz {
+      return turned ? Xyz{ 1 + u * c30, 2 + u * s30, z } : Xyz{ u, 0.3, z };
+    };
+    mesh = h.Run(
+      MakeLines({ at(0, 0), at(10, 0), at(10, 10), at(0, 10), at(3, 7) }, { { 0, 1, 2, 3, 0 } }),
+      "a vertical plane, projection on");
+    Check(h.Messages->HasError(
+            { "projected onto the XY plane", "lie on one line", "turn ProjectToXYPlane off" }) &&
+        osmtest::AllOutputsEmpty(h.Mesher),
+      std::string("on: a vertical plane ") + (turned ? "at 30 degrees" : "y = 0.3") +
+        ", which projects onto a line, is an error with empty outputs");
+  }
 
   // A plane z = constant is never changed by the option.
   mesh = h.Run(Square(10.0, 7.5), "z = 7.5, projection on");
@@ -2453,6 +2463,11 @@ int TestPolygonData()
       h.Messages->HasWarning({ "1 region(s) of the mesh lie in no input polygon",
         "area 100 of the mesh's 900", "give a hole point (HolePoints) in each, e.g. (1" }),
     "polygon data: a hole in the polygons is meshed, and a warning names its region and a seed");
+  h.Mesher->SetDomainToHull();
+  framed = h.Run(frame, "polygon data, a frame around a hole, hull domain");
+  Check(h.NoError() && !h.Messages->HasWarning({ "no input polygon" }),
+    "polygon data: the hull domain, which asks for what lies between polygons, does not warn");
+  h.Mesher->SetDomainToAuto();
   h.Mesher->AddHolePoint(15, 15);
   framed = h.Run(frame, "polygon data, a frame around a hole, a hole point in it");
   Check(h.NoError() && std::fabs(osmtest::TotalArea(framed) - 800) < 1e-9 &&
