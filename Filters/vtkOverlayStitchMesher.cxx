@@ -42,7 +42,6 @@
 #include "OverlayStitchPointData.h"
 #include "OverlayStitchUnstructured.h"
 #include "Plane.h"
-#include "Predicates.h"
 #include "Pslg.h"
 #include "RunContext.h"
 #include "Statistics.h"
@@ -1284,7 +1283,8 @@ std::optional<int> vtkOverlayStitchMesher::MeshRun::ReadPslg()
     vtkErrorWithObjectMacro(self,
       "Cannot mesh the input: projected onto the XY plane (ProjectToXYPlane), its points lie on "
       "one line, which has no area to mesh (the input stands in a vertical plane or surface); "
-      "turn ProjectToXYPlane off to mesh a vertical plane in its own plane.");
+      "turn ProjectToXYPlane off (osm-mesh: leave out --project-xy) to mesh a vertical plane in "
+      "its own plane.");
     return Failure();
   }
   if (this->Map.isProjected())
