@@ -222,42 +222,6 @@ struct IgnoredCells
   }
 };
 
-/// Whether the points lie on one line (or are all one point), within the
-/// plane fit's tolerance (PlaneMap::relativeTolerance of their extent) and
-/// the rounding of their coordinates (roundoff of the largest, as stored).
-bool OnOneLine(const osm::Array<osm::Point>& points, double roundoff)
-{
-  if (points.empty())
-  {
-    return true;
-  }
-  // The line through the extreme points along the wider side.
-  osm::Bounds box{ points.front(), points.front() };
-  double largest = 0.0;
-  for (const osm::Point& p : points)
-  {
-    osm::extend(box, p);
-    largest = std::max({ largest, std::fabs(p.x), std::fabs(p.y) });
-  }
-  const bool alongX = box.width() >= box.height();
-  auto byAxis = [alongX](const osm::Point& p, const osm::Point& q) {
-    return alongX ? p.x < q.x : p.y < q.y;
-  };
-  const osm::Point a = *std::min_element(points.begin(), points.end(), byAxis);
-  const osm::Point b = *std::max_element(points.begin(), points.end(), byAxis);
-  const double length = std::hypot(b.x - a.x, b.y - a.y);
-  if (length == 0)
-  {
-    return true;
-  }
-  const double tolerance =
-    osm::PlaneMap::relativeTolerance * std::hypot(box.width(), box.height()) +
-    4 * roundoff * largest;
-  return std::all_of(points.begin(), points.end(), [&](const osm::Point& p) {
-    return std::fabs((b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x)) / length <= tolerance;
-  });
-}
-
 /// Reads the input's points. Returns an error message, or "" on success.
 std::string ReadPoints(vtkPolyData* input, osm::Array<osm::Vec3>& points)
 {
@@ -1278,15 +1242,6 @@ std::optional<int> vtkOverlayStitchMesher::MeshRun::ReadPslg()
     this->Pslg.points.push_back(this->Map.toPlane(p));
   }
   this->Map.indexInputPoints(this->Pslg.points);
-  if (this->Map.isProjected() && OnOneLine(this->Pslg.points, roundoff))
-  {
-    vtkErrorWithObjectMacro(self,
-      "Cannot mesh the input: projected onto the XY plane (ProjectToXYPlane), its points lie on "
-      "one line, which has no area to mesh (the input stands in a vertical plane or surface); "
-      "turn ProjectToXYPlane off (osm-mesh: leave out --project-xy) to mesh a vertical plane in "
-      "its own plane.");
-    return Failure();
-  }
   if (this->Map.isProjected())
   {
     vtkWarningWithObjectMacro(

@@ -129,6 +129,37 @@ PlaneFrame frameFor(const Vec3& origin, Vec3 n, double vertical = 1e-9)
   return f;
 }
 
+/// Whether the points' (x, y) lie on one line (or are all one point), within
+/// the plane fit's tolerance (relativeTolerance of their extent) and the
+/// rounding of their coordinates (roundoff of the largest, as stored).
+bool xyOnOneLine(const Array<Vec3>& points, double relativeTolerance, double roundoff)
+{
+  if (points.empty())
+    return true;
+  const auto xy = [](const Vec3& p) { return Point{ p.x, p.y }; };
+  Bounds box{ xy(points.front()), xy(points.front()) };
+  double largest = 0.0;
+  for (const Vec3& p : points)
+  {
+    extend(box, xy(p));
+    largest = std::max({ largest, std::fabs(p.x), std::fabs(p.y) });
+  }
+  // The line through the extreme points along the wider side.
+  const bool alongX = box.width() >= box.height();
+  const auto byAxis = [alongX](
+                        const Vec3& p, const Vec3& q) { return alongX ? p.x < q.x : p.y < q.y; };
+  const Point a = xy(*std::min_element(points.begin(), points.end(), byAxis));
+  const Point b = xy(*std::max_element(points.begin(), points.end(), byAxis));
+  const double length = std::hypot(b.x - a.x, b.y - a.y);
+  if (length == 0)
+    return true;
+  const double tolerance =
+    relativeTolerance * std::hypot(box.width(), box.height()) + 4 * roundoff * largest;
+  return std::all_of(points.begin(), points.end(), [&](const Vec3& p) {
+    return std::fabs((b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x)) / length <= tolerance;
+  });
+}
+
 } // namespace
 
 Point PlaneFrame::toPlane(const Vec3& p) const
@@ -267,6 +298,13 @@ std::string PlaneMap::choose(const Array<Vec3>& points, bool projectToXY, double
       sum += p.z / static_cast<double>(points.size()); // no overflow at large z
     planeZ = sum;
     projected = true;
+    // A vertical plane at any angle to the axes (a review: a Slice at x = 0.1
+    // came out as a padded box): within the fit's tolerance, not exactly.
+    if (xyOnOneLine(points, relativeTolerance, roundoff))
+      return "projected onto the XY plane (ProjectToXYPlane), the input points lie on one line, "
+             "which has no area to mesh (the input stands in a vertical plane or surface); turn "
+             "ProjectToXYPlane off (osm-mesh: leave out --project-xy) to mesh a vertical plane in "
+             "its own plane";
     return {};
   }
   const PlaneFit fit = fitPlane(points);

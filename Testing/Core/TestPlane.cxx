@@ -343,3 +343,26 @@ TEST(PlaneMap, NonCoplanarIsAnErrorUnlessProjected)
   EXPECT_DOUBLE_EQ(map.z(), 0.6);
   EXPECT_EQ(map.toSpace({ 1, 2 }).z, map.z());
 }
+
+TEST(PlaneMap, AVerticalPlaneProjectedOntoALineIsAnError)
+{
+  // A review: a Slice at x = 0.1, projected, came out as a padded box.
+  osm::PlaneMap map;
+  const osm::Array<osm::Vec3> square{ { 0.1, 0, 0 }, { 0.1, 10, 0 }, { 0.1, 10, 10 },
+    { 0.1, 0, 10 }, { 0.1, 3, 7 }, { 0.1, 0.7, 1 } };
+  const std::string error = map.choose(square, true);
+  EXPECT_NE(error.find("the input points lie on one line"), std::string::npos) << error;
+  EXPECT_NE(
+    error.find("turn ProjectToXYPlane off (osm-mesh: leave out --project-xy)"), std::string::npos)
+    << error;
+  // At 30 degrees to the axes, in floats: off the line by rounding only.
+  osm::Array<osm::Vec3> turned;
+  for (const osm::Vec3& p : square)
+    turned.push_back({ static_cast<float>(1 + p.y * std::cos(M_PI / 6)),
+      static_cast<float>(2 + p.y * std::sin(M_PI / 6)), p.z });
+  EXPECT_NE(map.choose(turned, true, 0x1p-24).find("on one line"), std::string::npos);
+  // A steep plane that is not vertical has area once projected.
+  turned[1].x += 1e-3;
+  EXPECT_EQ(map.choose(turned, true, 0x1p-24), "");
+  EXPECT_TRUE(map.isProjected());
+}
