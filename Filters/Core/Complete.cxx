@@ -367,7 +367,7 @@ Stop untriangulable(const Array<Point>& points, const Array<Point>& polygon)
     return Stop{ std::string(kPointsTooCloseSubject) +
         " together than double precision resolves at the input's scale (" + face + ", " +
         roughNumber(across / scale) + " of the mesh's extent across, could not be triangulated)",
-      true, polygon[0], { -1, -1 }, true };
+      true, polygon[0], { -1, -1 }, Stop::Remedy::MergePoints };
   // A wide face can be distorted too: by a point too near a long segment
   // (found by a review, as an "internal error": a point 7e-13 from a segment
   // 7e5 long).
@@ -378,7 +378,7 @@ Stop untriangulable(const Array<Point>& points, const Array<Point>& polygon)
         face + ", a vertex " +
         (gap > 0 ? roughNumber(gap / scale) + " of the mesh's extent from" : "on") +
         " a side, could not be triangulated)",
-      true, polygon[0], { -1, -1 }, false, true };
+      true, polygon[0], { -1, -1 }, Stop::Remedy::JoinSegments };
   return Stop{ "internal error: " + face + " could not be triangulated", true, polygon[0] };
 }
 

@@ -738,6 +738,53 @@ std::string openOutlineWarning(
   return "";
 }
 
+/// Why regions meant to be parted are one (a workflow review: isolines in
+/// floats end 1e-8 short of the boundary they were cut from, and a band
+/// meshed as its neighbour's, with no word): input segment ends that meet no
+/// other segment within 1e-6 of the extent of one they do not touch. Names
+/// the nearest; "" if none. walked: the walk's segments (overlay vertices).
+std::string nearMissWarning(const Work& w, const Walk& walk, const Array<Segment>& walked,
+  const Pslg& input, const Array<int>& pointOf, const Frame& frame, const PointFormat& format)
+{
+  const auto inputs = static_cast<int>(w.segments.size());
+  const NearMiss* nearest = nullptr;
+  std::size_t count = 0;
+  for (const NearMiss& m : walk.nearMisses)
+    if (m.endSegment < inputs && m.segment < inputs)
+    {
+      ++count;
+      if (!nearest || m.distance < nearest->distance)
+        nearest = &m;
+    }
+  if (!nearest)
+    return "";
+  const int end =
+    w.segments[nearest->endSegment][walked[nearest->endSegment][0] == nearest->end ? 0 : 1];
+  const auto user = std::find(pointOf.begin(), pointOf.end(), end) - pointOf.begin();
+  const std::string gap = formatNumber(std::ldexp(nearest->distance, frame.exponent));
+  return std::to_string(count) +
+    " segment end(s) dangle within 1e-6 of the extent of a segment they do not reach, e.g. "
+    "point " +
+    std::to_string(user) + " at " + formatPoint(input.points[user], format) + ", " + gap +
+    " from " + segmentName(w, nearest->segment) +
+    ": the regions such ends were to part are meshed as one; if they are meant to meet, a "
+    "merge tolerance above the gap joins them (osm-mesh --merge-tolerance, "
+    "the filter's MergeTolerance)";
+}
+
+/// A merge tolerance to try where segments meet closer than double precision
+/// separates (a workflow review: a figure-eight through the origin failed,
+/// and the message gave no value to type): 1e-9 of the input's extent,
+/// far below any feature meant, far above the rounding. "" where the
+/// tolerance given is that already.
+std::string toleranceToTry(const Bounds& input, double given)
+{
+  const double suggested = 1e-9 * std::max(input.width(), input.height());
+  if (!(suggested > given))
+    return "";
+  return " (try about 1e-9 of the input's extent: " + roughNumber(suggested) + ")";
+}
+
 class Mesher
 {
 public:
@@ -957,17 +1004,18 @@ Result Mesher::execute()
     // points too close, the nearest 1.06 away; their crossings were).
     const std::string inputPoints = kPointsTooCloseSubject;
     const std::size_t at = stop.reason.find(inputPoints);
-    const bool crossings = stop.pointsTooClose && at != std::string::npos &&
+    const bool crossings = stop.remedy == Stop::Remedy::MergePoints && at != std::string::npos &&
       std::find(w.isCrossingPoint.begin(), w.isCrossingPoint.end(), 1) != w.isCrossingPoint.end();
     if (crossings)
       stop.reason.replace(
         at, inputPoints.size(), "input points, or points where input segments cross, are closer");
-    if (stop.pointsTooClose)
+    if (stop.remedy == Stop::Remedy::MergePoints)
       stop.reason += std::string("; if ") + (crossings ? "points or crossings" : "input points") +
         " there are meant to be one, a " + tolerance + " joins them";
-    else if (stop.segmentsTooClose)
+    else if (stop.remedy == Stop::Remedy::JoinSegments)
       stop.reason += "; if segments there are meant to meet at one point, a " + tolerance +
-        " joins their crossings and bends segments onto the points near them";
+        " joins their crossings and bends segments onto the points near them" +
+        toleranceToTry(boundsOf(input.points), options.mergeTolerance);
     throw;
   }
   st.secondsTotal = since(t0);
@@ -1301,7 +1349,7 @@ void Mesher::meshRounds(Work& w)
                     "rounded intersection points, which crossed again: " +
             crossingError(w, walk.segmentCrossings, frame, options.pointFormat) +
             "; the segments there come closer than double precision separates",
-          false, {}, { -1, -1 }, false, true };
+          false, {}, { -1, -1 }, Stop::Remedy::JoinSegments };
       if (st.crossingsSplit == 0)
         firstCrossing =
           describeCrossing(w, walk.segmentCrossings.front(), frame, options.pointFormat);
@@ -1366,6 +1414,10 @@ void Mesher::meshRounds(Work& w)
         segmentName(w, a) + " and " + segmentName(w, b) + " overlap from " + at(u) + " to " +
         at(v));
     }
+    if (std::string nearMiss =
+          nearMissWarning(w, walk, segments, input, clean.pointOf, frame, options.pointFormat);
+        !nearMiss.empty())
+      res.warnings.push_back(std::move(nearMiss));
     st.overlayVertices = overlay.mesh.points.size();
     st.overlaySteinerPoints = overlay.steinerPoints + kBoxCorners;
     if (overlay.refinementsSkipped > 0)

@@ -616,7 +616,7 @@ void Refiner::refineTriangle(int t)
     throw Stop{ std::string(kPointsTooCloseSubject) +
         " together than double precision resolves at their coordinates (features below "
         "about 1e-14 of the coordinate magnitude)",
-      true, c, { -1, -1 }, true };
+      true, c, { -1, -1 }, Stop::Remedy::MergePoints };
   }
   if (!mesh.cavityOf(c, start, cavity))
   {

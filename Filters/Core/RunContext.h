@@ -5,6 +5,7 @@
 #include "Mesher.h"
 
 #include <array>
+#include <cstdint>
 #include <string>
 
 namespace osm
@@ -26,11 +27,17 @@ struct Stop
   Point at;
   /// The segments at fault (indices of the round's segments), -1 for none.
   std::array<int, 2> segments{ -1, -1 };
-  /// Input points too close for double precision: a merge tolerance may help.
-  bool pointsTooClose = false;
-  /// Segments too close (crossings rounded apart, segments at tiny angles):
-  /// a merge tolerance joins crossings and bends segments onto points.
-  bool segmentsTooClose = false;
+  /// What a merge tolerance may do about it, which the message then says.
+  enum class Remedy : std::uint8_t
+  {
+    None,
+    /// Input points too close for double precision: it merges them.
+    MergePoints,
+    /// Segments too close (crossings rounded apart, segments at tiny
+    /// angles): it joins crossings and bends segments onto points.
+    JoinSegments
+  };
+  Remedy remedy = Remedy::None;
 };
 
 class RunContext

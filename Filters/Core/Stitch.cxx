@@ -117,28 +117,40 @@ void forEachPieceInSegmentOrder(const Walk& walk, F&& f)
 class Walker
 {
 public:
-  Walker(const OverlayEdges& ov, const Overlay& overlay, double sinTheta1, Walk& out)
+  Walker(const OverlayEdges& ov, const Overlay& overlay, const Array<Segment>& segments,
+    double sinTheta1, Walk& out)
     : ov(ov)
     , P(overlay.mesh.points)
     , isInput(overlay.isInput)
+    , segments(segments)
     , sinTheta1(sinTheta1)
     , out(out)
-  {}
+  {
+    findDanglingEnds();
+  }
 
   void walk(int segment, int a, int b);
   void findSegmentCrossings(const Array<int>* rank);
+  void keepNearestMisses();
 
 private:
   int firstStep(int cur, int b, int& l, int& r, int& tri);
   bool ahead(const Point& from, const Point& x, const Point& B) const;
   void addCrossing(int edge, int piece, const Point& A, const Point& B);
+  void findDanglingEnds();
+  void checkNearMiss(int end, const Point& A, const Point& B);
   void markDuplicates(const Array<int>* rank);
 
   const OverlayEdges& ov;
   const Array<Point>& P;
   const Array<char>& isInput;
+  const Array<Segment>& segments;
   const double sinTheta1;
   Walk& out;
+  /// Per overlay vertex: the one segment that ends there, or negative.
+  Array<int> dangling;
+  double reach = 0;                       ///< how near a dangling end to a segment is a near miss
+  int walking = -1;                       ///< the segment being walked
   int segmentStart = -1;                  ///< first vertex of the segment being walked
   double segmentLength = 0;               ///< its length (addCrossing's A to B)
   Array<std::pair<int, int>> triPiece;    ///< (overlay triangle, piece) traversed
@@ -245,12 +257,65 @@ void Walker::addCrossing(int edge, int piece, const Point& A, const Point& B)
   const double sine = std::fabs(cross(dx, dy, ex, ey)) / (segmentLength * edgeLength);
   c.good = sine > sinTheta1;
   out.crossings.push_back(c);
+  // A segment passing a hair from a vertex crosses the vertex's edges, so
+  // near misses cost nothing to find here.
+  checkNearMiss(ends[0], A, B);
+  checkNearMiss(ends[1], A, B);
+}
+
+void Walker::findDanglingEnds()
+{
+  // -1: no segment ends there yet; -2: more than one.
+  dangling.assign(P.size(), -1);
+  Bounds box = emptyBounds();
+  for (std::size_t s = 0; s < segments.size(); ++s)
+    for (int v : segments[s])
+    {
+      dangling[v] = dangling[v] == -1 ? static_cast<int>(s) : -2;
+      extend(box, P[v]);
+    }
+  reach = segments.empty() ? 0 : 1e-6 * std::max(box.width(), box.height());
+}
+
+/// Records end as a near miss of the segment A B being walked: it dangles,
+/// lies within reach of it, and their segments share no vertex (those meet
+/// at a small angle, on purpose).
+void Walker::checkNearMiss(int end, const Point& A, const Point& B)
+{
+  const int t = dangling[end];
+  if (t < 0 || t == walking)
+    return;
+  const Point& V = P[end];
+  const double dx = B.x - A.x, dy = B.y - A.y;
+  const double along = ((V.x - A.x) * dx + (V.y - A.y) * dy) / (dx * dx + dy * dy);
+  const double f = std::isfinite(along) ? std::min(1.0, std::max(0.0, along)) : 0.0;
+  const double d = std::hypot(V.x - (A.x + f * dx), V.y - (A.y + f * dy));
+  const Segment &s = segments[t], &u = segments[walking];
+  if (d > reach || d == 0 || s[0] == u[0] || s[0] == u[1] || s[1] == u[0] || s[1] == u[1])
+    return;
+  out.nearMisses.push_back({ end, t, walking, d });
+}
+
+/// One near miss per end, the nearest (ties to the lower segment: the same
+/// whatever the walk order), in the order of the ends.
+void Walker::keepNearestMisses()
+{
+  auto& n = out.nearMisses;
+  std::sort(n.begin(), n.end(), [](const NearMiss& x, const NearMiss& y) {
+    return x.end != y.end        ? x.end < y.end
+      : x.distance != y.distance ? x.distance < y.distance
+                                 : x.segment < y.segment;
+  });
+  n.erase(std::unique(n.begin(), n.end(),
+            [](const NearMiss& x, const NearMiss& y) { return x.end == y.end; }),
+    n.end());
 }
 
 void Walker::walk(int segment, int a, int b)
 {
   const Point& A = P[a];
   const Point& B = P[b];
+  walking = segment;
   segmentStart = a;
   segmentLength = std::hypot(B.x - A.x, B.y - A.y);
   int cur = a;
@@ -478,7 +543,7 @@ Walk walkSegments(const OverlayEdges& ov, const Overlay& overlay, const Array<Se
   double sinTheta1, RunContext& run, const Array<int>* order, const Array<int>* rank)
 {
   Walk out;
-  Walker walker(ov, overlay, sinTheta1, out);
+  Walker walker(ov, overlay, segments, sinTheta1, out);
   // In the order of their smaller vertex, which the overlay numbers along a
   // Hilbert curve: consecutive walks then touch nearby triangles. In index
   // order (random on a segment soup) each walk starts with cache misses:
@@ -496,6 +561,7 @@ Walk walkSegments(const OverlayEdges& ov, const Overlay& overlay, const Array<Se
   }
   run.poll();
   walker.findSegmentCrossings(rank);
+  walker.keepNearestMisses();
   return out;
 }
 
@@ -710,17 +776,17 @@ PlanarGraph stitch(OverlayEdges ov, Array<Point> points, const Array<char>& isIn
           throw Stop{ "a segment passes input points closer together than double precision "
                       "resolves at the coordinates of both its ends (features below about "
                       "1e-14 of them)",
-            true, c.p, { segment, -1 }, true };
+            true, c.p, { segment, -1 }, Stop::Remedy::MergePoints };
         // Crossings within rounding of each other (or of the edge's ends) cannot
         // be told apart: the segments meet at an angle below double precision.
         if (tooClose(c.p, g.points[prev], edgeLength))
           throw Stop{ "input segments come closer to each other than double precision can "
                       "separate",
-            true, c.p, { segment, prevSegment }, false, true };
+            true, c.p, { segment, prevSegment }, Stop::Remedy::JoinSegments };
         if (tooClose(c.p, g.points[ends[1]], edgeLength))
           throw Stop{ "input segments come closer to each other than double precision can "
                       "separate",
-            true, c.p, { segment, -1 }, false, true };
+            true, c.p, { segment, -1 }, Stop::Remedy::JoinSegments };
         prevSegment = segment;
         const int v = static_cast<int>(g.points.size());
         g.points.push_back(c.p);

@@ -86,6 +86,15 @@ struct Crossing
   bool resolved = true;
 };
 
+/// A dangling segment end (overlay vertex) near a segment it does not touch.
+struct NearMiss
+{
+  int end = -1;
+  int endSegment = -1; ///< the one segment that ends there
+  int segment = -1;
+  double distance = 0;
+};
+
 /// Two clean segments that cross at p.
 struct SegmentCrossing
 {
@@ -107,6 +116,11 @@ struct Walk
   /// Per duplicate piece: the segment whose piece is kept, the duplicate's
   /// segment (the later in rank), and the overlay vertices the piece runs between.
   Array<std::array<int, 4>> overlaps;
+  /// Segment ends that meet no other segment yet lie within 1e-6 of the
+  /// segments' extent of one they do not touch, as isolines cut in floats end
+  /// short of their boundary: they dangle, and the regions they were to part
+  /// stay one. Once per end, with the nearest such segment.
+  Array<NearMiss> nearMisses;
 };
 
 /// Walk every segment (endpoints given as overlay vertices) through the overlay,

@@ -488,6 +488,40 @@ TEST(Mesher, AMeshBeyondTheMachinesMemoryIsRefusedAtOnce)
   EXPECT_LE(progress.furthest, 0.02);
 }
 
+TEST(Mesher, ASegmentEndAHairShortOfAnotherSegmentIsWarnedOf)
+{
+  // Found by a workflow review: isolines in floats end 1e-8 short of the
+  // boundary they were cut from; the bands they were to part merged, silently.
+  Pslg t;
+  t.points = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0.5, 1 }, { 0, 1 }, { 0.5, 1e-8 } };
+  t.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 4 }, { 4, 0 }, { 3, 5 } };
+  Result r = meshAndValidate(t, "a wall 1e-8 short of the floor");
+  EXPECT_EQ(r.stats.regions, 1u);
+  EXPECT_TRUE(mentions(r.warnings,
+    "1 segment end(s) dangle within 1e-6 of the extent of a segment they do not reach, e.g. "
+    "point 5 at (0.5, 1e-08), 1e-08 from input segment 0: the regions such ends were to part "
+    "are meshed as one"));
+  // Either end may be the dangling one, and the segment walked either way.
+  std::swap(t.segments[5][0], t.segments[5][1]);
+  std::swap(t.segments[0][0], t.segments[0][1]);
+  EXPECT_TRUE(
+    mentions(mesh(t).warnings, "e.g. point 5 at (0.5, 1e-08), 1e-08 from input segment 0"));
+  // The tolerance the warning asks for joins them: two regions, no word.
+  Options joined;
+  joined.mergeTolerance = 2e-8;
+  r = meshAndValidate(t, "the wall joined", joined);
+  EXPECT_EQ(r.stats.regions, 2u);
+  EXPECT_FALSE(mentions(r.warnings, "dangle"));
+  // A gap the extent resolves is a gap: no word.
+  t.points[5].y = 1e-5;
+  EXPECT_FALSE(mentions(mesh(t).warnings, "dangle"));
+  // Nor where the near segment shares a vertex: a small input angle.
+  Pslg wedge;
+  wedge.points = { { 0, 0 }, { 1, 0 }, { 0.5, 1e-8 }, { 0, 1 } };
+  wedge.segments = { { 0, 1 }, { 0, 2 }, { 0, 3 }, { 1, 3 } };
+  EXPECT_FALSE(mentions(meshAndValidate(wedge, "a wedge of 1e-8").warnings, "dangle"));
+}
+
 TEST(Mesher, AnOutlineThatDoesNotCloseIsSaidToBeMeshedAsItsHull)
 {
   // Found by a Triangle user's review: an L-shaped outline whose last point
@@ -2157,11 +2191,18 @@ TEST(Stitch, CrossingsThatCrossAgainForFiveRoundsAreRefusedWithTheRemedy)
   EXPECT_NE(r.error.find("if segments there are meant to meet at one point, a merge tolerance"),
     std::string::npos)
     << r.error;
+  // With a value to try (a workflow review), which meshes it.
+  EXPECT_NE(r.error.find("(try about 1e-9 of the input's extent: 2e-09)"), std::string::npos)
+    << r.error;
   hull.mergeTolerance = 1e-14; // too small to join them: "a larger" one
   const Result small = mesh(p, hull);
   ASSERT_FALSE(small.ok);
   EXPECT_NE(small.error.find("after 5 rounds"), std::string::npos) << small.error;
   EXPECT_NE(small.error.find("a larger merge tolerance"), std::string::npos) << small.error;
+  EXPECT_NE(small.error.find("(try about 1e-9 of the input's extent: 2e-09)"), std::string::npos)
+    << small.error;
+  hull.mergeTolerance = 2e-9;
+  meshAndValidate(p, "pencil, the merge tolerance suggested", hull);
   hull.mergeTolerance = 1e-10;
   meshAndValidate(p, "pencil, merge tolerance 1e-10", hull);
 }
@@ -2186,8 +2227,10 @@ TEST(Stitch, SegmentsTooCloseToSeparateAreNamed)
   EXPECT_NE(r.error.find("; if segments there are meant to meet at one point, a merge tolerance"),
     std::string::npos)
     << r.error;
+  EXPECT_NE(r.error.find("(try about 1e-9 of the input's extent: 4e-09)"), std::string::npos)
+    << r.error;
   Options o;
-  o.mergeTolerance = 1e-12;
+  o.mergeTolerance = 4e-9;
   meshAndValidate(p, "two segments 1e-17 radians apart, merged", o);
 }
 

@@ -305,6 +305,25 @@ int TestMergeTolerance()
           "2 of those points joined another within "
           "the merge tolerance" }),
     "junction, tolerance 1e-6: the warning says the crossings joined");
+
+  // An isoline across the square whose ends stop 2e-8 and 3e-8 short of its
+  // sides, as contours in floats do: it parts nothing, and a warning says so
+  // and gives the gap; the tolerance it asks for joins them.
+  auto isoline = MakeLines({ { 0, 0, 0 }, { 10, 0, 0 }, { 10, 10, 0 }, { 0, 10, 0 }, { 3, 2e-8, 0 },
+                             { 3.5, 5, 0 }, { 3, 10 - 3e-8, 0 } },
+    { { 0, 1, 2, 3, 0 }, { 4, 5, 6 } });
+  h.Mesher->SetMergeTolerance(0.0);
+  mesh = h.Run(isoline, "an isoline short of the sides, tolerance 0");
+  Check(h.NoError() && Statistic(mesh, "Regions") == 1 &&
+      h.Messages->HasWarning({ "2 segment end(s) dangle within 1e-6 of the extent of a segment "
+                               "they do not reach, e.g. point 4 at (3, 2e-08), 2e-08 from input "
+                               "segment 0",
+        "a merge tolerance above the gap joins them" }),
+    "an isoline 2e-8 short of the sides: one region, and a warning with the gap");
+  h.Mesher->SetMergeTolerance(1e-7);
+  mesh = h.Run(isoline, "an isoline short of the sides, tolerance 1e-7");
+  Check(h.NoError() && Statistic(mesh, "Regions") == 2 && !h.Messages->HasWarning({ "dangle" }),
+    "an isoline short of the sides, tolerance 1e-7: two regions, no warning");
   return 0;
 }
 
