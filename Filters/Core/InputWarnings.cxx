@@ -1,0 +1,186 @@
+#include "InputWarnings.h"
+
+#include "Predicates.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <unordered_map>
+
+namespace osm
+{
+
+/// Segment s of a round (the input's, then the hull's) as the user numbers it.
+std::string segmentName(const Work& w, int s)
+{
+  return s < static_cast<int>(w.segments.size())
+    ? "input segment " + std::to_string(w.segmentOrigin[s])
+    : std::string("an edge of the convex hull");
+}
+
+/// "input segment A and input segment B cross near (x, y)", in user coordinates.
+std::string describeCrossing(
+  const Work& w, const SegmentCrossing& c, const Frame& frame, const PointFormat& format)
+{
+  const Point p = frame.toUser(c.p);
+  return segmentName(w, c.a) + " and " + segmentName(w, c.b) + " cross near " +
+    formatPoint(p, format);
+}
+
+std::string crossingError(const Work& w, const Array<SegmentCrossing>& crossings,
+  const Frame& frame, const PointFormat& format)
+{
+  std::string msg = describeCrossing(w, crossings.front(), frame, format);
+  // At least: segments through one point are found as pairs in a chain, not
+  // every pair of them.
+  if (crossings.size() > 1)
+    msg += " (and at least " + std::to_string(crossings.size() - 1) + " more crossing pair(s))";
+  return msg;
+}
+
+/// Why the auto domain meshed the hull where the segments look meant to
+/// enclose a region (a user review: an outline that missed closing by 1e-9,
+/// or by its last segment, was meshed as its hull without a word): two
+/// segment ends that meet no other segment (of at most 1,000 such), joined
+/// by a path of two or more segments, lie within 1e-6 of the extent of each
+/// other, so that joining them closes a loop; or the segments form one open
+/// chain of three or more that is not straight. Names the user's points; ""
+/// otherwise.
+std::string openOutlineWarning(
+  const Work& w, const Pslg& input, const Array<int>& pointOf, const PointFormat& format)
+{
+  Array<int> degree(w.points.size(), 0);
+  for (const Segment& s : w.segments)
+    ++degree[s[0]], ++degree[s[1]];
+  Array<int> ends;
+  std::size_t touched = 0;
+  for (std::size_t v = 0; v < degree.size(); ++v)
+  {
+    touched += degree[v] > 0;
+    if (degree[v] == 1)
+      ends.push_back(static_cast<int>(v));
+  }
+  const auto user = [&](int v) {
+    return std::find(pointOf.begin(), pointOf.end(), v) - pointOf.begin();
+  };
+  const auto name = [&](int v) {
+    return "point " + std::to_string(user(v)) + " at " + formatPoint(input.points[user(v)], format);
+  };
+  const std::string hull = ": the segments enclose no region, so the auto domain meshes the "
+                           "convex hull of the points (the hull domain does so without this "
+                           "warning)";
+  // A soup of segments, not an outline: the search would cost a few percent.
+  if (ends.size() > 1000)
+    return "";
+  // The segments' connected components (union-find).
+  Array<int> parent(w.points.size());
+  for (std::size_t v = 0; v < parent.size(); ++v)
+    parent[v] = static_cast<int>(v);
+  const auto root = [&](int v) {
+    while (parent[v] != v)
+      v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for (const Segment& s : w.segments)
+    parent[root(s[0])] = root(s[1]);
+  // The nearest two ends within reach that a path of two or more segments
+  // joins (not the two ends of one segment), by cells of that size.
+  Array<int> adjacentEnd(w.points.size(), -1); // an isolated segment's other end
+  for (const Segment& s : w.segments)
+    if (degree[s[0]] == 1 && degree[s[1]] == 1)
+      adjacentEnd[s[0]] = s[1], adjacentEnd[s[1]] = s[0];
+  const Bounds b = boundsOf(w.points);
+  const double reach = 1e-6 * std::max(b.width(), b.height());
+  std::unordered_map<std::uint64_t, Array<int>> cells;
+  const auto cell = [&](const Point& p, int dx, int dy) {
+    const auto i = static_cast<std::int64_t>((p.x - b.lo.x) / reach) + dx; // at most 1e6 + 1
+    const auto j = static_cast<std::int64_t>((p.y - b.lo.y) / reach) + dy;
+    return static_cast<std::uint64_t>(i + 1) << 32 | static_cast<std::uint64_t>(j + 1);
+  };
+  int bestA = -1, bestB = -1;
+  double best = reach;
+  for (int v : ends)
+  {
+    const Point& p = w.points[v];
+    for (int dx = -1; reach > 0 && dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy)
+        if (const auto it = cells.find(cell(p, dx, dy)); it != cells.end())
+          for (int u : it->second)
+            if (const double d = std::sqrt(dist2(p, w.points[u]));
+                d <= best && root(u) == root(v) && adjacentEnd[u] != v)
+              best = d, bestA = u, bestB = v;
+    if (reach > 0)
+      cells[cell(p, 0, 0)].push_back(v);
+  }
+  if (bestA >= 0)
+  {
+    const Point &p = input.points[user(bestA)], &q = input.points[user(bestB)];
+    return "segment ends at " + name(bestA) + " and " + name(bestB) + " meet no other segment, " +
+      formatNumber(std::hypot(p.x - q.x, p.y - q.y)) +
+      " apart, and joined they would close a loop" + hull +
+      "; a merge tolerance that large joins them (osm-mesh --merge-tolerance, the filter's "
+      "MergeTolerance)";
+  }
+  const bool oneChain = ends.size() == 2 && w.segments.size() >= 3 &&
+    w.segments.size() + 1 == touched &&
+    std::all_of(degree.begin(), degree.end(), [](int d) { return d <= 2; });
+  const auto straight = [&] {
+    const Point &a = w.points[ends[0]], &c = w.points[ends[1]];
+    return std::all_of(w.segments.begin(), w.segments.end(), [&](const Segment& s) {
+      return orient2d(a, c, w.points[s[0]]) == 0 && orient2d(a, c, w.points[s[1]]) == 0;
+    });
+  };
+  if (oneChain && !straight())
+    return "the segments form one open chain, from " + name(ends[0]) + " to " + name(ends[1]) +
+      hull;
+  return "";
+}
+
+/// Why regions meant to be parted are one (a workflow review: isolines in
+/// floats end 1e-8 short of the boundary they were cut from, and a band
+/// meshed as its neighbour's, with no word): input segment ends that meet no
+/// other segment within 1e-6 of the extent of one they do not touch. Names
+/// the nearest; "" if none. walked: the walk's segments (overlay vertices).
+std::string nearMissWarning(const Work& w, const Walk& walk, const Array<Segment>& walked,
+  const Pslg& input, const Array<int>& pointOf, const Frame& frame, const PointFormat& format)
+{
+  const auto inputs = static_cast<int>(w.segments.size());
+  const NearMiss* nearest = nullptr;
+  std::size_t count = 0;
+  for (const NearMiss& m : walk.nearMisses)
+    if (m.endSegment < inputs && m.segment < inputs)
+    {
+      ++count;
+      if (!nearest || m.distance < nearest->distance)
+        nearest = &m;
+    }
+  if (!nearest)
+    return "";
+  const int end =
+    w.segments[nearest->endSegment][walked[nearest->endSegment][0] == nearest->end ? 0 : 1];
+  const auto user = std::find(pointOf.begin(), pointOf.end(), end) - pointOf.begin();
+  const std::string gap = formatNumber(std::ldexp(nearest->distance, frame.exponent));
+  return std::to_string(count) +
+    " segment end(s) dangle within 1e-6 of the extent of a segment they do not reach, e.g. "
+    "point " +
+    std::to_string(user) + " at " + formatPoint(input.points[user], format) + ", " + gap +
+    " from " + segmentName(w, nearest->segment) +
+    ": the regions such ends were to part are meshed as one; if they are meant to meet, a "
+    "merge tolerance above the gap joins them (osm-mesh --merge-tolerance, "
+    "the filter's MergeTolerance)";
+}
+
+/// A merge tolerance to try where segments meet closer than double precision
+/// separates (a workflow review: a figure-eight through the origin failed,
+/// and the message gave no value to type): 1e-9 of the input's extent,
+/// far below any feature meant, far above the rounding. "" where the
+/// tolerance given is that already.
+std::string toleranceToTry(const Bounds& input, double given)
+{
+  const double suggested = 1e-9 * std::max(input.width(), input.height());
+  if (!(suggested > given))
+    return "";
+  return " (try about 1e-9 of the input's extent: " + roughNumber(suggested) + ")";
+}
+
+} // namespace osm

@@ -1,0 +1,44 @@
+// What the mesher says about its input, in the user's numbers and
+// coordinates: segments and crossings by name, outlines that miss closing,
+// segment ends that dangle a hair from a segment, a merge tolerance to try.
+#ifndef osm_InputWarnings_h
+#define osm_InputWarnings_h
+
+#include "Clean.h"
+#include "Stitch.h"
+#include "Work.h"
+
+#include <string>
+
+namespace osm
+{
+
+/// Segment s of a round (the input's, then the hull's) as the user numbers it.
+std::string segmentName(const Work& w, int s);
+
+/// "input segment A and input segment B cross near (x, y)", in user coordinates.
+std::string describeCrossing(
+  const Work& w, const SegmentCrossing& c, const Frame& frame, const PointFormat& format);
+
+/// The first crossing, and how many more there are.
+std::string crossingError(const Work& w, const Array<SegmentCrossing>& crossings,
+  const Frame& frame, const PointFormat& format);
+
+/// Why the auto domain meshed the hull where the segments look meant to
+/// enclose a region (InputWarnings.cxx says when); "" otherwise.
+std::string openOutlineWarning(
+  const Work& w, const Pslg& input, const Array<int>& pointOf, const PointFormat& format);
+
+/// Input segment ends that dangle within 1e-6 of the extent of a segment
+/// they do not touch, found by the walk over the segments walked (overlay
+/// vertices); "" if none.
+std::string nearMissWarning(const Work& w, const Walk& walk, const Array<Segment>& walked,
+  const Pslg& input, const Array<int>& pointOf, const Frame& frame, const PointFormat& format);
+
+/// " (try about ...)": a merge tolerance to try where segments meet closer
+/// than double precision separates, or "" where the one given is as large.
+std::string toleranceToTry(const Bounds& input, double given);
+
+} // namespace osm
+
+#endif
