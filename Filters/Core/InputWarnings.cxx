@@ -138,36 +138,29 @@ std::string openOutlineWarning(
 
 /// Why regions meant to be parted are one (a workflow review: isolines in
 /// floats end 1e-8 short of the boundary they were cut from, and a band
-/// meshed as its neighbour's, with no word): input segment ends that meet no
-/// other segment within 1e-6 of the extent of one they do not touch. Names
-/// the nearest; "" if none. walked: the walk's segments (overlay vertices).
+/// meshed as its neighbour's, with no word): the input segment ends the walk
+/// found within reach of an input segment they do not touch. Names the
+/// nearest; "" if none. walked: the walk's segments (overlay vertices).
 std::string nearMissWarning(const Work& w, const Walk& walk, const Array<Segment>& walked,
   const Pslg& input, const Array<int>& pointOf, const Frame& frame, const PointFormat& format)
 {
-  const auto inputs = static_cast<int>(w.segments.size());
-  const NearMiss* nearest = nullptr;
-  std::size_t count = 0;
-  for (const NearMiss& m : walk.nearMisses)
-    if (m.endSegment < inputs && m.segment < inputs)
-    {
-      ++count;
-      if (!nearest || m.distance < nearest->distance)
-        nearest = &m;
-    }
-  if (!nearest)
+  if (walk.nearMisses.empty())
     return "";
+  const std::size_t count = walk.nearMisses.size();
+  const NearMiss* nearest = &*std::min_element(walk.nearMisses.begin(), walk.nearMisses.end(),
+    [](const NearMiss& a, const NearMiss& b) { return a.distance < b.distance; });
   const int end =
     w.segments[nearest->endSegment][walked[nearest->endSegment][0] == nearest->end ? 0 : 1];
   const auto user = std::find(pointOf.begin(), pointOf.end(), end) - pointOf.begin();
   const std::string gap = formatNumber(std::ldexp(nearest->distance, frame.exponent));
   return std::to_string(count) +
-    " segment end(s) dangle within 1e-6 of the extent of a segment they do not reach, e.g. "
-    "point " +
+    " segment end(s) stop a hair short of a segment they do not reach (within 1e-6 of the "
+    "extent, or float rounding at their coordinates), e.g. point " +
     std::to_string(user) + " at " + formatPoint(input.points[user], format) + ", " + gap +
     " from " + segmentName(w, nearest->segment) +
-    ": the regions such ends were to part are meshed as one; if they are meant to meet, a "
-    "merge tolerance above the gap joins them (osm-mesh --merge-tolerance, "
-    "the filter's MergeTolerance)";
+    ": they do not meet it, and regions they were meant to part are meshed as one; a merge "
+    "tolerance above the gap joins them (osm-mesh --merge-tolerance, the filter's "
+    "MergeTolerance)";
 }
 
 /// A merge tolerance to try where segments meet closer than double precision

@@ -29,9 +29,11 @@ std::string crossingError(const Work& w, const Array<SegmentCrossing>& crossings
 std::string openOutlineWarning(
   const Work& w, const Pslg& input, const Array<int>& pointOf, const PointFormat& format);
 
-/// Input segment ends that dangle within 1e-6 of the extent of a segment
-/// they do not touch, found by the walk over the segments walked (overlay
-/// vertices); "" if none.
+/// Input segment ends that dangle within kNearMissExtent of the extent (or
+/// float rounding) of a segment they do not touch, found by the walk over the
+/// segments walked (overlay vertices); "" if none.
+constexpr double kNearMissExtent = 1e-6;
+
 std::string nearMissWarning(const Work& w, const Walk& walk, const Array<Segment>& walked,
   const Pslg& input, const Array<int>& pointOf, const Frame& frame, const PointFormat& format);
 

@@ -261,6 +261,17 @@ private:
   bool inputPointsOnSegments = true; ///< the last such round's walk met some
   /// The merge tolerance in the scaled coordinates of the rounds.
   double scaledTolerance() const { return std::ldexp(options.mergeTolerance, -exponent); }
+  /// How near a segment a dangling end is a near miss (scaled): 1e-6 of the
+  /// input's extent, or float rounding at its coordinates (2^-21 of the
+  /// largest: a review, isolines at 1e6 end 0.0625 short), if that is more.
+  double nearMissReach() const
+  {
+    const Bounds b = boundsOf(input.points);
+    const double largest =
+      std::max({ std::fabs(b.lo.x), std::fabs(b.lo.y), std::fabs(b.hi.x), std::fabs(b.hi.y) });
+    return std::ldexp(
+      std::max(kNearMissExtent * std::max(b.width(), b.height()), 0x1p-21 * largest), -exponent);
+  }
   /// The enclosed regions reached beyond the segments on cycles (closed by a
   /// segment ending on another, which only the walk splits): the size bound
   /// then applies within all the segments.
@@ -757,7 +768,8 @@ void Mesher::meshRounds(Work& w)
     for (std::size_t s = 0; s < w.segmentOrigin.size(); ++s)
       if (w.segmentOrigin[s] >= 0)
         firstInInputOrder[s] = w.segmentOrigin[s];
-    Walk walk = walkSegments(ov, overlay, segments, sinTheta1, run, nullptr, &firstInInputOrder);
+    Walk walk = walkSegments(ov, overlay, segments, sinTheta1, run, nullptr, &firstInInputOrder,
+      { w.segments.size(), nearMissReach() });
     st.secondsStitch += since(t);
     if (!walk.segmentCrossings.empty())
     {

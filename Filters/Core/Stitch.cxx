@@ -118,19 +118,22 @@ class Walker
 {
 public:
   Walker(const OverlayEdges& ov, const Overlay& overlay, const Array<Segment>& segments,
-    double sinTheta1, Walk& out)
+    double sinTheta1, NearMissSearch search, Walk& out)
     : ov(ov)
     , P(overlay.mesh.points)
     , isInput(overlay.isInput)
     , segments(segments)
     , sinTheta1(sinTheta1)
+    , search(search)
     , out(out)
   {
-    findDanglingEnds();
+    if (search.reach > 0)
+      findDanglingEnds();
   }
 
   void walk(int segment, int a, int b);
   void findSegmentCrossings(const Array<int>* rank);
+  void findNearMissesAtEnds();
   void keepNearestMisses();
 
 private:
@@ -138,7 +141,8 @@ private:
   bool ahead(const Point& from, const Point& x, const Point& B) const;
   void addCrossing(int edge, int piece, const Point& A, const Point& B);
   void findDanglingEnds();
-  void checkNearMiss(int end, const Point& A, const Point& B);
+  void checkNearMiss(int end);
+  void addNearMiss(int end, int segment);
   void markDuplicates(const Array<int>* rank);
 
   const OverlayEdges& ov;
@@ -146,10 +150,14 @@ private:
   const Array<char>& isInput;
   const Array<Segment>& segments;
   const double sinTheta1;
+  const NearMissSearch search;
   Walk& out;
-  /// Per overlay vertex: the one segment that ends there, or negative.
-  Array<int> dangling;
-  double reach = 0;                       ///< how near a dangling end to a segment is a near miss
+  /// Per overlay vertex: the one segment that ends there (s >= 0), or of
+  /// several the first, an input segment where there is one (-2 - s), or
+  /// none (-1).
+  Array<int> endOf;
+  /// (input vertex, segment passing through it): such an end meets that segment.
+  Array<std::pair<int, int>> passes;
   int walking = -1;                       ///< the segment being walked
   int segmentStart = -1;                  ///< first vertex of the segment being walked
   double segmentLength = 0;               ///< its length (addCrossing's A to B)
@@ -259,41 +267,67 @@ void Walker::addCrossing(int edge, int piece, const Point& A, const Point& B)
   out.crossings.push_back(c);
   // A segment passing a hair from a vertex crosses the vertex's edges, so
   // near misses cost nothing to find here.
-  checkNearMiss(ends[0], A, B);
-  checkNearMiss(ends[1], A, B);
+  checkNearMiss(ends[0]);
+  checkNearMiss(ends[1]);
 }
 
 void Walker::findDanglingEnds()
 {
-  // -1: no segment ends there yet; -2: more than one.
-  dangling.assign(P.size(), -1);
-  Bounds box = emptyBounds();
+  endOf.assign(P.size(), -1);
   for (std::size_t s = 0; s < segments.size(); ++s)
     for (int v : segments[s])
-    {
-      dangling[v] = dangling[v] == -1 ? static_cast<int>(s) : -2;
-      extend(box, P[v]);
-    }
-  reach = segments.empty() ? 0 : 1e-6 * std::max(box.width(), box.height());
+      endOf[v] = endOf[v] == -1 ? static_cast<int>(s) : endOf[v] >= 0 ? -2 - endOf[v] : endOf[v];
 }
 
-/// Records end as a near miss of the segment A B being walked: it dangles,
-/// lies within reach of it, and their segments share no vertex (those meet
-/// at a small angle, on purpose).
-void Walker::checkNearMiss(int end, const Point& A, const Point& B)
+/// A segment passing a hair from a dangling end crosses the end's edges:
+/// records end if it lies within reach of the segment being walked.
+void Walker::checkNearMiss(int end)
 {
-  const int t = dangling[end];
-  if (t < 0 || t == walking)
+  if (search.reach > 0 && endOf[end] >= 0 && endOf[end] != walking)
+    addNearMiss(end, walking);
+}
+
+/// Records end (dangling, its segment endOf[end]) as a near miss of segment
+/// s, if both are the user's, within reach, and share no vertex (those meet
+/// at a small angle, on purpose).
+void Walker::addNearMiss(int end, int s)
+{
+  const int t = endOf[end];
+  const auto inputs = static_cast<int>(search.inputSegments);
+  if (t >= inputs || s >= inputs)
     return;
-  const Point& V = P[end];
-  const double dx = B.x - A.x, dy = B.y - A.y;
-  const double along = ((V.x - A.x) * dx + (V.y - A.y) * dy) / (dx * dx + dy * dy);
-  const double f = std::isfinite(along) ? std::min(1.0, std::max(0.0, along)) : 0.0;
-  const double d = std::hypot(V.x - (A.x + f * dx), V.y - (A.y + f * dy));
-  const Segment &s = segments[t], &u = segments[walking];
-  if (d > reach || d == 0 || s[0] == u[0] || s[0] == u[1] || s[1] == u[0] || s[1] == u[1])
+  const Segment &e = segments[t], &u = segments[s];
+  if (e[0] == u[0] || e[0] == u[1] || e[1] == u[0] || e[1] == u[1])
     return;
-  out.nearMisses.push_back({ end, t, walking, d });
+  const double d = distanceToSegment(P[end], P[u[0]], P[u[1]]);
+  if (d > 0 && d <= search.reach)
+    out.nearMisses.push_back({ end, t, s, d });
+}
+
+/// An end a hair from another segment's end: the walk of neither crosses
+/// the other's edges, but the two are neighbours in the overlay (the nearest
+/// neighbour of a point is a Delaunay neighbour).
+void Walker::findNearMissesAtEnds()
+{
+  if (search.reach <= 0)
+    return;
+  for (std::size_t v = 0; v < endOf.size(); ++v)
+  {
+    if (endOf[v] < 0)
+      continue;
+    const int first = ov.vtri[v];
+    int t = first;
+    for (std::size_t k = 0; k <= ov.tris.size() && t >= 0; ++k)
+    {
+      const int i = cornerOf(ov.tris[t], static_cast<int>(v));
+      const int u = ov.tris[t][(i + 1) % 3];
+      if (endOf[u] != -1 && dist2(P[v], P[u]) <= search.reach * search.reach)
+        addNearMiss(static_cast<int>(v), endOf[u] >= 0 ? endOf[u] : -2 - endOf[u]);
+      t = ov.nbr[t][(i + 1) % 3];
+      if (t == first)
+        break;
+    }
+  }
 }
 
 /// One near miss per end, the nearest (ties to the lower segment: the same
@@ -301,6 +335,19 @@ void Walker::checkNearMiss(int end, const Point& A, const Point& B)
 void Walker::keepNearestMisses()
 {
   auto& n = out.nearMisses;
+  // Not an end that a segment passes through, nor one whose segment's other
+  // end the near segment passes through (a small angle there).
+  std::sort(passes.begin(), passes.end());
+  const auto passed = [&](int v, int s) {
+    const auto it = std::lower_bound(passes.begin(), passes.end(), std::make_pair(v, s));
+    return it != passes.end() && it->first == v && (s < 0 || it->second == s);
+  };
+  n.erase(std::remove_if(n.begin(), n.end(),
+            [&](const NearMiss& m) {
+              const Segment& e = segments[m.endSegment];
+              return passed(m.end, -1) || passed(e[0] == m.end ? e[1] : e[0], m.segment);
+            }),
+    n.end());
   std::sort(n.begin(), n.end(), [](const NearMiss& x, const NearMiss& y) {
     return x.end != y.end        ? x.end < y.end
       : x.distance != y.distance ? x.distance < y.distance
@@ -369,7 +416,11 @@ void Walker::walk(int segment, int a, int b)
     out.pieces[piece].crossingCount =
       static_cast<int>(out.crossings.size()) - out.pieces[piece].firstCrossing;
     if (next != b && isInput[next])
+    {
       ++out.splitsAtInputVertices;
+      if (search.reach > 0)
+        passes.push_back({ next, segment });
+    }
     else if (next != b)
       steinerHits.push_back({ next, segment });
     cur = next;
@@ -540,10 +591,11 @@ Array<int> walkOrder(const Array<Segment>& segments, std::size_t vertexCount)
 } // namespace
 
 Walk walkSegments(const OverlayEdges& ov, const Overlay& overlay, const Array<Segment>& segments,
-  double sinTheta1, RunContext& run, const Array<int>* order, const Array<int>* rank)
+  double sinTheta1, RunContext& run, const Array<int>* order, const Array<int>* rank,
+  NearMissSearch nearMisses)
 {
   Walk out;
-  Walker walker(ov, overlay, segments, sinTheta1, out);
+  Walker walker(ov, overlay, segments, sinTheta1, nearMisses, out);
   // In the order of their smaller vertex, which the overlay numbers along a
   // Hilbert curve: consecutive walks then touch nearby triangles. In index
   // order (random on a segment soup) each walk starts with cache misses:
@@ -561,6 +613,7 @@ Walk walkSegments(const OverlayEdges& ov, const Overlay& overlay, const Array<Se
   }
   run.poll();
   walker.findSegmentCrossings(rank);
+  walker.findNearMissesAtEnds();
   walker.keepNearestMisses();
   return out;
 }

@@ -116,11 +116,21 @@ struct Walk
   /// Per duplicate piece: the segment whose piece is kept, the duplicate's
   /// segment (the later in rank), and the overlay vertices the piece runs between.
   Array<std::array<int, 4>> overlaps;
-  /// Segment ends that meet no other segment yet lie within 1e-6 of the
-  /// segments' extent of one they do not touch, as isolines cut in floats end
-  /// short of their boundary: they dangle, and the regions they were to part
-  /// stay one. Once per end, with the nearest such segment.
+  /// Segment ends that meet no other segment (none ends or passes there) yet
+  /// lie within the search's reach of one they do not touch, as isolines cut
+  /// in floats end short of their boundary: they dangle, and the regions they
+  /// were to part stay one. Once per end, with the nearest such segment.
   Array<NearMiss> nearMisses;
+};
+
+/// What the walks look for besides crossings: segment ends that dangle
+/// within reach (scaled) of a segment they do not reach. Segments from
+/// inputSegments on (the convex hull's edges) are not the user's: no near
+/// miss names them. reach 0: none looked for.
+struct NearMissSearch
+{
+  std::size_t inputSegments = 0;
+  double reach = 0;
 };
 
 /// Walk every segment (endpoints given as overlay vertices) through the overlay,
@@ -131,7 +141,7 @@ struct Walk
 /// index), so that it carries that segment's data.
 Walk walkSegments(const OverlayEdges& ov, const Overlay& overlay, const Array<Segment>& segments,
   double sinTheta1, RunContext& run, const Array<int>* order = nullptr,
-  const Array<int>* rank = nullptr);
+  const Array<int>* rank = nullptr, NearMissSearch nearMisses = {});
 
 /// Sides of a planar-graph edge that lie in a face still to be completed.
 enum OpenSide : std::uint8_t

@@ -492,15 +492,17 @@ TEST(Mesher, ASegmentEndAHairShortOfAnotherSegmentIsWarnedOf)
 {
   // Found by a workflow review: isolines in floats end 1e-8 short of the
   // boundary they were cut from; the bands they were to part merged, silently.
+  const std::string shortOf = "stop a hair short of a segment they do not reach";
   Pslg t;
   t.points = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0.5, 1 }, { 0, 1 }, { 0.5, 1e-8 } };
   t.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 4 }, { 4, 0 }, { 3, 5 } };
   Result r = meshAndValidate(t, "a wall 1e-8 short of the floor");
   EXPECT_EQ(r.stats.regions, 1u);
   EXPECT_TRUE(mentions(r.warnings,
-    "1 segment end(s) dangle within 1e-6 of the extent of a segment they do not reach, e.g. "
-    "point 5 at (0.5, 1e-08), 1e-08 from input segment 0: the regions such ends were to part "
-    "are meshed as one"));
+    "1 segment end(s) stop a hair short of a segment they do not reach (within 1e-6 of the "
+    "extent, or float rounding at their coordinates), e.g. point 5 at (0.5, 1e-08), 1e-08 from "
+    "input segment 0: they do not meet it, and regions they were meant to part are meshed as "
+    "one; a merge tolerance above the gap joins them"));
   // Either end may be the dangling one, and the segment walked either way.
   std::swap(t.segments[5][0], t.segments[5][1]);
   std::swap(t.segments[0][0], t.segments[0][1]);
@@ -511,15 +513,51 @@ TEST(Mesher, ASegmentEndAHairShortOfAnotherSegmentIsWarnedOf)
   joined.mergeTolerance = 2e-8;
   r = meshAndValidate(t, "the wall joined", joined);
   EXPECT_EQ(r.stats.regions, 2u);
-  EXPECT_FALSE(mentions(r.warnings, "dangle"));
+  EXPECT_FALSE(mentions(r.warnings, shortOf));
   // A gap the extent resolves is a gap: no word.
   t.points[5].y = 1e-5;
-  EXPECT_FALSE(mentions(mesh(t).warnings, "dangle"));
+  EXPECT_FALSE(mentions(mesh(t).warnings, shortOf));
+  // At 1e6, floats round by 0.0625: such a gap is a near miss too (a review).
+  Pslg far = t;
+  for (Point& p : far.points)
+    p = { 1e6 + 1000 * p.x, 1e6 + 1000 * p.y };
+  far.points[5].y = 1e6 + 0.0625;
+  EXPECT_TRUE(mentions(mesh(far).warnings, "(1000500, 1000000.0625), 0.0625 from input segment 0"));
   // Nor where the near segment shares a vertex: a small input angle.
   Pslg wedge;
   wedge.points = { { 0, 0 }, { 1, 0 }, { 0.5, 1e-8 }, { 0, 1 } };
   wedge.segments = { { 0, 1 }, { 0, 2 }, { 0, 3 }, { 1, 3 } };
-  EXPECT_FALSE(mentions(meshAndValidate(wedge, "a wedge of 1e-8").warnings, "dangle"));
+  EXPECT_FALSE(mentions(meshAndValidate(wedge, "a wedge of 1e-8").warnings, shortOf));
+  // Nor where it passes through that vertex (a review): a wall from a point
+  // on the floor, at a small angle to it.
+  Pslg tangle;
+  tangle.points = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 }, { 0.2, 0 }, { 0.6, 4e-8 } };
+  tangle.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 }, { 4, 5 } };
+  EXPECT_FALSE(mentions(meshAndValidate(tangle, "a wall leaving the floor").warnings, shortOf));
+  // Nor an end that a segment passes through, though another passes near:
+  // it meets the first (a review). The other's own ends are near misses.
+  Pslg tee;
+  tee.points = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 }, { 0, 0.5 }, { 1, 0.5 }, { 0.5, 0.5 },
+    { 0.5, 0 }, { 0.2, 0.5000001 }, { 0.8, 0.5000001 } };
+  tee.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 }, { 4, 5 }, { 6, 7 }, { 8, 9 } };
+  r = meshAndValidate(tee, "a T-junction under a wall");
+  EXPECT_TRUE(mentions(r.warnings, "2 segment end(s) stop a hair short")) << r.warnings.size();
+  EXPECT_TRUE(mentions(r.warnings, "e.g. point 8 at (0.2, 0.5000001)")) << r.warnings.size();
+  // Ends a hair apart: no walk crosses the other's edges, the overlay joins
+  // them (a review: a chain whose shared vertex was written twice).
+  Pslg gap;
+  gap.points = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 }, { 0, 0.5 }, { 0.5, 0.5 },
+    { 0.5 + 1e-8, 0.5 }, { 1, 0.5 } };
+  gap.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 }, { 4, 5 }, { 6, 7 } };
+  r = meshAndValidate(gap, "a chain apart by 1e-8");
+  EXPECT_TRUE(mentions(r.warnings, "2 segment end(s) stop a hair short")) << r.warnings.size();
+  // A hull edge nearer than the segment does not hide it (a review).
+  Pslg shadow;
+  shadow.points = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 }, { 0.50000005, 0 }, { 0.50000005, 0.5 },
+    { 0.5, 1e-9 }, { 0.1, 0.9 } };
+  shadow.segments = { { 4, 5 }, { 6, 7 } };
+  r = meshAndValidate(shadow, "a hull edge under a near miss");
+  EXPECT_TRUE(mentions(r.warnings, "e.g. point 6 at (0.5, 1e-09)")) << r.warnings.size();
 }
 
 TEST(Mesher, AnOutlineThatDoesNotCloseIsSaidToBeMeshedAsItsHull)

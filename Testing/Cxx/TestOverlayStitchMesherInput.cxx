@@ -315,14 +315,15 @@ int TestMergeTolerance()
   h.Mesher->SetMergeTolerance(0.0);
   mesh = h.Run(isoline, "an isoline short of the sides, tolerance 0");
   Check(h.NoError() && Statistic(mesh, "Regions") == 1 &&
-      h.Messages->HasWarning({ "2 segment end(s) dangle within 1e-6 of the extent of a segment "
-                               "they do not reach, e.g. point 4 at (3, 2e-08), 2e-08 from input "
-                               "segment 0",
+      h.Messages->HasWarning({ "2 segment end(s) stop a hair short of a segment they do not "
+                               "reach",
+        "e.g. point 4 at (3, 2e-08), 2e-08 from input segment 0",
         "a merge tolerance above the gap joins them" }),
     "an isoline 2e-8 short of the sides: one region, and a warning with the gap");
   h.Mesher->SetMergeTolerance(1e-7);
   mesh = h.Run(isoline, "an isoline short of the sides, tolerance 1e-7");
-  Check(h.NoError() && Statistic(mesh, "Regions") == 2 && !h.Messages->HasWarning({ "dangle" }),
+  Check(h.NoError() && Statistic(mesh, "Regions") == 2 &&
+      !h.Messages->HasWarning({ "stop a hair short" }),
     "an isoline short of the sides, tolerance 1e-7: two regions, no warning");
   return 0;
 }
