@@ -155,7 +155,7 @@ std::string nearMissWarning(const Work& w, const Walk& walk, const Array<Segment
   const std::string gap = formatNumber(std::ldexp(nearest->distance, frame.exponent));
   return std::to_string(count) +
     " segment end(s) stop a hair short of a segment they do not reach (within 1e-6 of the "
-    "extent, or float rounding at their coordinates), e.g. point " +
+    "extent, or, where every coordinate is a float, within float rounding), e.g. point " +
     std::to_string(user) + " at " + formatPoint(input.points[user], format) + ", " + gap +
     " from " + segmentName(w, nearest->segment) +
     ": they do not meet it, and regions they were meant to part are meshed as one; a merge "

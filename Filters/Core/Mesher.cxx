@@ -262,15 +262,22 @@ private:
   /// The merge tolerance in the scaled coordinates of the rounds.
   double scaledTolerance() const { return std::ldexp(options.mergeTolerance, -exponent); }
   /// How near a segment a dangling end is a near miss (scaled): 1e-6 of the
-  /// input's extent, or float rounding at its coordinates (2^-21 of the
-  /// largest: a review, isolines at 1e6 end 0.0625 short), if that is more.
-  double nearMissReach() const
+  /// input's extent, or, where every input coordinate is a float, float
+  /// rounding at the end's coordinates (2^-23 of the largest: a review,
+  /// isolines at 1e6 end 0.0625 short), if that is more. Not for doubles: at
+  /// 5e6 it would call gaps of a metre in map data rounding (a review).
+  NearMissSearch nearMissSearch(const Work& w) const
   {
     const Bounds b = boundsOf(input.points);
-    const double largest =
-      std::max({ std::fabs(b.lo.x), std::fabs(b.lo.y), std::fabs(b.hi.x), std::fabs(b.hi.y) });
-    return std::ldexp(
-      std::max(kNearMissExtent * std::max(b.width(), b.height()), 0x1p-21 * largest), -exponent);
+    const auto isFloat = [](double x) {
+      return std::fabs(x) <= std::numeric_limits<float>::max() && double(float(x)) == x;
+    };
+    const bool floats = std::all_of(input.points.begin(), input.points.end(),
+      [&](const Point& p) { return isFloat(p.x) && isFloat(p.y); });
+    return { w.segments.size(),
+      std::ldexp(kNearMissExtent * std::max(b.width(), b.height()), -exponent),
+      floats ? 0x1p-23 : 0.0,
+      { std::ldexp(frame.origin.x, -exponent), std::ldexp(frame.origin.y, -exponent) } };
   }
   /// The enclosed regions reached beyond the segments on cycles (closed by a
   /// segment ending on another, which only the walk splits): the size bound
@@ -768,8 +775,8 @@ void Mesher::meshRounds(Work& w)
     for (std::size_t s = 0; s < w.segmentOrigin.size(); ++s)
       if (w.segmentOrigin[s] >= 0)
         firstInInputOrder[s] = w.segmentOrigin[s];
-    Walk walk = walkSegments(ov, overlay, segments, sinTheta1, run, nullptr, &firstInInputOrder,
-      { w.segments.size(), nearMissReach() });
+    Walk walk = walkSegments(
+      ov, overlay, segments, sinTheta1, run, nullptr, &firstInInputOrder, nearMissSearch(w));
     st.secondsStitch += since(t);
     if (!walk.segmentCrossings.empty())
     {

@@ -143,6 +143,8 @@ private:
   void findDanglingEnds();
   void checkNearMiss(int end);
   void addNearMiss(int end, int segment);
+  template <typename F>
+  void forEachNeighbour(int v, F&& f) const;
   void markDuplicates(const Array<int>* rank);
 
   const OverlayEdges& ov;
@@ -300,33 +302,50 @@ void Walker::addNearMiss(int end, int s)
   if (e[0] == u[0] || e[0] == u[1] || e[1] == u[0] || e[1] == u[1])
     return;
   const double d = distanceToSegment(P[end], P[u[0]], P[u[1]]);
-  if (d > 0 && d <= search.reach)
+  if (d > 0 && d <= search.at(P[end]))
     out.nearMisses.push_back({ end, t, s, d });
 }
 
 /// An end a hair from another segment's end: the walk of neither crosses
-/// the other's edges, but the two are neighbours in the overlay (the nearest
-/// neighbour of a point is a Delaunay neighbour).
+/// the other's edges, but the overlay joins them (the nearest neighbour of a
+/// point is a Delaunay neighbour), maybe through points in the gap that end
+/// no segment (isolated input points, Steiner points): those within reach
+/// are passed through.
 void Walker::findNearMissesAtEnds()
 {
   if (search.reach <= 0)
     return;
+  Array<int> near; // the vertices within reach of v reached so far
   for (std::size_t v = 0; v < endOf.size(); ++v)
   {
     if (endOf[v] < 0)
       continue;
-    const int first = ov.vtri[v];
-    int t = first;
-    for (std::size_t k = 0; k <= ov.tris.size() && t >= 0; ++k)
-    {
-      const int i = cornerOf(ov.tris[t], static_cast<int>(v));
-      const int u = ov.tris[t][(i + 1) % 3];
-      if (endOf[u] != -1 && dist2(P[v], P[u]) <= search.reach * search.reach)
-        addNearMiss(static_cast<int>(v), endOf[u] >= 0 ? endOf[u] : -2 - endOf[u]);
-      t = ov.nbr[t][(i + 1) % 3];
-      if (t == first)
-        break;
-    }
+    const double reach = search.at(P[v]);
+    near.assign(1, static_cast<int>(v));
+    for (std::size_t k = 0; k < near.size() && k < 64; ++k)
+      forEachNeighbour(near[k], [&](int u) {
+        if (dist2(P[v], P[u]) > reach * reach ||
+          std::find(near.begin(), near.end(), u) != near.end())
+          return;
+        near.push_back(u);
+        if (endOf[u] != -1)
+          addNearMiss(static_cast<int>(v), endOf[u] >= 0 ? endOf[u] : -2 - endOf[u]);
+      });
+  }
+}
+
+template <typename F>
+void Walker::forEachNeighbour(int v, F&& f) const
+{
+  const int first = ov.vtri[v];
+  int t = first;
+  for (std::size_t k = 0; k <= ov.tris.size() && t >= 0; ++k)
+  {
+    const int i = cornerOf(ov.tris[t], v);
+    f(ov.tris[t][(i + 1) % 3]);
+    t = ov.nbr[t][(i + 1) % 3];
+    if (t == first)
+      break;
   }
 }
 
@@ -336,7 +355,8 @@ void Walker::keepNearestMisses()
 {
   auto& n = out.nearMisses;
   // Not an end that a segment passes through, nor one whose segment's other
-  // end the near segment passes through (a small angle there).
+  // end the near segment passes through (a small angle there), nor one whose
+  // segment passes through an end of the near one (they meet there).
   std::sort(passes.begin(), passes.end());
   const auto passed = [&](int v, int s) {
     const auto it = std::lower_bound(passes.begin(), passes.end(), std::make_pair(v, s));
@@ -345,7 +365,9 @@ void Walker::keepNearestMisses()
   n.erase(std::remove_if(n.begin(), n.end(),
             [&](const NearMiss& m) {
               const Segment& e = segments[m.endSegment];
-              return passed(m.end, -1) || passed(e[0] == m.end ? e[1] : e[0], m.segment);
+              const Segment& u = segments[m.segment];
+              return passed(m.end, -1) || passed(e[0] == m.end ? e[1] : e[0], m.segment) ||
+                passed(u[0], m.endSegment) || passed(u[1], m.endSegment);
             }),
     n.end());
   std::sort(n.begin(), n.end(), [](const NearMiss& x, const NearMiss& y) {

@@ -124,13 +124,23 @@ struct Walk
 };
 
 /// What the walks look for besides crossings: segment ends that dangle
-/// within reach (scaled) of a segment they do not reach. Segments from
-/// inputSegments on (the convex hull's edges) are not the user's: no near
-/// miss names them. reach 0: none looked for.
+/// within reach of a segment they do not reach. Segments from inputSegments
+/// on (the convex hull's edges) are not the user's: no near miss names them.
+/// The reach (scaled) is the larger of reach and perMagnitude times the
+/// end's largest user coordinate, origin + p (float rounding, for input in
+/// floats). reach 0: none looked for.
 struct NearMissSearch
 {
   std::size_t inputSegments = 0;
   double reach = 0;
+  double perMagnitude = 0;
+  Point origin;
+
+  double at(const Point& p) const
+  {
+    return std::max(
+      reach, perMagnitude * std::max(std::fabs(p.x + origin.x), std::fabs(p.y + origin.y)));
+  }
 };
 
 /// Walk every segment (endpoints given as overlay vertices) through the overlay,
