@@ -272,8 +272,12 @@ private:
     const auto isFloat = [](double x) {
       return std::fabs(x) <= std::numeric_limits<float>::max() && double(float(x)) == x;
     };
+    // Whole numbers are floats too: then the data are integers (map metres,
+    // CAD units), whose gaps of 1 are features (a review).
     const bool floats = std::all_of(input.points.begin(), input.points.end(),
-      [&](const Point& p) { return isFloat(p.x) && isFloat(p.y); });
+                          [&](const Point& p) { return isFloat(p.x) && isFloat(p.y); }) &&
+      std::any_of(input.points.begin(), input.points.end(),
+        [](const Point& p) { return p.x != std::floor(p.x) || p.y != std::floor(p.y); });
     return { w.segments.size(),
       std::ldexp(kNearMissExtent * std::max(b.width(), b.height()), -exponent),
       floats ? 0x1p-23 : 0.0,

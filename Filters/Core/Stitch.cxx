@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <new>
+#include <queue>
 #include <string>
 
 namespace osm
@@ -145,6 +147,8 @@ private:
   void addNearMiss(int end, int segment);
   template <typename F>
   void forEachNeighbour(int v, F&& f) const;
+  bool alongItsChain(const NearMiss& m, const Array<std::pair<int, int>>& ends, Array<double>& best,
+    Array<int>& touched) const;
   void markDuplicates(const Array<int>* rank);
 
   const OverlayEdges& ov;
@@ -349,6 +353,51 @@ void Walker::forEachNeighbour(int v, F&& f) const
   }
 }
 
+/// Whether the end's own chain reaches the near segment within 64 times the
+/// gap: a dense polyline turning back, or one whose last segments are shorter
+/// than the reach, lies near its own earlier segments, not short of another
+/// (a review). A loop that misses closing by the gap is far longer. ends:
+/// (vertex, segment ending there), sorted; best and touched: scratch, all
+/// infinite and empty between calls.
+bool Walker::alongItsChain(const NearMiss& m, const Array<std::pair<int, int>>& ends,
+  Array<double>& best, Array<int>& touched) const
+{
+  const double limit = 64 * m.distance;
+  const Segment& target = segments[m.segment];
+  using Entry = std::pair<double, int>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
+  queue.push({ 0.0, m.end });
+  best[m.end] = 0;
+  touched.push_back(m.end);
+  bool found = false;
+  for (int pops = 0; !queue.empty() && pops < 256 && !found; ++pops)
+  {
+    const auto [d, v] = queue.top();
+    queue.pop();
+    found = v == target[0] || v == target[1];
+    if (d > best[v])
+      continue;
+    for (auto it = std::lower_bound(ends.begin(), ends.end(), std::make_pair(v, -1));
+         it != ends.end() && it->first == v; ++it)
+    {
+      const Segment& e = segments[it->second];
+      const int u = e[0] == v ? e[1] : e[0];
+      const double du = d + std::sqrt(dist2(P[v], P[u]));
+      if (du <= limit && du < best[u])
+      {
+        if (best[u] == std::numeric_limits<double>::infinity())
+          touched.push_back(u);
+        best[u] = du;
+        queue.push({ du, u });
+      }
+    }
+  }
+  for (int u : touched)
+    best[u] = std::numeric_limits<double>::infinity();
+  touched.clear();
+  return found;
+}
+
 /// One near miss per end, the nearest (ties to the lower segment: the same
 /// whatever the walk order), in the order of the ends.
 void Walker::keepNearestMisses()
@@ -369,6 +418,21 @@ void Walker::keepNearestMisses()
               return passed(m.end, -1) || passed(e[0] == m.end ? e[1] : e[0], m.segment) ||
                 passed(u[0], m.endSegment) || passed(u[1], m.endSegment);
             }),
+    n.end());
+  if (n.empty())
+    return;
+  // Nor a segment of the end's own chain (the segments by their ends, and
+  // Dijkstra's distances along them; only where near misses are left).
+  Array<std::pair<int, int>> ends;
+  ends.reserve(2 * segments.size());
+  for (std::size_t k = 0; k < segments.size(); ++k)
+    for (int v : segments[k])
+      ends.push_back({ v, static_cast<int>(k) });
+  std::sort(ends.begin(), ends.end());
+  Array<double> best(P.size(), std::numeric_limits<double>::infinity());
+  Array<int> touched;
+  n.erase(std::remove_if(n.begin(), n.end(),
+            [&](const NearMiss& m) { return alongItsChain(m, ends, best, touched); }),
     n.end());
   std::sort(n.begin(), n.end(), [](const NearMiss& x, const NearMiss& y) {
     return x.end != y.end        ? x.end < y.end

@@ -527,6 +527,20 @@ TEST(Mesher, ASegmentEndAHairShortOfAnotherSegmentIsWarnedOf)
   // metre short of a road in map coordinates were called rounding).
   far.points[2].x += 0.1;
   EXPECT_FALSE(mentions(mesh(far).warnings, shortOf));
+  // Nor in whole numbers, which floats hold too (a review: a wall 1 m short
+  // of a side, in metres at a northing of 9.5e6).
+  Pslg metres = t;
+  for (Point& p : metres.points)
+    p = { 5e5 + 1000 * p.x, 9.5e6 + 1000 * p.y };
+  metres.points[5].y = 9.5e6 + 1;
+  EXPECT_FALSE(mentions(mesh(metres).warnings, shortOf));
+  // Nor a segment of its own chain: a dense polyline ends near its own
+  // earlier segments (a review).
+  Pslg dense;
+  dense.points = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 }, { 0.3, 0.5 }, { 0.3000001, 0.5 },
+    { 0.3000002, 0.5 }, { 0.3000003, 0.5 } };
+  dense.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 }, { 4, 5 }, { 5, 6 }, { 6, 7 } };
+  EXPECT_FALSE(mentions(meshAndValidate(dense, "a dense polyline").warnings, shortOf));
   // Nor where the near segment shares a vertex: a small input angle.
   Pslg wedge;
   wedge.points = { { 0, 0 }, { 1, 0 }, { 0.5, 1e-8 }, { 0, 1 } };
