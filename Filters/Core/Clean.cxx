@@ -326,14 +326,13 @@ std::string mapSegments(const Pslg& in, CleanPslg& out, Statistics& stats,
   if (stats.pointsSnappedOntoSegments > 0)
   {
     const std::size_t coincide = dropDuplicates(segs).first;
-    const auto first = std::find(out.pointOf.begin(), out.pointOf.end(), snapped.point);
     warnings.push_back("split segments " + std::to_string(stats.pointsSnappedOntoSegments) +
       " time(s) at points within the merge tolerance of them" +
       (coincide > 0
           ? " (" + std::to_string(coincide) + " of the pieces then coincided and were merged)"
           : std::string()) +
       ", e.g. segment " + std::to_string(snapped.segment) + " at point " +
-      std::to_string(first - out.pointOf.begin()) + " " +
+      std::to_string(firstInputPoint(out.pointOf, snapped.point)) + " " +
       formatPoint(out.points[snapped.point], format));
   }
   for (const auto& [segment, origin] : segs)
@@ -347,6 +346,11 @@ std::string mapSegments(const Pslg& in, CleanPslg& out, Statistics& stats,
 }
 
 } // namespace
+
+int firstInputPoint(const Array<int>& pointOf, int v)
+{
+  return static_cast<int>(std::find(pointOf.begin(), pointOf.end(), v) - pointOf.begin());
+}
 
 std::string cleanPslg(const Pslg& in, CleanPslg& out, Statistics& stats,
   std::vector<std::string>& warnings, double mergeTolerance, const PointFormat& format, bool snap,

@@ -24,6 +24,10 @@ struct CleanPslg
   Array<int> pointOf;       ///< per input point: its index in points
 };
 
+/// The first input point that became clean point v (the one that messages
+/// name), given CleanPslg::pointOf.
+int firstInputPoint(const Array<int>& pointOf, int v);
+
 /// Whether point i may join point j within the merge tolerance (all may
 /// when empty).
 using JoinFilter = std::function<bool(int i, int j)>;

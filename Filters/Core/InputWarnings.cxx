@@ -1,5 +1,6 @@
 #include "InputWarnings.h"
 
+#include "Clean.h"
 #include "Predicates.h"
 
 #include <algorithm>
@@ -60,9 +61,7 @@ std::string openOutlineWarning(
     if (degree[v] == 1)
       ends.push_back(static_cast<int>(v));
   }
-  const auto user = [&](int v) {
-    return std::find(pointOf.begin(), pointOf.end(), v) - pointOf.begin();
-  };
+  const auto user = [&](int v) { return firstInputPoint(pointOf, v); };
   const auto name = [&](int v) {
     return "point " + std::to_string(user(v)) + " at " + formatPoint(input.points[user(v)], format);
   };
@@ -151,7 +150,7 @@ std::string nearMissWarning(const Work& w, const Walk& walk, const Array<Segment
     [](const NearMiss& a, const NearMiss& b) { return a.distance < b.distance; });
   const int end =
     w.segments[nearest->endSegment][walked[nearest->endSegment][0] == nearest->end ? 0 : 1];
-  const auto user = std::find(pointOf.begin(), pointOf.end(), end) - pointOf.begin();
+  const int user = firstInputPoint(pointOf, end);
   const std::string gap = formatNumber(std::ldexp(nearest->distance, frame.exponent));
   return std::to_string(count) +
     " segment end(s) stop a hair short of a segment they do not reach (within 1e-6 of the "

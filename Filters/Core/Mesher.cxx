@@ -155,10 +155,10 @@ std::string normalise(Work& w, const Pslg& input, const Array<int>& pointOf,
     if ((before.x != 0 && std::fabs(p.x) < 0x1p-200) ||
       (before.y != 0 && std::fabs(p.y) < 0x1p-200))
     {
-      const auto user = std::find(pointOf.begin(), pointOf.end(), static_cast<int>(i));
-      const Point& q = input.points[user - pointOf.begin()];
+      const int user = firstInputPoint(pointOf, static_cast<int>(i));
+      const Point& q = input.points[user];
       const double tiny = before.x != 0 && std::fabs(p.x) < 0x1p-200 ? q.x : q.y;
-      return "point " + std::to_string(user - pointOf.begin()) + " at " + formatPoint(q, format) +
+      return "point " + std::to_string(user) + " at " + formatPoint(q, format) +
         " has a coordinate (" + formatNumber(tiny) +
         ") too small next to the largest coordinate (" + formatNumber(maxAbs) +
         ") for exact arithmetic in double precision (nonzero coordinates must be above 2^-200 "
