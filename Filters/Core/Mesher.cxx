@@ -225,6 +225,20 @@ public:
   /// points turned a triangle over, past the angle bound or an edge past the
   /// maximum edge length: mesh without it.
   bool translationRoundedBadly() const { return roundedBadly; }
+  /// What the split crossings added to a mesh that outgrew a cap or memory,
+  /// where they outnumber the input points ("" otherwise): a streamline
+  /// circling a limit cycle crosses itself millions of times (a review).
+  std::string grownByCrossings() const
+  {
+    if (res.stats.crossingsSplit <= input.points.size())
+      return "";
+    return "; the input segments cross each other, and splitting them added " +
+      std::to_string(res.stats.crossingsSplit) + " points so far, more than the input's " +
+      std::to_string(input.points.size()) + " (e.g. " + firstCrossing +
+      "): lines that cross themselves or each other over and over (a streamline circling a "
+      "limit cycle) cross about as often as the square of their length, and each crossing is a "
+      "point of the mesh; trim them before meshing";
+  }
 
 private:
   void meshRounds(Work& w);
@@ -1413,14 +1427,15 @@ Result meshIn(
   {
     roundedBadly = mesher.translationRoundedBadly();
     Result r;
-    r.error = stop.reason;
+    r.error = stop.reason + (stop.outgrown ? mesher.grownByCrossings() : "");
     r.warnings = mesher.takeWarnings();
     return r;
   }
   catch (const std::bad_alloc&)
   {
     Result r;
-    r.error = "out of memory: the input needs a larger machine, or a Steiner point cap";
+    r.error = "out of memory: the input needs a larger machine, or a Steiner point cap" +
+      mesher.grownByCrossings();
     return r;
   }
 }

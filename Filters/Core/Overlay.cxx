@@ -41,6 +41,7 @@
 #include <limits>
 #include <new>
 #include <string>
+#include <utility>
 
 #if defined(__unix__) || defined(__APPLE__)
 #include <unistd.h>
@@ -56,6 +57,14 @@ double gammaForMinAngle(double minAngleDeg)
 
 namespace
 {
+
+/// A cap on the mesh's size was hit (the mesher then says what grew it).
+[[noreturn]] void outgrew(std::string reason)
+{
+  Stop stop{ std::move(reason) };
+  stop.outgrown = true;
+  throw stop;
+}
 
 /// Fraction of the circumradius within which an input point is preferred.
 /// SVR allows any constant below 1; inserting input points earlier means fewer
@@ -537,10 +546,10 @@ void Refiner::countSteiner()
 {
   ++out.steinerPoints;
   if (steinerCap > 0 && out.steinerPoints + kBoxCorners > steinerCap)
-    throw Stop{ "the overlay needs more than the allowed " + std::to_string(steinerCap) +
-      " Steiner points; raise the cap or coarsen the input" };
+    outgrew("the overlay needs more than the allowed " + std::to_string(steinerCap) +
+      " Steiner points; raise the cap or coarsen the input");
   if (out.steinerPoints > hardCap)
-    throw Stop{ "the overlay refinement exceeded " + std::to_string(hardCap) +
+    outgrew("the overlay refinement exceeded " + std::to_string(hardCap) +
       (capFromMemory > 0 ? " Steiner points, as many as this machine's memory (" +
             roughNumber(capFromMemory / 1e9) + " GB) holds" +
             (beyondGuarantee ? ": with a minimum angle above 30 degrees it need not end"
@@ -551,7 +560,7 @@ void Refiner::countSteiner()
           : gapRatio ? " Steiner points: the gap-ratio overlay grades slowly around input points "
                        "much closer together than the rest, and these are too many; without it "
                        "(the default overlay) such input needs far fewer"
-                     : " Steiner points, which suggests a numerical problem with this input") };
+                     : " Steiner points, which suggests a numerical problem with this input"));
 }
 
 Point Refiner::steinerPoint(int t, const Point& circumcenter) const

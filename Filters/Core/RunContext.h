@@ -38,6 +38,8 @@ struct Stop
     JoinSegments
   };
   Remedy remedy = Remedy::None;
+  /// The mesh outgrew a cap (Steiner points, this machine's memory).
+  bool outgrown = false;
 };
 
 class RunContext

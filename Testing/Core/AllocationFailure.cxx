@@ -87,5 +87,32 @@ TEST(AllocationFailure, EveryLargeAllocationFailsCleanlyOrFallsBack)
   EXPECT_EQ(outOfMemory, large - same);
 }
 
+TEST(AllocationFailure, OutOfMemoryAfterSplittingManyCrossingsSaysSo)
+{
+  // 60 horizontal and 60 vertical segments: 3,600 crossings split, more than
+  // the 240 input points, before the round that meshes them runs out of
+  // memory (a streamline circling a limit cycle did so with no word of why).
+  Pslg in;
+  for (int i = 0; i < 60; ++i)
+  {
+    const double c = i + 0.5;
+    const int first = static_cast<int>(in.points.size());
+    in.points.insert(in.points.end(), { { 0, c }, { 60, c }, { c, 0 }, { c, 60 } });
+    in.segments.insert(in.segments.end(), { { first, first + 1 }, { first + 2, first + 3 } });
+  }
+  Result r;
+  const long large = meshFailingAt(in, -1, r);
+  ASSERT_TRUE(r.ok) << r.error;
+  ASSERT_EQ(r.stats.crossingsSplit, 3600u);
+  // The last large allocation without a fallback.
+  for (long k = large - 1; k >= 0 && r.ok; --k)
+    meshFailingAt(in, k, r);
+  ASSERT_FALSE(r.ok);
+  EXPECT_EQ(r.error.rfind("out of memory", 0), 0u) << r.error;
+  EXPECT_NE(r.error.find("splitting them added 3600 points so far, more than the input's 240"),
+    std::string::npos)
+    << r.error;
+}
+
 } // namespace
 } // namespace osm

@@ -1467,6 +1467,50 @@ TEST(Mesher, SteinerCapGivesAClearError)
   }
 }
 
+/// k horizontal and k vertical segments across each other: k * k crossings.
+Pslg grid(int k)
+{
+  Pslg p;
+  for (int i = 0; i < k; ++i)
+  {
+    const double c = i + 0.5;
+    const int first = static_cast<int>(p.points.size());
+    p.points.insert(p.points.end(), { { 0, c }, { double(k), c }, { c, 0 }, { c, double(k) } });
+    p.segments.insert(p.segments.end(), { { first, first + 1 }, { first + 2, first + 3 } });
+  }
+  return p;
+}
+
+TEST(Mesher, ACapOutgrownBySplitCrossingsSaysSo)
+{
+  // A streamline circling a limit cycle crosses itself millions of times and
+  // outgrew memory with no word of why (a review). Where the crossings split
+  // outnumber the input points, the error says so; elsewhere it does not.
+  for (const int k : { 12, 3 })
+  {
+    const Result free = mesh(grid(k), Options{});
+    ASSERT_TRUE(free.ok) << free.error;
+    ASSERT_EQ(free.stats.crossingsSplit, std::size_t(k * k));
+    Options o;
+    o.maxSteinerPoints = free.stats.overlaySteinerPoints - 1;
+    const Result capped = mesh(grid(k), o);
+    ASSERT_FALSE(capped.ok);
+    const bool said = capped.error.find("cross each other") != std::string::npos;
+    EXPECT_EQ(said, k == 12) << capped.error;
+    if (k == 12)
+      EXPECT_NE(capped.error.find("; the input segments cross each other, and splitting them "
+                                  "added 144 points so far, more than the input's 48 (e.g. "
+                                  "input segment 0 and input segment 1 cross near (0.5, 0.5))"),
+        std::string::npos)
+        << capped.error;
+    EXPECT_NE(capped.error.find("more than the allowed"), std::string::npos) << capped.error;
+  }
+  Options o;
+  o.maxSteinerPoints = 10;
+  const Result r = mesh(wedgeInSquare(), o);
+  EXPECT_EQ(r.error.find("cross each other"), std::string::npos) << r.error;
+}
+
 TEST(Mesher, MaxEdgeLengthRefines)
 {
   Options o;
