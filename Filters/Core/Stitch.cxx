@@ -1,14 +1,14 @@
 #include "Stitch.h"
 
+#include "Clean.h"
 #include "HugePages.h"
+#include "NearMisses.h"
 #include "Predicates.h"
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <limits>
 #include <new>
-#include <queue>
 #include <string>
 
 namespace osm
@@ -116,54 +116,71 @@ void forEachPieceInSegmentOrder(const Walk& walk, F&& f)
       f(k);
 }
 
+/// Sorts the crossings by their pair of segments and keeps the first record
+/// of each: stable, so that reducing them on the way keeps the same ones.
+void keepFirstOfEachPair(Array<SegmentCrossing>& sc)
+{
+  std::stable_sort(sc.begin(), sc.end(), [](const SegmentCrossing& x, const SegmentCrossing& y) {
+    return x.a < y.a || (x.a == y.a && x.b < y.b);
+  });
+  sc.erase(
+    std::unique(sc.begin(), sc.end(),
+      [](const SegmentCrossing& x, const SegmentCrossing& y) { return x.a == y.a && x.b == y.b; }),
+    sc.end());
+}
+
 class Walker
 {
 public:
   Walker(const OverlayEdges& ov, const Overlay& overlay, const Array<Segment>& segments,
-    double sinTheta1, NearMissSearch search, Walk& out)
+    double sinTheta1, NearMissSearch search, double memoryBytes, Walk& out)
     : ov(ov)
     , P(overlay.mesh.points)
     , isInput(overlay.isInput)
     , segments(segments)
     , sinTheta1(sinTheta1)
-    , search(search)
+    , dangling(ov, P, segments, search)
     , out(out)
-  {
-    if (search.reach > 0)
-      findDanglingEnds();
-  }
+    , memoryBytes(memoryBytes)
+    , pointsMemoryHolds(memoryBytes > 0
+          ? std::max<std::size_t>(1, std::size_t(memoryBytes / (2 * kBytesPerTriangle)))
+          : 0)
+  {}
 
   void walk(int segment, int a, int b);
   void findSegmentCrossings(const Array<int>* rank);
-  void findNearMissesAtEnds();
-  void keepNearestMisses();
+  /// After the walks: the near misses between ends, and one per end.
+  void finishNearMisses()
+  {
+    dangling.findAtEnds(out.nearMisses);
+    dangling.keepNearest(out.nearMisses);
+  }
 
 private:
   int firstStep(int cur, int b, int& l, int& r, int& tri);
   bool ahead(const Point& from, const Point& x, const Point& B) const;
   void addCrossing(int edge, int piece, const Point& A, const Point& B);
-  void findDanglingEnds();
-  void checkNearMiss(int end);
-  void addNearMiss(int end, int segment);
-  template <typename F>
-  void forEachNeighbour(int v, F&& f) const;
-  bool alongItsChain(const NearMiss& m, const Array<std::pair<int, int>>& ends, Array<double>& best,
-    Array<int>& touched) const;
+  void refuseCrossings(const Crossing& c) const;
   void markDuplicates(const Array<int>* rank);
+  void addSegmentCrossing(int a, int b, const Point& p);
+  void countSegmentCrossings();
+  void refuseSegmentCrossings(std::size_t count) const;
 
   const OverlayEdges& ov;
   const Array<Point>& P;
   const Array<char>& isInput;
   const Array<Segment>& segments;
   const double sinTheta1;
-  const NearMissSearch search;
+  DanglingEnds dangling;
   Walk& out;
-  /// Per overlay vertex: the one segment that ends there (s >= 0), or of
-  /// several the first, an input segment where there is one (-2 - s), or
-  /// none (-1).
-  Array<int> endOf;
-  /// (input vertex, segment passing through it): such an end meets that segment.
-  Array<std::pair<int, int>> passes;
+  /// This machine's memory (0: unknown, no limit), the points it holds in a
+  /// mesh (Overlay.h's kBytesPerTriangle, 2 triangles per point), and a
+  /// quarter of them: at most so many pairs of segments may cross, counted
+  /// again when the records reach nextCount.
+  const double memoryBytes;
+  const std::size_t pointsMemoryHolds;
+  const std::size_t maxSegmentCrossings = pointsMemoryHolds / 4;
+  std::size_t nextCount = maxSegmentCrossings;
   int walking = -1;                       ///< the segment being walked
   int segmentStart = -1;                  ///< first vertex of the segment being walked
   double segmentLength = 0;               ///< its length (addCrossing's A to B)
@@ -192,38 +209,29 @@ int Walker::firstStep(int cur, int b, int& l, int& r, int& tri)
   const Point& C = P[cur];
   const Point& B = P[b];
   // First look for a neighbour on the way to b (within rounding): go there.
-  int t = ov.vtri[cur];
-  for (std::size_t k = 0; k <= ov.tris.size(); ++k)
-  {
-    const int i = cornerOf(ov.tris[t], cur);
-    const int u = ov.tris[t][(i + 1) % 3];
-    if (ahead(C, P[u], B) &&
-      onLineWithinRounding(orient2d(A, B, P[u]), P[u], std::sqrt(dist2(C, P[u])), segmentLength))
-    {
-      tri = ov.edgeId(t, (i + 2) % 3);
-      return u;
-    }
-    t = ov.nbr[t][(i + 1) % 3]; // rotate counter-clockwise around cur
-    if (t < 0 || t == ov.vtri[cur])
-      break;
-  }
+  int next = -1;
+  if (ov.aroundVertex(cur, [&](int t, int i) {
+        const int u = ov.tris[t][(i + 1) % 3];
+        if (!ahead(C, P[u], B) ||
+          !onLineWithinRounding(
+            orient2d(A, B, P[u]), P[u], std::sqrt(dist2(C, P[u])), segmentLength))
+          return false;
+        tri = ov.edgeId(t, (i + 2) % 3);
+        next = u;
+        return true;
+      }) >= 0)
+    return next;
   // Otherwise b lies strictly inside the angle of one incident triangle.
-  t = ov.vtri[cur];
-  for (std::size_t k = 0; k <= ov.tris.size(); ++k)
-  {
-    const int i = cornerOf(ov.tris[t], cur);
+  tri = ov.aroundVertex(cur, [&](int t, int i) {
     const int u = ov.tris[t][(i + 1) % 3], w = ov.tris[t][(i + 2) % 3];
-    if (orientSign(C, P[u], B) > 0 && orientSign(C, P[w], B) < 0)
-    {
-      r = u;
-      l = w;
-      tri = t;
-      return -1;
-    }
-    t = ov.nbr[t][(i + 1) % 3];
-    if (t < 0)
-      break;
-  }
+    if (orientSign(C, P[u], B) <= 0 || orientSign(C, P[w], B) >= 0)
+      return false;
+    r = u;
+    l = w;
+    return true;
+  });
+  if (tri >= 0)
+    return -1;
   throw Stop{ "internal error: cannot leave vertex " + std::to_string(cur) + " while stitching" };
 }
 
@@ -271,177 +279,32 @@ void Walker::addCrossing(int edge, int piece, const Point& A, const Point& B)
   const double sine = std::fabs(cross(dx, dy, ex, ey)) / (segmentLength * edgeLength);
   c.good = sine > sinTheta1;
   out.crossings.push_back(c);
+  if (out.crossings.size() > pointsMemoryHolds && pointsMemoryHolds > 0)
+    refuseCrossings(c);
   // A segment passing a hair from a vertex crosses the vertex's edges, so
   // near misses cost nothing to find here.
-  checkNearMiss(ends[0]);
-  checkNearMiss(ends[1]);
+  dangling.crossedNear(ends[0], walking, out.nearMisses);
+  dangling.crossedNear(ends[1], walking, out.nearMisses);
 }
 
-void Walker::findDanglingEnds()
+/// Every crossing of an overlay edge kept is a point of the mesh. Segments
+/// far longer than the spacing of the input points they pass cross a dense
+/// overlay there: a streamline circling a limit cycle, 70,000 points a hair
+/// apart, took 350 s and 17.5 GB to cross it in its first round (a review). As
+/// many crossings as the memory holds points end the run, with a word of why.
+void Walker::refuseCrossings(const Crossing& c) const
 {
-  endOf.assign(P.size(), -1);
-  for (std::size_t s = 0; s < segments.size(); ++s)
-    for (int v : segments[s])
-      endOf[v] = endOf[v] == -1 ? static_cast<int>(s) : endOf[v] >= 0 ? -2 - endOf[v] : endOf[v];
-}
-
-/// A segment passing a hair from a dangling end crosses the end's edges:
-/// records end if it lies within reach of the segment being walked.
-void Walker::checkNearMiss(int end)
-{
-  if (search.reach > 0 && endOf[end] >= 0 && endOf[end] != walking)
-    addNearMiss(end, walking);
-}
-
-/// Records end (dangling, its segment endOf[end]) as a near miss of segment
-/// s, if both are the user's, within reach, and share no vertex (those meet
-/// at a small angle, on purpose).
-void Walker::addNearMiss(int end, int s)
-{
-  const int t = endOf[end];
-  const auto inputs = static_cast<int>(search.inputSegments);
-  if (t >= inputs || s >= inputs)
-    return;
-  const Segment &e = segments[t], &u = segments[s];
-  if (e[0] == u[0] || e[0] == u[1] || e[1] == u[0] || e[1] == u[1])
-    return;
-  const double d = distanceToSegment(P[end], P[u[0]], P[u[1]]);
-  if (d > 0 && d <= search.at(P[end]))
-    out.nearMisses.push_back({ end, t, s, d });
-}
-
-/// An end a hair from another segment's end: the walk of neither crosses
-/// the other's edges, but the overlay joins them (the nearest neighbour of a
-/// point is a Delaunay neighbour), maybe through points in the gap that end
-/// no segment (isolated input points, Steiner points): those within reach
-/// are passed through.
-void Walker::findNearMissesAtEnds()
-{
-  if (search.reach <= 0)
-    return;
-  Array<int> near; // the vertices within reach of v reached so far
-  for (std::size_t v = 0; v < endOf.size(); ++v)
-  {
-    if (endOf[v] < 0)
-      continue;
-    const double reach = search.at(P[v]);
-    near.assign(1, static_cast<int>(v));
-    for (std::size_t k = 0; k < near.size() && k < 64; ++k)
-      forEachNeighbour(near[k], [&](int u) {
-        if (dist2(P[v], P[u]) > reach * reach ||
-          std::find(near.begin(), near.end(), u) != near.end())
-          return;
-        near.push_back(u);
-        if (endOf[u] != -1)
-          addNearMiss(static_cast<int>(v), endOf[u] >= 0 ? endOf[u] : -2 - endOf[u]);
-      });
-  }
-}
-
-template <typename F>
-void Walker::forEachNeighbour(int v, F&& f) const
-{
-  const int first = ov.vtri[v];
-  int t = first;
-  for (std::size_t k = 0; k <= ov.tris.size() && t >= 0; ++k)
-  {
-    const int i = cornerOf(ov.tris[t], v);
-    f(ov.tris[t][(i + 1) % 3]);
-    t = ov.nbr[t][(i + 1) % 3];
-    if (t == first)
-      break;
-  }
-}
-
-/// Whether the end's own chain reaches the near segment within 64 times the
-/// gap: a dense polyline turning back, or one whose last segments are shorter
-/// than the reach, lies near its own earlier segments, not short of another
-/// (a review). A loop that misses closing by the gap is far longer. ends:
-/// (vertex, segment ending there), sorted; best and touched: scratch, all
-/// infinite and empty between calls.
-bool Walker::alongItsChain(const NearMiss& m, const Array<std::pair<int, int>>& ends,
-  Array<double>& best, Array<int>& touched) const
-{
-  const double limit = 64 * m.distance;
-  const Segment& target = segments[m.segment];
-  using Entry = std::pair<double, int>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
-  queue.push({ 0.0, m.end });
-  best[m.end] = 0;
-  touched.push_back(m.end);
-  bool found = false;
-  for (int pops = 0; !queue.empty() && pops < 256 && !found; ++pops)
-  {
-    const auto [d, v] = queue.top();
-    queue.pop();
-    found = v == target[0] || v == target[1];
-    if (d > best[v])
-      continue;
-    for (auto it = std::lower_bound(ends.begin(), ends.end(), std::make_pair(v, -1));
-         it != ends.end() && it->first == v; ++it)
-    {
-      const Segment& e = segments[it->second];
-      const int u = e[0] == v ? e[1] : e[0];
-      const double du = d + std::sqrt(dist2(P[v], P[u]));
-      if (du <= limit && du < best[u])
-      {
-        if (best[u] == std::numeric_limits<double>::infinity())
-          touched.push_back(u);
-        best[u] = du;
-        queue.push({ du, u });
-      }
-    }
-  }
-  for (int u : touched)
-    best[u] = std::numeric_limits<double>::infinity();
-  touched.clear();
-  return found;
-}
-
-/// One near miss per end, the nearest (ties to the lower segment: the same
-/// whatever the walk order), in the order of the ends.
-void Walker::keepNearestMisses()
-{
-  auto& n = out.nearMisses;
-  // Not an end that a segment passes through, nor one whose segment's other
-  // end the near segment passes through (a small angle there), nor one whose
-  // segment passes through an end of the near one (they meet there).
-  std::sort(passes.begin(), passes.end());
-  const auto passed = [&](int v, int s) {
-    const auto it = std::lower_bound(passes.begin(), passes.end(), std::make_pair(v, s));
-    return it != passes.end() && it->first == v && (s < 0 || it->second == s);
-  };
-  n.erase(std::remove_if(n.begin(), n.end(),
-            [&](const NearMiss& m) {
-              const Segment& e = segments[m.endSegment];
-              const Segment& u = segments[m.segment];
-              return passed(m.end, -1) || passed(e[0] == m.end ? e[1] : e[0], m.segment) ||
-                passed(u[0], m.endSegment) || passed(u[1], m.endSegment);
-            }),
-    n.end());
-  if (n.empty())
-    return;
-  // Nor a segment of the end's own chain (the segments by their ends, and
-  // Dijkstra's distances along them; only where near misses are left).
-  Array<std::pair<int, int>> ends;
-  ends.reserve(2 * segments.size());
-  for (std::size_t k = 0; k < segments.size(); ++k)
-    for (int v : segments[k])
-      ends.push_back({ v, static_cast<int>(k) });
-  std::sort(ends.begin(), ends.end());
-  Array<double> best(P.size(), std::numeric_limits<double>::infinity());
-  Array<int> touched;
-  n.erase(std::remove_if(n.begin(), n.end(),
-            [&](const NearMiss& m) { return alongItsChain(m, ends, best, touched); }),
-    n.end());
-  std::sort(n.begin(), n.end(), [](const NearMiss& x, const NearMiss& y) {
-    return x.end != y.end        ? x.end < y.end
-      : x.distance != y.distance ? x.distance < y.distance
-                                 : x.segment < y.segment;
-  });
-  n.erase(std::unique(n.begin(), n.end(),
-            [](const NearMiss& x, const NearMiss& y) { return x.end == y.end; }),
-    n.end());
+  Stop stop{ "the segments cross more than " + std::to_string(pointsMemoryHolds) +
+    " edges of the overlay, as many points as this machine's memory (" +
+    roughNumber(memoryBytes / 1e9) +
+    " GB) holds in a mesh, and each crossing kept is one: segments far longer than the spacing "
+    "of the input points they pass (as a streamline circling a limit cycle passes its own earlier "
+    "points a hair apart) cross a dense overlay there; trim or coarsen such lines before meshing; "
+    "e.g." };
+  stop.segments = { walking, -1 };
+  stop.located = true;
+  stop.at = c.p;
+  throw stop;
 }
 
 void Walker::walk(int segment, int a, int b)
@@ -504,8 +367,7 @@ void Walker::walk(int segment, int a, int b)
     if (next != b && isInput[next])
     {
       ++out.splitsAtInputVertices;
-      if (search.reach > 0)
-        passes.push_back({ next, segment });
+      dangling.passesThrough(next, segment);
     }
     else if (next != b)
       steinerHits.push_back({ next, segment });
@@ -571,12 +433,50 @@ void Walker::markDuplicates(const Array<int>* rank)
   }
 }
 
+/// A pair of crossing segments is recorded once per triangle or edge where
+/// it is found (a streamline circling a limit cycle: over 2.6e8 records of
+/// 8.6e6 pairs, which outgrew 12 GB):
+/// the records are reduced to one per pair each time they grow by the cap.
+void Walker::addSegmentCrossing(int a, int b, const Point& p)
+{
+  out.segmentCrossings.push_back({ std::min(a, b), std::max(a, b), p });
+  if (maxSegmentCrossings > 0 && out.segmentCrossings.size() >= nextCount)
+    countSegmentCrossings();
+}
+
+void Walker::countSegmentCrossings()
+{
+  keepFirstOfEachPair(out.segmentCrossings);
+  nextCount = out.segmentCrossings.size() + maxSegmentCrossings;
+  refuseSegmentCrossings(out.segmentCrossings.size());
+}
+
+/// Every crossing split is a point of the next round's mesh. A streamline
+/// circling a limit cycle crosses itself some 10^8 times, and their list
+/// alone outgrew memory (a review): more than a quarter of the points the
+/// memory holds in a mesh end the run, with a word of why.
+void Walker::refuseSegmentCrossings(std::size_t count) const
+{
+  if (maxSegmentCrossings == 0 || count <= maxSegmentCrossings)
+    return;
+  const SegmentCrossing& first = out.segmentCrossings.front();
+  Stop stop{ "the input segments cross each other more than " +
+    std::to_string(maxSegmentCrossings) +
+    " times, a quarter of the points this machine's memory (" + roughNumber(memoryBytes / 1e9) +
+    " GB) holds in a mesh, and each crossing split is one: lines that cross themselves or each "
+    "other over and over (a streamline circling a limit cycle) cross about as often as the square "
+    "of their length; trim them before meshing; e.g." };
+  stop.segments = { first.a, first.b };
+  stop.located = true;
+  stop.at = first.p;
+  throw stop;
+}
+
 void Walker::findSegmentCrossings(const Array<int>* rank)
 {
   markDuplicates(rank);
   auto record = [&](int pa, int pb, const Point& p) {
-    const int a = out.pieces[pa].segment, b = out.pieces[pb].segment;
-    out.segmentCrossings.push_back({ std::min(a, b), std::max(a, b), p });
+    addSegmentCrossing(out.pieces[pa].segment, out.pieces[pb].segment, p);
   };
   // Two segments that cross share an overlay triangle...
   std::sort(triPiece.begin(), triPiece.end());
@@ -638,17 +538,10 @@ void Walker::findSegmentCrossings(const Array<int>* rank)
   {
     const auto [v, s] = steinerHits[k];
     if (v == steinerHits[k - 1].first && s != steinerHits[k - 1].second)
-      out.segmentCrossings.push_back(
-        { std::min(s, steinerHits[k - 1].second), std::max(s, steinerHits[k - 1].second), P[v] });
+      addSegmentCrossing(s, steinerHits[k - 1].second, P[v]);
   }
-  auto& sc = out.segmentCrossings;
-  std::sort(sc.begin(), sc.end(), [](const SegmentCrossing& x, const SegmentCrossing& y) {
-    return x.a < y.a || (x.a == y.a && x.b < y.b);
-  });
-  sc.erase(
-    std::unique(sc.begin(), sc.end(),
-      [](const SegmentCrossing& x, const SegmentCrossing& y) { return x.a == y.a && x.b == y.b; }),
-    sc.end());
+  keepFirstOfEachPair(out.segmentCrossings);
+  refuseSegmentCrossings(out.segmentCrossings.size());
 }
 
 /// Segment indices by their smaller vertex, bucketed into as many classes as
@@ -678,10 +571,10 @@ Array<int> walkOrder(const Array<Segment>& segments, std::size_t vertexCount)
 
 Walk walkSegments(const OverlayEdges& ov, const Overlay& overlay, const Array<Segment>& segments,
   double sinTheta1, RunContext& run, const Array<int>* order, const Array<int>* rank,
-  NearMissSearch nearMisses)
+  NearMissSearch nearMisses, double memoryBytes)
 {
   Walk out;
-  Walker walker(ov, overlay, segments, sinTheta1, nearMisses, out);
+  Walker walker(ov, overlay, segments, sinTheta1, nearMisses, memoryBytes, out);
   // In the order of their smaller vertex, which the overlay numbers along a
   // Hilbert curve: consecutive walks then touch nearby triangles. In index
   // order (random on a segment soup) each walk starts with cache misses:
@@ -699,8 +592,7 @@ Walk walkSegments(const OverlayEdges& ov, const Overlay& overlay, const Array<Se
   }
   run.poll();
   walker.findSegmentCrossings(rank);
-  walker.findNearMissesAtEnds();
-  walker.keepNearestMisses();
+  walker.finishNearMisses();
   return out;
 }
 

@@ -56,6 +56,33 @@ struct OverlayEdges
   }
   /// Ids are below this bound.
   std::size_t idBound() const { return 3 * tris.size(); }
+  /// Calls f(t, i) for the triangles t around vertex v (its corner i),
+  /// counter-clockwise from vtri[v], until f returns true (then returns t),
+  /// the turn closes or meets the boundary (then returns -1).
+  template <typename F>
+  int aroundVertex(int v, F&& f) const
+  {
+    int t = vtri[v];
+    for (std::size_t k = 0; k <= tris.size() && t >= 0; ++k)
+    {
+      const int i = cornerOf(tris[t], v);
+      if (f(t, i))
+        return t;
+      t = nbr[t][(i + 1) % 3];
+      if (t == vtri[v])
+        break;
+    }
+    return -1;
+  }
+  /// Calls f(u) for each neighbour u of vertex v.
+  template <typename F>
+  void forEachNeighbour(int v, F&& f) const
+  {
+    aroundVertex(v, [&](int t, int i) {
+      f(tris[t][(i + 1) % 3]);
+      return false;
+    });
+  }
 };
 
 /// The overlay's live triangles in compact form. Releases the mesh's
@@ -148,10 +175,13 @@ struct NearMissSearch
 /// in the spatial order of their smaller vertex. The stitched graph does not
 /// depend on the order. Where pieces of segments overlap, the piece of the
 /// segment with the smallest rank is kept (ranks per segment; by default the
-/// index), so that it carries that segment's data.
+/// index), so that it carries that segment's data. Where more pairs of
+/// segments cross than a quarter of the points memoryBytes holds in a mesh
+/// (0: unknown, no limit), throws a Stop (outgrown) naming one crossing.
 Walk walkSegments(const OverlayEdges& ov, const Overlay& overlay, const Array<Segment>& segments,
   double sinTheta1, RunContext& run, const Array<int>* order = nullptr,
-  const Array<int>* rank = nullptr, NearMissSearch nearMisses = {});
+  const Array<int>* rank = nullptr, NearMissSearch nearMisses = {},
+  double memoryBytes = physicalMemoryBytes());
 
 /// Sides of a planar-graph edge that lie in a face still to be completed.
 enum OpenSide : std::uint8_t

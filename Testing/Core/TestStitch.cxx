@@ -247,6 +247,70 @@ TEST(Stitch, WalksFollowTheSegmentInOrder)
 /// Segments are walked in spatial order; everything stitching makes from the
 /// walks must be what walks in index order would give: the same graph, edge
 /// for edge, the same inspected edges and the same segment crossings.
+TEST(Stitch, MoreCrossingsThanMemoryCouldMeshAreRefusedWithOne)
+{
+  // 12 horizontal and 12 vertical segments: 144 pairs cross. A streamline
+  // circling a limit cycle crossed itself so often that the list of pairs
+  // outgrew memory (a review); the walks stop at a quarter of the points the
+  // memory holds in a mesh (memory / 1,200 bytes).
+  Array<Point> pts;
+  Array<Segment> segs;
+  for (int i = 0; i < 12; ++i)
+  {
+    const double c = i + 0.5;
+    const int first = static_cast<int>(pts.size());
+    pts.insert(pts.end(), { { 0, c }, { 12, c }, { c, 0 }, { c, 12 } });
+    segs.insert(segs.end(), { { first, first + 1 }, { first + 2, first + 3 } });
+  }
+  Stitched s = stitchInput(pts, segs, 30);
+  ASSERT_EQ(s.walk.segmentCrossings.size(), 144u);
+  RunContext run(nullptr);
+  const double sinTheta1 = std::sin(30 * kPi / 180);
+  const auto walkWith = [&](double memory) {
+    return walkSegments(s.ov, s.overlay, s.segments, sinTheta1, run, nullptr, nullptr, {}, memory);
+  };
+  EXPECT_EQ(walkWith(144 * 1200).segmentCrossings.size(), 144u);
+  try
+  {
+    walkWith(143 * 1200);
+    FAIL() << "144 pairs crossed where 143 may";
+  }
+  catch (const Stop& stop)
+  {
+    EXPECT_EQ(stop.reason.rfind("the input segments cross each other more than 143 times", 0), 0u)
+      << stop.reason;
+    EXPECT_NE(stop.reason.find("a streamline circling a limit cycle"), std::string::npos);
+    EXPECT_TRUE(stop.located);
+    ASSERT_GE(stop.segments[0], 0);
+    ASSERT_GE(stop.segments[1], 0);
+    const Array<Point>& P = s.overlay.mesh.points;
+    const Segment &a = s.segments[stop.segments[0]], &b = s.segments[stop.segments[1]];
+    EXPECT_LT(orientSign(P[a[0]], P[a[1]], P[b[0]]) * orientSign(P[a[0]], P[a[1]], P[b[1]]), 0);
+    EXPECT_LT(orientSign(P[b[0]], P[b[1]], P[a[0]]) * orientSign(P[b[0]], P[b[1]], P[a[1]]), 0);
+  }
+  // The crossings of overlay edges: at most as many as the memory holds
+  // points in a mesh (memory / 300 bytes); one more ends the walk there.
+  const std::size_t n = s.walk.crossings.size();
+  ASSERT_LT(n, 144u * 4);
+  const std::string walkCap =
+    "the segments cross more than " + std::to_string(n - 1) + " edges of the overlay";
+  for (const std::size_t held : { n - 1, n })
+    try
+    {
+      walkWith(300.0 * double(held));
+      FAIL() << "no error with " << held;
+    }
+    catch (const Stop& stop)
+    {
+      // With n, the pairs' quarter of it is too few.
+      EXPECT_EQ(
+        stop.reason.rfind(held < n ? walkCap : "the input segments cross each other", 0), 0u)
+        << stop.reason;
+      EXPECT_TRUE(stop.located);
+      EXPECT_GE(stop.segments[0], 0);
+    }
+}
+
 TEST(Stitch, TheStitchedGraphDoesNotDependOnTheWalkOrder)
 {
   for (unsigned seed = 1; seed <= 6; ++seed)
