@@ -226,18 +226,18 @@ public:
   /// maximum edge length: mesh without it.
   bool translationRoundedBadly() const { return roundedBadly; }
   /// What the split crossings added to a mesh that outgrew a cap or memory,
-  /// where they outnumber the input points ("" otherwise): a streamline
-  /// circling a limit cycle crosses itself millions of times (a review).
+  /// where they are over 10 times the input points ("" otherwise): a
+  /// streamline circling a limit cycle crossed itself 8.6 million times (a
+  /// review); a grid of k lines each way has k / 4 times.
   std::string grownByCrossings() const
   {
-    if (res.stats.crossingsSplit <= input.points.size())
+    if (res.stats.crossingsSplit <= 10 * input.points.size())
       return "";
-    return "; the input segments cross each other, and splitting them added " +
-      std::to_string(res.stats.crossingsSplit) + " points so far, more than the input's " +
+    return "; the input segments cross each other: splitting them added " +
+      std::to_string(res.stats.crossingsSplit) + " points so far to the input's " +
       std::to_string(input.points.size()) + " (e.g. " + firstCrossing +
-      "): lines that cross themselves or each other over and over (a streamline circling a "
-      "limit cycle) cross about as often as the square of their length, and each crossing is a "
-      "point of the mesh; trim them before meshing";
+      "), each a point of the mesh; lines that cross many others, or themselves over and over "
+      "(a streamline circling a limit cycle), cross as often as the square of their length";
   }
 
 private:
@@ -453,6 +453,7 @@ Result Mesher::execute()
       stop.reason += " (" + names + ")";
     if (stop.located)
       stop.reason += " near " + formatPoint(frame.toUser(stop.at), options.pointFormat);
+    stop.reason += stop.tail;
     // Borders that two polygons share, digitised twice, differ by such gaps;
     // segments meant to meet at one point cross at points rounded apart.
     const std::string tolerance = std::string(options.mergeTolerance > 0 ? "larger " : "") +

@@ -40,6 +40,8 @@ struct Stop
   Remedy remedy = Remedy::None;
   /// The mesh outgrew a cap (Steiner points, this machine's memory).
   bool outgrown = false;
+  /// Said after the segments and the point.
+  std::string tail;
 };
 
 class RunContext

@@ -179,7 +179,9 @@ private:
   /// again when the records reach nextCount.
   const double memoryBytes;
   const std::size_t pointsMemoryHolds;
-  const std::size_t maxSegmentCrossings = pointsMemoryHolds / 4;
+  const std::size_t maxSegmentCrossings = pointsMemoryHolds > 0
+    ? std::max<std::size_t>(1, pointsMemoryHolds / 4)
+    : 0;
   std::size_t nextCount = maxSegmentCrossings;
   int walking = -1;                       ///< the segment being walked
   int segmentStart = -1;                  ///< first vertex of the segment being walked
@@ -295,12 +297,12 @@ void Walker::addCrossing(int edge, int piece, const Point& A, const Point& B)
 void Walker::refuseCrossings(const Crossing& c) const
 {
   Stop stop{ "the segments cross more than " + std::to_string(pointsMemoryHolds) +
-    " edges of the overlay, as many points as this machine's memory (" +
-    roughNumber(memoryBytes / 1e9) +
-    " GB) holds in a mesh, and each crossing kept is one: segments far longer than the spacing "
-    "of the input points they pass (as a streamline circling a limit cycle passes its own earlier "
-    "points a hair apart) cross a dense overlay there; trim or coarsen such lines before meshing; "
-    "e.g." };
+    " edges of the overlay, e.g." };
+  stop.tail = ": as many as this machine's memory (" + roughNumber(memoryBytes / 1e9) +
+    " GB) holds points in a mesh, and each crossing kept is one; segments far longer than the "
+    "spacing of the input points they pass (as a streamline circling a limit cycle passes its own "
+    "earlier points a hair apart) cross a dense overlay there: trim or coarsen such lines before "
+    "meshing";
   stop.segments = { walking, -1 };
   stop.located = true;
   stop.at = c.p;
@@ -447,6 +449,7 @@ void Walker::addSegmentCrossing(int a, int b, const Point& p)
 void Walker::countSegmentCrossings()
 {
   keepFirstOfEachPair(out.segmentCrossings);
+  ++out.segmentCrossingsReduced;
   nextCount = out.segmentCrossings.size() + maxSegmentCrossings;
   refuseSegmentCrossings(out.segmentCrossings.size());
 }
@@ -461,11 +464,11 @@ void Walker::refuseSegmentCrossings(std::size_t count) const
     return;
   const SegmentCrossing& first = out.segmentCrossings.front();
   Stop stop{ "the input segments cross each other more than " +
-    std::to_string(maxSegmentCrossings) +
-    " times, a quarter of the points this machine's memory (" + roughNumber(memoryBytes / 1e9) +
-    " GB) holds in a mesh, and each crossing split is one: lines that cross themselves or each "
-    "other over and over (a streamline circling a limit cycle) cross about as often as the square "
-    "of their length; trim them before meshing; e.g." };
+    std::to_string(maxSegmentCrossings) + " times, e.g." };
+  stop.tail = ": a quarter of the points this machine's memory (" + roughNumber(memoryBytes / 1e9) +
+    " GB) holds in a mesh, and each crossing split is one; lines that cross many others, or "
+    "themselves over and over (a streamline circling a limit cycle), cross as often as the square "
+    "of their length: trim them before meshing";
   stop.segments = { first.a, first.b };
   stop.located = true;
   stop.at = first.p;

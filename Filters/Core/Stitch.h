@@ -139,6 +139,7 @@ struct Walk
   Array<Crossing> crossings;
   Array<int> firstPiece; ///< per segment: where its pieces start (none if it has none)
   Array<SegmentCrossing> segmentCrossings;
+  std::size_t segmentCrossingsReduced = 0; ///< times reduced to one per pair on the way
   std::size_t splitsAtInputVertices = 0;
   /// Per duplicate piece: the segment whose piece is kept, the duplicate's
   /// segment (the later in rank), and the overlay vertices the piece runs between.
@@ -175,9 +176,10 @@ struct NearMissSearch
 /// in the spatial order of their smaller vertex. The stitched graph does not
 /// depend on the order. Where pieces of segments overlap, the piece of the
 /// segment with the smallest rank is kept (ranks per segment; by default the
-/// index), so that it carries that segment's data. Where more pairs of
-/// segments cross than a quarter of the points memoryBytes holds in a mesh
-/// (0: unknown, no limit), throws a Stop (outgrown) naming one crossing.
+/// index), so that it carries that segment's data. Where the segments
+/// cross more overlay edges than memoryBytes holds points in a mesh, or more
+/// pairs of segments cross than a quarter of that (0: unknown, no limit),
+/// throws a Stop naming a segment and a point.
 Walk walkSegments(const OverlayEdges& ov, const Overlay& overlay, const Array<Segment>& segments,
   double sinTheta1, RunContext& run, const Array<int>* order = nullptr,
   const Array<int>* rank = nullptr, NearMissSearch nearMisses = {},

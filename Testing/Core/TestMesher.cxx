@@ -1485,8 +1485,9 @@ TEST(Mesher, ACapOutgrownBySplitCrossingsSaysSo)
 {
   // A streamline circling a limit cycle crosses itself millions of times and
   // outgrew memory with no word of why (a review). Where the crossings split
-  // outnumber the input points, the error says so; elsewhere it does not.
-  for (const int k : { 12, 3 })
+  // are over 10 times the input points, the error says so; elsewhere (a grid
+  // of k lines each way: k / 4 times) it does not.
+  for (const int k : { 48, 12 })
   {
     const Result free = mesh(grid(k), Options{});
     ASSERT_TRUE(free.ok) << free.error;
@@ -1496,11 +1497,12 @@ TEST(Mesher, ACapOutgrownBySplitCrossingsSaysSo)
     const Result capped = mesh(grid(k), o);
     ASSERT_FALSE(capped.ok);
     const bool said = capped.error.find("cross each other") != std::string::npos;
-    EXPECT_EQ(said, k == 12) << capped.error;
-    if (k == 12)
-      EXPECT_NE(capped.error.find("; the input segments cross each other, and splitting them "
-                                  "added 144 points so far, more than the input's 48 (e.g. "
-                                  "input segment 0 and input segment 1 cross near (0.5, 0.5))"),
+    EXPECT_EQ(said, k == 48) << capped.error;
+    if (k == 48)
+      EXPECT_NE(capped.error.find("; the input segments cross each other: splitting them added "
+                                  "2304 points so far to the input's 192 (e.g. input segment 0 "
+                                  "and input segment 1 cross near (0.5, 0.5)), each a point of "
+                                  "the mesh"),
         std::string::npos)
         << capped.error;
     EXPECT_NE(capped.error.find("more than the allowed"), std::string::npos) << capped.error;

@@ -244,9 +244,6 @@ TEST(Stitch, WalksFollowTheSegmentInOrder)
   EXPECT_EQ(s.walk.pieces.back().v1, s.overlay.inputVertex[1]);
 }
 
-/// Segments are walked in spatial order; everything stitching makes from the
-/// walks must be what walks in index order would give: the same graph, edge
-/// for edge, the same inspected edges and the same segment crossings.
 TEST(Stitch, MoreCrossingsThanMemoryCouldMeshAreRefusedWithOne)
 {
   // 12 horizontal and 12 vertical segments: 144 pairs cross. A streamline
@@ -277,9 +274,10 @@ TEST(Stitch, MoreCrossingsThanMemoryCouldMeshAreRefusedWithOne)
   }
   catch (const Stop& stop)
   {
-    EXPECT_EQ(stop.reason.rfind("the input segments cross each other more than 143 times", 0), 0u)
-      << stop.reason;
-    EXPECT_NE(stop.reason.find("a streamline circling a limit cycle"), std::string::npos);
+    EXPECT_EQ(stop.reason, "the input segments cross each other more than 143 times, e.g.");
+    EXPECT_EQ(stop.tail.rfind(": a quarter of the points this machine's memory", 0), 0u)
+      << stop.tail;
+    EXPECT_NE(stop.tail.find("a streamline circling a limit cycle"), std::string::npos);
     EXPECT_TRUE(stop.located);
     ASSERT_GE(stop.segments[0], 0);
     ASSERT_GE(stop.segments[1], 0);
@@ -306,11 +304,53 @@ TEST(Stitch, MoreCrossingsThanMemoryCouldMeshAreRefusedWithOne)
       EXPECT_EQ(
         stop.reason.rfind(held < n ? walkCap : "the input segments cross each other", 0), 0u)
         << stop.reason;
+      EXPECT_EQ(
+        stop.tail.rfind(held < n ? ": as many as this machine's memory" : ": a quarter", 0), 0u)
+        << stop.tail;
       EXPECT_TRUE(stop.located);
       EXPECT_GE(stop.segments[0], 0);
     }
 }
 
+TEST(Stitch, CrossingsReducedOnTheWayKeepTheSamePointPerPair)
+{
+  // The records of crossing pairs are reduced whenever they grow by the cap:
+  // the pairs and the point kept for each must not depend on when.
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> U(0, 1);
+  Array<Point> pts;
+  Array<Segment> segs;
+  for (int i = 0; i < 120; ++i)
+  {
+    pts.push_back({ U(rng), U(rng) });
+    pts.push_back({ U(rng), U(rng) });
+    segs.push_back({ 2 * i, 2 * i + 1 });
+  }
+  Stitched s = stitchInput(pts, segs, 30);
+  RunContext run(nullptr);
+  const double sinTheta1 = std::sin(30 * kPi / 180);
+  const Walk ref =
+    walkSegments(s.ov, s.overlay, s.segments, sinTheta1, run, nullptr, nullptr, {}, 0);
+  const std::size_t pairs = ref.segmentCrossings.size();
+  ASSERT_GT(pairs, 1000u);
+  // Memory for as many pairs as cross (1,200 bytes each), and 4 times as
+  // many crossings of overlay edges, which is enough.
+  ASSERT_LE(ref.crossings.size(), 4 * pairs);
+  const Walk w = walkSegments(
+    s.ov, s.overlay, s.segments, sinTheta1, run, nullptr, nullptr, {}, 1200.0 * double(pairs));
+  EXPECT_EQ(ref.segmentCrossingsReduced, 0u);
+  EXPECT_GE(w.segmentCrossingsReduced, 1u);
+  ASSERT_EQ(w.segmentCrossings.size(), pairs);
+  for (std::size_t k = 0; k < pairs; ++k)
+  {
+    const SegmentCrossing &x = w.segmentCrossings[k], &y = ref.segmentCrossings[k];
+    EXPECT_TRUE(x.a == y.a && x.b == y.b && x.p == y.p) << "crossing " << k;
+  }
+}
+
+/// Segments are walked in spatial order; everything stitching makes from the
+/// walks must be what walks in index order would give: the same graph, edge
+/// for edge, the same inspected edges and the same segment crossings.
 TEST(Stitch, TheStitchedGraphDoesNotDependOnTheWalkOrder)
 {
   for (unsigned seed = 1; seed <= 6; ++seed)
