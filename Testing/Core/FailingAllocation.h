@@ -1,7 +1,8 @@
 // Allocation failure on demand, for the tests that check what a failed
-// allocation does: the global operator new (and new[], plain and aligned)
-// replaced so that the k-th allocation of at least kLarge bytes, counted from
-// a start, throws std::bad_alloc. Include it in exactly one file of a test
+// allocation does: the global operator new (and new[], plain and aligned,
+// throwing and nothrow) replaced so that the k-th allocation of at least
+// kLarge bytes, counted from a start, throws std::bad_alloc (the nothrow
+// forms return null). Include it in exactly one file of a test
 // executable (the replacement applies to the whole program).
 #ifndef osm_FailingAllocation_h
 #define osm_FailingAllocation_h
@@ -85,6 +86,55 @@ void* operator new(std::size_t n, std::align_val_t a)
 void* operator new[](std::size_t n, std::align_val_t a)
 {
   return failing_allocation::allocateAligned(n, a);
+}
+// std::stable_sort's buffer comes from the nothrow form (and does without
+// it): replaced too, so that every form frees what its own form allocated
+// (AddressSanitizer saw the library's nothrow new freed here).
+void* operator new(std::size_t n, const std::nothrow_t&) noexcept
+{
+  try
+  {
+    return failing_allocation::allocate(n);
+  }
+  catch (const std::bad_alloc&)
+  {
+    return nullptr;
+  }
+}
+void* operator new[](std::size_t n, const std::nothrow_t& tag) noexcept
+{
+  return operator new(n, tag);
+}
+void* operator new(std::size_t n, std::align_val_t a, const std::nothrow_t&) noexcept
+{
+  try
+  {
+    return failing_allocation::allocateAligned(n, a);
+  }
+  catch (const std::bad_alloc&)
+  {
+    return nullptr;
+  }
+}
+void* operator new[](std::size_t n, std::align_val_t a, const std::nothrow_t& tag) noexcept
+{
+  return operator new(n, a, tag);
+}
+void operator delete(void* p, const std::nothrow_t&) noexcept
+{
+  std::free(p);
+}
+void operator delete[](void* p, const std::nothrow_t&) noexcept
+{
+  std::free(p);
+}
+void operator delete(void* p, std::align_val_t, const std::nothrow_t&) noexcept
+{
+  std::free(p);
+}
+void operator delete[](void* p, std::align_val_t, const std::nothrow_t&) noexcept
+{
+  std::free(p);
 }
 void operator delete(void* p) noexcept
 {
