@@ -462,7 +462,7 @@ Overlay Refiner::refine()
   // A caller's cap too: no cap makes a run fit.
   if (const double memory = physicalMemoryBytes(); memory > 0)
   {
-    const double holds = memory / (2 * kBytesPerTriangle);
+    const double holds = meshPointsMemoryHolds(memory);
     if (holds < double(hardCap))
     {
       hardCap = static_cast<std::size_t>(holds);

@@ -82,6 +82,13 @@ double cgroupMemoryLimit(const std::string& root);
 /// 154 (a review measured 150 on la.poly with a size bound).
 constexpr double kBytesPerTriangle = 150;
 
+/// The points a mesh may have in memoryBytes (kBytesPerTriangle, 2 triangles
+/// per point): the overlay's cap and the stitching walk's limits.
+inline double meshPointsMemoryHolds(double memoryBytes)
+{
+  return memoryBytes / (2 * kBytesPerTriangle);
+}
+
 /// Mesh the points (distinct, finite) alone; segments are ignored here.
 Overlay buildOverlay(const Array<Point>& points, const OverlayOptions& options, RunContext& run);
 

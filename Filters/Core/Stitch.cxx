@@ -96,6 +96,17 @@ int OverlayEdges::twin(int c, int i) const
   return 3 * u + (back[0] == c ? 0 : back[1] == c ? 1 : 2);
 }
 
+void keepFirstOfEachPair(Array<SegmentCrossing>& sc)
+{
+  std::stable_sort(sc.begin(), sc.end(), [](const SegmentCrossing& x, const SegmentCrossing& y) {
+    return x.a < y.a || (x.a == y.a && x.b < y.b);
+  });
+  sc.erase(
+    std::unique(sc.begin(), sc.end(),
+      [](const SegmentCrossing& x, const SegmentCrossing& y) { return x.a == y.a && x.b == y.b; }),
+    sc.end());
+}
+
 namespace
 {
 
@@ -116,19 +127,6 @@ void forEachPieceInSegmentOrder(const Walk& walk, F&& f)
       f(k);
 }
 
-/// Sorts the crossings by their pair of segments and keeps the first record
-/// of each: stable, so that reducing them on the way keeps the same ones.
-void keepFirstOfEachPair(Array<SegmentCrossing>& sc)
-{
-  std::stable_sort(sc.begin(), sc.end(), [](const SegmentCrossing& x, const SegmentCrossing& y) {
-    return x.a < y.a || (x.a == y.a && x.b < y.b);
-  });
-  sc.erase(
-    std::unique(sc.begin(), sc.end(),
-      [](const SegmentCrossing& x, const SegmentCrossing& y) { return x.a == y.a && x.b == y.b; }),
-    sc.end());
-}
-
 class Walker
 {
 public:
@@ -143,7 +141,7 @@ public:
     , out(out)
     , memoryBytes(memoryBytes)
     , pointsMemoryHolds(memoryBytes > 0
-          ? std::max<std::size_t>(1, std::size_t(memoryBytes / (2 * kBytesPerTriangle)))
+          ? std::max<std::size_t>(1, std::size_t(meshPointsMemoryHolds(memoryBytes)))
           : 0)
   {}
 
@@ -174,7 +172,7 @@ private:
   DanglingEnds dangling;
   Walk& out;
   /// This machine's memory (0: unknown, no limit), the points it holds in a
-  /// mesh (Overlay.h's kBytesPerTriangle, 2 triangles per point), and a
+  /// mesh (Overlay.h's meshPointsMemoryHolds), and a
   /// quarter of them: at most so many pairs of segments may cross, counted
   /// again when the records reach nextCount.
   const double memoryBytes;

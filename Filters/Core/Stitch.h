@@ -129,6 +129,10 @@ struct SegmentCrossing
   Point p;
 };
 
+/// Sorts the crossings by their pair of segments and keeps the first record
+/// of each: stable, so that reducing them on the way keeps the same ones.
+void keepFirstOfEachPair(Array<SegmentCrossing>& sc);
+
 /// The walks' results. Segments are walked in spatial order, not in index
 /// order, so pieces and crossings come in that order; firstPiece gives each
 /// segment's pieces (contiguous, along the segment) so that every use that

@@ -348,6 +348,29 @@ TEST(Stitch, CrossingsReducedOnTheWayKeepTheSamePointPerPair)
   }
 }
 
+TEST(Stitch, KeepFirstOfEachPairKeepsTheFirstRecordOfEachPair)
+{
+  // Records of one pair can carry points that differ by rounding (each walk
+  // computes its own); the first recorded is kept, whatever the sort does
+  // with the others (an unstable sort keeps any of them).
+  Array<SegmentCrossing> records;
+  for (int k = 0; k < 300; ++k)
+    records.push_back({ k % 7, 10 + k % 3, { double(k), 0.0 } });
+  keepFirstOfEachPair(records);
+  ASSERT_EQ(records.size(), 21u); // 7 × 3 pairs, (k mod 7, k mod 3) all met below 21
+  for (std::size_t i = 0; i < records.size(); ++i)
+  {
+    const SegmentCrossing& r = records[i];
+    if (i > 0)
+      EXPECT_TRUE(std::make_pair(records[i - 1].a, records[i - 1].b) < std::make_pair(r.a, r.b));
+    // The first k with k mod 7 == a and k mod 3 == b - 10: below 21.
+    int first = 0;
+    while (first % 7 != r.a || first % 3 != r.b - 10)
+      ++first;
+    EXPECT_EQ(r.p.x, double(first)) << "pair " << r.a << ", " << r.b;
+  }
+}
+
 /// Segments are walked in spatial order; everything stitching makes from the
 /// walks must be what walks in index order would give: the same graph, edge
 /// for edge, the same inspected edges and the same segment crossings.
