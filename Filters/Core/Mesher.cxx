@@ -1489,8 +1489,8 @@ Result mesh(const Pslg& input, const Options& options, Progress* progress)
     formatNumber(r.stats.maxAngleDeg) + " degrees, above " + formatNumber(above);
   // The gap-ratio mesh took up to 12.5 times the triangles on the real
   // inputs: one this machine could not hold is not tried.
-  if (const double memory = physicalMemoryBytes(),
-      need = 13.0 * double(r.stats.outputTriangles) * kBytesPerTriangle;
+  if (const double need = 13.0 * double(r.stats.outputTriangles) * kBytesPerTriangle,
+      memory = memoryToCheck(need);
       memory > 0 && need > memory)
   {
     r.warnings.push_back(why +

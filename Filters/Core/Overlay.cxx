@@ -271,6 +271,7 @@ private:
   void distribute(int v, const Array<int>& fan);
   int findInFan(const Point& q, int v, const Array<int>& fan, std::size_t& hint) const;
   void countSteiner();
+  void checkHardCap();
   double pointsForMaxEdge() const;
   /// The refinement's progress in [0, 1], never decreasing between calls.
   double progressOf(double forMaxEdge);
@@ -311,7 +312,9 @@ private:
   SizeQueue<Item> queue;
   std::size_t inserted = 0;
   std::size_t hardCap = 0;
-  double capFromMemory = 0; ///< the memory that set hardCap, if it did
+  double capFromMemory = 0;   ///< the memory that set hardCap, if it did
+  bool memoryAsked = false;   ///< hardCap takes the memory into account
+  std::size_t checkCapAt = 0; ///< more Steiner points than this: checkHardCap
   double lastProgress = 0;
   /// With gapRatio, per mesh vertex: the squared distance to its nearest
   /// neighbour among the inserted vertices (Definition 2's r).
@@ -422,7 +425,7 @@ Overlay Refiner::refine()
   // points per forMaxEdge (below), 2 triangles per point, and
   // kBytesPerTriangle (a review's la.poly at 0.003, 2.7e8 triangles, was
   // killed at 23 GB; another's at 0.0032 was let through at 150 bytes).
-  if (const double memory = physicalMemoryBytes(), need = 2.2 * forMaxEdge * 2 * kBytesPerTriangle;
+  if (const double need = 2.2 * forMaxEdge * 2 * kBytesPerTriangle, memory = memoryToCheck(need);
       memory > 0 && need > memory)
   {
     char sizes[112];
@@ -455,20 +458,9 @@ Overlay Refiner::refine()
   hardCap = steinerCap > 0 ? steinerCap
                            : (gapRatio ? 100000 : 1000) * input.size() + 1000000 +
       static_cast<std::size_t>(8 * forMaxEdge);
-  // Nor more than this machine's memory holds (2 triangles per point), so
-  // that a runaway ends in this error rather than the system killing the
-  // process: a review's Constrained_Sweden.poly at 34 degrees with the
-  // gap-ratio overlay had a cap of 2.6e8 points, about 50 GB.
-  // A caller's cap too: no cap makes a run fit.
-  if (const double memory = physicalMemoryBytes(); memory > 0)
-  {
-    const double holds = meshPointsMemoryHolds(memory);
-    if (holds < double(hardCap))
-    {
-      hardCap = static_cast<std::size_t>(holds);
-      capFromMemory = memory;
-    }
-  }
+  // Nor more than this machine's memory holds, asked when the overlay gets
+  // beyond the points any holds (checkHardCap).
+  checkCapAt = std::min<std::size_t>(hardCap, std::size_t(kPointsUncheckedAgainstMemory));
   enqueueIfNeeded(0);
   enqueueIfNeeded(1);
   while (!queue.empty())
@@ -548,6 +540,31 @@ void Refiner::countSteiner()
   if (steinerCap > 0 && out.steinerPoints + kBoxCorners > steinerCap)
     outgrew("the overlay needs more than the allowed " + std::to_string(steinerCap) +
       " Steiner points; raise the cap or coarsen the input");
+  if (out.steinerPoints > checkCapAt)
+    checkHardCap();
+}
+
+void Refiner::checkHardCap()
+{
+  // Nor more than this machine's memory holds (2 triangles per point), so
+  // that a runaway ends in this error rather than the system killing the
+  // process: a review's Constrained_Sweden.poly at 34 degrees with the
+  // gap-ratio overlay had a cap of 2.6e8 points, about 50 GB.
+  // A caller's cap too: no cap makes a run fit.
+  if (!memoryAsked)
+  {
+    memoryAsked = true;
+    if (const double memory = physicalMemoryBytes(); memory > 0)
+    {
+      const double holds = meshPointsMemoryHolds(memory);
+      if (holds < double(hardCap))
+      {
+        hardCap = static_cast<std::size_t>(holds);
+        capFromMemory = memory;
+      }
+    }
+    checkCapAt = hardCap;
+  }
   if (out.steinerPoints > hardCap)
     outgrew("the overlay refinement exceeded " + std::to_string(hardCap) +
       (capFromMemory > 0 ? " Steiner points, as many as this machine's memory (" +

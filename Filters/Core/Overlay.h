@@ -89,6 +89,19 @@ inline double meshPointsMemoryHolds(double memoryBytes)
   return memoryBytes / (2 * kBytesPerTriangle);
 }
 
+/// Meshes of at most so many points are not checked against the memory:
+/// reading its limits (physicalMemoryBytes) takes 0.2 to 0.7 ms at a
+/// process's first call, more than meshing a small input, and they take
+/// 20 MB. Larger ones ask when they get there.
+constexpr double kPointsUncheckedAgainstMemory = 65536;
+
+/// The memory to check a mesh needing `bytes` against: physicalMemoryBytes(),
+/// or 0 (no check) for a mesh of at most kPointsUncheckedAgainstMemory points.
+inline double memoryToCheck(double bytes)
+{
+  return bytes > kPointsUncheckedAgainstMemory * 2 * kBytesPerTriangle ? physicalMemoryBytes() : 0;
+}
+
 /// Mesh the points (distinct, finite) alone; segments are ignored here.
 Overlay buildOverlay(const Array<Point>& points, const OverlayOptions& options, RunContext& run);
 

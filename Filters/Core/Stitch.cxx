@@ -139,11 +139,13 @@ public:
     , sinTheta1(sinTheta1)
     , dangling(ov, P, segments, search)
     , out(out)
-    , memoryBytes(memoryBytes)
-    , pointsMemoryHolds(memoryBytes > 0
-          ? std::max<std::size_t>(1, std::size_t(meshPointsMemoryHolds(memoryBytes)))
-          : 0)
-  {}
+  {
+    // Below so many crossings any machine holds the mesh: its memory is
+    // asked only beyond them (askMemory), which small inputs never reach.
+    setLimits(
+      memoryBytes < 0 ? kPointsUncheckedAgainstMemory * 2 * kBytesPerTriangle : memoryBytes);
+    memoryAsked = memoryBytes >= 0;
+  }
 
   void walk(int segment, int a, int b);
   void findSegmentCrossings(const Array<int>* rank);
@@ -158,11 +160,13 @@ private:
   int firstStep(int cur, int b, int& l, int& r, int& tri);
   bool ahead(const Point& from, const Point& x, const Point& B) const;
   void addCrossing(int edge, int piece, const Point& A, const Point& B);
-  void refuseCrossings(const Crossing& c) const;
+  void refuseCrossings(const Crossing& c);
   void markDuplicates(const Array<int>* rank);
   void addSegmentCrossing(int a, int b, const Point& p);
   void countSegmentCrossings();
-  void refuseSegmentCrossings(std::size_t count) const;
+  void refuseSegmentCrossings(std::size_t count);
+  void setLimits(double memory);
+  bool askMemory();
 
   const OverlayEdges& ov;
   const Array<Point>& P;
@@ -174,13 +178,13 @@ private:
   /// This machine's memory (0: unknown, no limit), the points it holds in a
   /// mesh (Overlay.h's meshPointsMemoryHolds), and a
   /// quarter of them: at most so many pairs of segments may cross, counted
-  /// again when the records reach nextCount.
-  const double memoryBytes;
-  const std::size_t pointsMemoryHolds;
-  const std::size_t maxSegmentCrossings = pointsMemoryHolds > 0
-    ? std::max<std::size_t>(1, pointsMemoryHolds / 4)
-    : 0;
-  std::size_t nextCount = maxSegmentCrossings;
+  /// again when the records reach nextCount. Until memoryAsked, the memory
+  /// of kPointsUncheckedAgainstMemory points.
+  double memoryBytes = 0;
+  bool memoryAsked = true;
+  std::size_t pointsMemoryHolds = 0;
+  std::size_t maxSegmentCrossings = 0;
+  std::size_t nextCount = 0;
   int walking = -1;                       ///< the segment being walked
   int segmentStart = -1;                  ///< first vertex of the segment being walked
   double segmentLength = 0;               ///< its length (addCrossing's A to B)
@@ -287,13 +291,35 @@ void Walker::addCrossing(int edge, int piece, const Point& A, const Point& B)
   dangling.crossedNear(ends[1], walking, out.nearMisses);
 }
 
+void Walker::setLimits(double memory)
+{
+  memoryBytes = memory;
+  pointsMemoryHolds =
+    memory > 0 ? std::max<std::size_t>(1, std::size_t(meshPointsMemoryHolds(memory))) : 0;
+  maxSegmentCrossings = pointsMemoryHolds > 0 ? std::max<std::size_t>(1, pointsMemoryHolds / 4) : 0;
+  nextCount = out.segmentCrossings.size() + maxSegmentCrossings;
+}
+
+/// The limits from this machine's memory, where not yet asked: false if
+/// they were already so.
+bool Walker::askMemory()
+{
+  if (memoryAsked)
+    return false;
+  memoryAsked = true;
+  setLimits(physicalMemoryBytes());
+  return true;
+}
+
 /// Every crossing of an overlay edge kept is a point of the mesh. Segments
 /// far longer than the spacing of the input points they pass cross a dense
 /// overlay there: a streamline circling a limit cycle, 70,000 points a hair
 /// apart, took 350 s and 17.5 GB to cross it in its first round (a review). As
 /// many crossings as the memory holds points end the run, with a word of why.
-void Walker::refuseCrossings(const Crossing& c) const
+void Walker::refuseCrossings(const Crossing& c)
 {
+  if (askMemory() && (pointsMemoryHolds == 0 || out.crossings.size() <= pointsMemoryHolds))
+    return;
   Stop stop{ "the segments cross more than " + std::to_string(pointsMemoryHolds) +
     " edges of the overlay, e.g." };
   stop.tail = ": as many as this machine's memory (" + roughNumber(memoryBytes / 1e9) +
@@ -456,9 +482,11 @@ void Walker::countSegmentCrossings()
 /// circling a limit cycle crosses itself some 10^8 times, and their list
 /// alone outgrew memory (a review): more than a quarter of the points the
 /// memory holds in a mesh end the run, with a word of why.
-void Walker::refuseSegmentCrossings(std::size_t count) const
+void Walker::refuseSegmentCrossings(std::size_t count)
 {
   if (maxSegmentCrossings == 0 || count <= maxSegmentCrossings)
+    return;
+  if (askMemory() && (maxSegmentCrossings == 0 || count <= maxSegmentCrossings))
     return;
   const SegmentCrossing& first = out.segmentCrossings.front();
   Stop stop{ "the input segments cross each other more than " +

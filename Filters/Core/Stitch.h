@@ -182,12 +182,12 @@ struct NearMissSearch
 /// segment with the smallest rank is kept (ranks per segment; by default the
 /// index), so that it carries that segment's data. Where the segments
 /// cross more overlay edges than memoryBytes holds points in a mesh, or more
-/// pairs of segments cross than a quarter of that (0: unknown, no limit),
+/// pairs of segments cross than a quarter of that (0: no limit; by default
+/// this machine's, asked only beyond kPointsUncheckedAgainstMemory crossings),
 /// throws a Stop naming a segment and a point.
 Walk walkSegments(const OverlayEdges& ov, const Overlay& overlay, const Array<Segment>& segments,
   double sinTheta1, RunContext& run, const Array<int>* order = nullptr,
-  const Array<int>* rank = nullptr, NearMissSearch nearMisses = {},
-  double memoryBytes = physicalMemoryBytes());
+  const Array<int>* rank = nullptr, NearMissSearch nearMisses = {}, double memoryBytes = -1);
 
 /// Sides of a planar-graph edge that lie in a face still to be completed.
 enum OpenSide : std::uint8_t

@@ -348,6 +348,40 @@ TEST(Stitch, CrossingsReducedOnTheWayKeepTheSamePointPerPair)
   }
 }
 
+TEST(Stitch, TheMachinesMemoryIsAskedOnlyBeyondTheUncheckedCrossings)
+{
+  // By default the limits start from the memory of
+  // kPointsUncheckedAgainstMemory points, and this machine's is asked when
+  // the crossings outgrow them: a walk beyond them goes on, and finds what
+  // a walk without limits finds.
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> U(0, 1);
+  Array<Point> pts;
+  Array<Segment> segs;
+  for (int i = 0; i < 480; ++i)
+  {
+    pts.push_back({ U(rng), U(rng) });
+    pts.push_back({ U(rng), U(rng) });
+    segs.push_back({ 2 * i, 2 * i + 1 });
+  }
+  Stitched s = stitchInput(pts, segs, 30);
+  if (physicalMemoryBytes() < 1e9)
+    GTEST_SKIP() << "this machine's memory: " << physicalMemoryBytes();
+  RunContext run(nullptr);
+  const double sinTheta1 = std::sin(30 * kPi / 180);
+  const Walk none =
+    walkSegments(s.ov, s.overlay, s.segments, sinTheta1, run, nullptr, nullptr, {}, 0);
+  ASSERT_GT(double(none.segmentCrossings.size()), kPointsUncheckedAgainstMemory / 4);
+  const Walk asked = walkSegments(s.ov, s.overlay, s.segments, sinTheta1, run);
+  ASSERT_EQ(asked.segmentCrossings.size(), none.segmentCrossings.size());
+  for (std::size_t k = 0; k < none.segmentCrossings.size(); ++k)
+  {
+    const SegmentCrossing &x = asked.segmentCrossings[k], &y = none.segmentCrossings[k];
+    EXPECT_TRUE(x.a == y.a && x.b == y.b && x.p == y.p) << "crossing " << k;
+  }
+  EXPECT_EQ(asked.crossings.size(), none.crossings.size());
+}
+
 TEST(Stitch, KeepFirstOfEachPairKeepsTheFirstRecordOfEachPair)
 {
   // Records of one pair can carry points that differ by rounding (each walk
