@@ -1063,12 +1063,6 @@ void PieceCombination::MergeCells()
     }
     if (cells->GetNumberOfCells() > 0)
     {
-      // The serial filter's storage (32-bit when the ids fit), so that the
-      // gathered output is the serial one to the byte when written.
-      if (cells->CanConvertTo32BitStorage())
-      {
-        cells->ConvertTo32BitStorage();
-      }
       SetCellsOfKind(combined, kind, cells);
     }
   }

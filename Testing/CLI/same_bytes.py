@@ -65,11 +65,6 @@ for name in ("square_hole.poly", "crossing.poly", "wedge.vtk"):
         for array in arrays:
             ours.RemoveArray(array.GetName())
             ours.AddArray(array)
-    # ParaView's delivery under MPI also builds the cells anew, in 64-bit
-    # storage: put back the mesher's 32-bit one (serially this changes nothing).
-    polys = mesh.GetPolys()
-    if polys.IsStorage64Bit() and polys.CanConvertTo32BitStorage():
-        polys.ConvertTo32BitStorage()
     # Fetching computed and cached the arrays' ranges in their information,
     # which the XML writer would then list: a cache, not mesh content.
     attributes = [mesh.GetPointData(), mesh.GetCellData()]

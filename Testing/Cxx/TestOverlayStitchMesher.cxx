@@ -449,7 +449,9 @@ int TestLargeOutputs()
   // Every value, against the triangle's own angles computed here.
   vtkCellArray* polys = held->GetPolys();
   Check(polys->GetOffsetsArray()->GetNumberOfValues() == triangles + 1, "one offset per cell");
-  Check(!polys->IsStorage64Bit(), "cells in 32-bit storage: every id fits");
+  Check(polys->IsStorage64Bit(),
+    "cells in VTK's default 64-bit storage (subdivision filters "
+    "refuse the 32-bit one)");
   int wrong = 0;
   for (vtkIdType t = 0; t < triangles; ++t)
   {

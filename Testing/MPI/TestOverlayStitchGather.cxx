@@ -194,8 +194,8 @@ int main()
   Check(combined->GetNumberOfLines() == 4, "4 lines (the repeated segment dropped)");
   Check(summary.SharedCellsDropped == 1, "1 shared cell counted");
   Check(combined->GetNumberOfVerts() == 1, "1 vertex cell");
-  Check(!combined->GetLines()->IsStorage64Bit() && !combined->GetVerts()->IsStorage64Bit(),
-    "cells in 32-bit storage, as the serial filter makes them");
+  Check(combined->GetLines()->IsStorage64Bit() && combined->GetVerts()->IsStorage64Bit(),
+    "cells in 64-bit storage, as the serial filter makes them");
   const std::vector<std::array<double, 2>> expectedPoints = { { 0, 0 }, { 1, 0 }, { 1, 1 },
     { 0, 1 }, { 0, 1 } };
   bool pointsOk = combined->GetNumberOfPoints() == 5;

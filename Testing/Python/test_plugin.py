@@ -98,6 +98,13 @@ def main(plugin, data_dir):
     print("Mesh: %d points, %d triangles" % (mesh.GetNumberOfPoints(), triangles))
     check(triangles > 0, "the mesh has triangles")
     check(all(mesh.GetCellType(c) == 5 for c in range(triangles)), "every mesh cell is a triangle")
+    # VTK's subdivision filters refuse cells in vtkCellArray's 32-bit storage
+    # as "non-manifold" (a review): the mesh comes in VTK's default storage.
+    check(mesh.GetPolys().IsStorage64Bit(), "the mesh's cells in 64-bit storage")
+    for name, subdivide in (("Loop Subdivision", LoopSubdivision), ("Subdivide", Subdivide)):
+        cells = fetch(subdivide(Input=mesher), 0).GetNumberOfCells()
+        check(cells == 4 * triangles, "%s takes the mesh (%d cells, expected %d)" %
+              (name, cells, 4 * triangles))
     origin = mesh.GetPointData().GetArray("VertexOrigin")
     check(origin is not None and origin.GetNumberOfTuples() == mesh.GetNumberOfPoints(),
           "VertexOrigin per point")
