@@ -162,6 +162,63 @@ std::string nearMissWarning(const Work& w, const Walk& walk, const Array<Segment
     "MergeTolerance)";
 }
 
+/// Why the mesh grades down to a hair somewhere (a review: a float slice of
+/// a sphere had points one float step apart, and gave 50 times the triangles
+/// with no word). A point's nearest neighbour is joined to it in a Delaunay
+/// triangulation, and the refinement puts no Steiner point nearer: the
+/// overlay's edges find the pairs. Crossing points are the mesher's own.
+std::string closePointsWarning(const Work& w, const Overlay& overlay, const OverlayEdges& ov,
+  const NearMissSearch& search, const Pslg& input, const Array<int>& pointOf,
+  const PointFormat& format)
+{
+  const Array<Point>& P = overlay.mesh.points;
+  struct Pair
+  {
+    double d2;
+    int a, b;
+  };
+  Array<Pair> pairs; // overlay vertices: rarely any
+  for (std::size_t h = 0; h < ov.idBound(); ++h)
+  {
+    if (!ov.isEdge(static_cast<int>(h)))
+      continue;
+    const auto [a, b] = ov.ends(static_cast<int>(h));
+    if (!overlay.isInput[a] || !overlay.isInput[b])
+      continue;
+    const double d2 = dist2(P[a], P[b]), reach = search.at(P[a]);
+    if (d2 < reach * reach)
+      pairs.push_back({ d2, a, b });
+  }
+  if (pairs.empty())
+    return "";
+  Array<int> pointAt(P.size(), -1); // overlay vertex -> working point
+  for (std::size_t i = 0; i < overlay.inputVertex.size(); ++i)
+    pointAt[overlay.inputVertex[i]] = static_cast<int>(i);
+  const auto crossing = [&](int v) { return pointAt[v] < 0 || w.isCrossingPoint[pointAt[v]]; };
+  pairs.erase(std::remove_if(pairs.begin(), pairs.end(),
+                [&](const Pair& q) { return crossing(q.a) || crossing(q.b); }),
+    pairs.end());
+  if (pairs.empty())
+    return "";
+  const Pair& nearest = *std::min_element(
+    pairs.begin(), pairs.end(), [](const Pair& x, const Pair& y) { return x.d2 < y.d2; });
+  const int points[2] = { pointAt[nearest.a], pointAt[nearest.b] };
+  const std::size_t count = pairs.size();
+  const int first = firstInputPoint(pointOf, points[0]),
+            second = firstInputPoint(pointOf, points[1]);
+  // From the user's coordinates: the working ones are translated, rounded.
+  const std::string gap = formatNumber(std::sqrt(dist2(input.points[first], input.points[second])));
+  return std::to_string(count) +
+    " pair(s) of input points lie a hair apart (within 1e-6 of the extent, or, where every "
+    "coordinate is a float, within float rounding), e.g. point " +
+    std::to_string(std::min(first, second)) + " at " +
+    formatPoint(input.points[std::min(first, second)], format) + " and point " +
+    std::to_string(std::max(first, second)) + ", " + gap +
+    " apart: the mesh grades down to their distance around them; if they are meant as one "
+    "point, a merge tolerance above it merges them (osm-mesh --merge-tolerance, the filter's "
+    "MergeTolerance)";
+}
+
 /// A merge tolerance to try where segments meet closer than double precision
 /// separates (a workflow review: a figure-eight through the origin failed,
 /// and the message gave no value to type): 1e-9 of the input's extent,

@@ -37,6 +37,15 @@ constexpr double kNearMissExtent = 1e-6;
 std::string nearMissWarning(const Work& w, const Walk& walk, const Array<Segment>& walked,
   const Pslg& input, const Array<int>& pointOf, const Frame& frame, const PointFormat& format);
 
+/// Pairs of input points closer than kClosePointsExtent of the extent (or
+/// float rounding, by search.at) of each other, found among the overlay's
+/// edges; "" if none.
+constexpr double kClosePointsExtent = 1e-6;
+
+std::string closePointsWarning(const Work& w, const Overlay& overlay, const OverlayEdges& ov,
+  const NearMissSearch& search, const Pslg& input, const Array<int>& pointOf,
+  const PointFormat& format);
+
 /// " (try about ...)": a merge tolerance to try where segments meet closer
 /// than double precision separates, or "" where the one given is as large.
 std::string toleranceToTry(const Bounds& input, double given);

@@ -878,6 +878,12 @@ void Mesher::meshRounds(Work& w)
           nearMissWarning(w, walk, segments, input, clean.pointOf, frame, options.pointFormat);
         !nearMiss.empty())
       res.warnings.push_back(std::move(nearMiss));
+    NearMissSearch closePoints = nearMissSearch(w);
+    closePoints.reach *= kClosePointsExtent / kNearMissExtent;
+    if (std::string close = closePointsWarning(
+          w, overlay, ov, closePoints, input, clean.pointOf, options.pointFormat);
+        !close.empty())
+      res.warnings.push_back(std::move(close));
     st.overlayVertices = overlay.mesh.points.size();
     st.overlaySteinerPoints = overlay.steinerPoints + kBoxCorners;
     if (overlay.refinementsSkipped > 0)

@@ -488,6 +488,40 @@ TEST(Mesher, AMeshBeyondTheMachinesMemoryIsRefusedAtOnce)
   EXPECT_LE(progress.furthest, 0.02);
 }
 
+TEST(Mesher, InputPointsAHairApartAreWarnedOf)
+{
+  // Found by a review: a float slice of a sphere had points one float step
+  // apart, and gave 50 times the triangles, with no word.
+  const std::string apart = "pair(s) of input points lie a hair apart";
+  Pslg t;
+  t.points = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 }, { 0.5, 0.5 }, { 0.5, 0.5 + 1e-9 } };
+  t.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 } };
+  Result r = meshAndValidate(t, "two points 1e-9 apart");
+  EXPECT_TRUE(mentions(r.warnings,
+    "1 pair(s) of input points lie a hair apart (within 1e-6 of the extent, or, where every "
+    "coordinate is a float, within float rounding), e.g. point 4 at (0.5, 0.5) and point 5, "
+    "9.999999717180685e-10 apart: the mesh grades down to their distance around them; if they are "
+    "meant as one point, a merge tolerance above it merges them"))
+    << (r.warnings.empty() ? std::string("no warning") : r.warnings[0]);
+  // Named the same whichever comes first.
+  std::swap(t.points[4], t.points[5]);
+  EXPECT_TRUE(mentions(mesh(t).warnings, "e.g. point 4 at (0.5, 0.500000001) and point 5,"));
+  // The tolerance it asks for merges them: no word.
+  Options merged;
+  merged.mergeTolerance = 2e-9;
+  EXPECT_FALSE(mentions(meshAndValidate(t, "merged", merged).warnings, apart));
+  // A distance the extent resolves is a feature: no word.
+  t.points[4].y = 0.5 + 1e-5;
+  EXPECT_FALSE(mentions(mesh(t).warnings, apart));
+  // Nor is a crossing the mesher splits a hair from an input point the input's.
+  t.points = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 }, { 0.5, 0.5 + 1e-9 } };
+  t.segments.push_back({ 0, 2 });
+  t.segments.push_back({ 1, 3 });
+  r = meshAndValidate(t, "a point a hair from a crossing");
+  EXPECT_GT(r.stats.crossingsSplit, 0u);
+  EXPECT_FALSE(mentions(r.warnings, apart));
+}
+
 TEST(Mesher, ASegmentEndAHairShortOfAnotherSegmentIsWarnedOf)
 {
   // Found by a workflow review: isolines in floats end 1e-8 short of the
