@@ -89,14 +89,15 @@ inline int orientSign(const Point& a, const Point& b, const Point& c)
 /// `length`. Used to snap such vertices onto segments, a repair within rounding.
 /// Takes o = orient2d(a, b, x) (exact sign, magnitude within a factor of 2)
 /// and |b - a| (std::hypot), which a caller testing many points against one
-/// line computes once.
-inline bool onLineWithinRounding(double o, const Point& x, double length, double abLength)
+/// line computes once. ulps: the tolerance in units of rounding.
+inline bool onLineWithinRounding(
+  double o, const Point& x, double length, double abLength, double ulps = 8)
 {
   if (o == 0)
     return true;
   // (std::max, not std::fmax, a library call: the coordinates are finite.)
   const double scale = std::max(std::fabs(x.x), std::fabs(x.y)) + length;
-  const double tolerance = 8 * DBL_EPSILON * scale;
+  const double tolerance = ulps * DBL_EPSILON * scale;
   return std::fabs(o) <= tolerance * abLength;
 }
 
