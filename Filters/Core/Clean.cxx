@@ -194,34 +194,44 @@ std::pair<std::size_t, int> dropDuplicates(Array<OriginSegment>& segs)
 void warnAboutSeedsBesideBends(const Pslg& in, const Array<Point>& points,
   const Array<OriginSegment>& split, double tol, std::vector<std::string>& warnings)
 {
-  auto beside = [&](const Point& q) {
-    for (const auto& [s, origin] : split)
-    {
-      const SegmentFrame frame(points[s[0]], points[s[1]]);
-      const double along = frame.along(q);
-      if (along >= -tol && along <= frame.length + tol && std::fabs(frame.off(q)) <= tol)
-        return origin;
-    }
-    return -1;
-  };
-  std::size_t count = 0;
-  std::string example;
-  auto check = [&](const Point& q, const char* kind, std::size_t k) {
-    if (const int s = beside(q); s >= 0 && count++ == 0)
-      example = std::string(kind) + " " + std::to_string(k) +
-        " lies within the merge tolerance of segment " + std::to_string(s);
-  };
-  if (split.empty())
+  const std::size_t holes = in.holes.size(), seedCount = holes + in.regions.size();
+  if (split.empty() || seedCount == 0)
     return;
-  for (std::size_t h = 0; h < in.holes.size(); ++h)
-    check(in.holes[h], "hole", h);
-  for (std::size_t r = 0; r < in.regions.size(); ++r)
-    check(in.regions[r].seed, "region", r);
-  if (count > 0)
-    warnings.push_back(std::to_string(count) +
-      " hole or region seed(s) lie within the merge tolerance of a segment that was split at "
-      "points near it, and may now lie on its other side: e.g. " +
-      example);
+  // Seeds by x (holes first, then regions, by `order`): each segment looks
+  // at those within its x range only (a review: 10,000 bricks with a region
+  // seed each took 2.5 s here, comparing every seed with every segment).
+  Array<std::pair<Point, std::size_t>> seeds;
+  for (std::size_t k = 0; k < seedCount; ++k)
+    seeds.push_back({ k < holes ? in.holes[k] : in.regions[k - holes].seed, k });
+  std::sort(seeds.begin(), seeds.end());
+  // Per seed: the first split segment it lies beside, or -1.
+  Array<int> besideSegment(seedCount, -1);
+  for (std::size_t k = 0; k < split.size(); ++k)
+  {
+    const Point &a = points[split[k].first[0]], &b = points[split[k].first[1]];
+    const SegmentFrame frame(a, b);
+    auto it = std::lower_bound(seeds.begin(), seeds.end(), std::min(a.x, b.x) - tol,
+      [](const std::pair<Point, std::size_t>& seed, double x) { return seed.first.x < x; });
+    for (; it != seeds.end() && it->first.x <= std::max(a.x, b.x) + tol; ++it)
+    {
+      const double along = frame.along(it->first);
+      if (besideSegment[it->second] < 0 && along >= -tol && along <= frame.length + tol &&
+        std::fabs(frame.off(it->first)) <= tol)
+        besideSegment[it->second] = static_cast<int>(k);
+    }
+  }
+  const auto first =
+    std::find_if(besideSegment.begin(), besideSegment.end(), [](int k) { return k >= 0; });
+  if (first == besideSegment.end())
+    return;
+  const std::size_t seed = static_cast<std::size_t>(first - besideSegment.begin());
+  const auto count =
+    std::count_if(besideSegment.begin(), besideSegment.end(), [](int k) { return k >= 0; });
+  warnings.push_back(std::to_string(count) +
+    " hole or region seed(s) lie within the merge tolerance of a segment that was split at "
+    "points near it, and may now lie on its other side: e.g. " +
+    (seed < holes ? "hole " + std::to_string(seed) : "region " + std::to_string(seed - holes)) +
+    " lies within the merge tolerance of segment " + std::to_string(split[*first].second));
 }
 
 /// Hole and region seeds that merging moved a segment across, or whose

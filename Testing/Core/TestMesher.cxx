@@ -2246,6 +2246,16 @@ TEST(Clean, ASeedBesideABentSegmentIsWarnedAbout)
   EXPECT_TRUE(mentions(bent.warnings,
     "1 hole or region seed(s) lie within the merge tolerance of a segment that was split"));
   EXPECT_TRUE(mentions(bent.warnings, "hole 0 lies within the merge tolerance of segment 4"));
+  // Each seed counted once, holes named before regions (seeds by x find them).
+  Pslg more = p;
+  more.regions.push_back({ { 4, 5.2 } });
+  more.holes.push_back({ 6, 5.3 });
+  const Result three = mesh(more, o);
+  ASSERT_TRUE(three.ok) << three.error;
+  EXPECT_TRUE(mentions(three.warnings,
+    "3 hole or region seed(s) lie within the merge tolerance of a segment that was split at "
+    "points near it, and may now lie on its other side: e.g. hole 0 lies within the merge "
+    "tolerance of segment 4"));
   // A seed further off than the tolerance is not in doubt.
   p.holes = { { 5, 7 } };
   EXPECT_FALSE(mentions(mesh(p, o).warnings, "seed(s) lie within the merge tolerance"));
