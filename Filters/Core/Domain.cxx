@@ -416,21 +416,28 @@ Carving carveDomain(const Array<Point>& P, const Array<Triangle>& tris,
   {
     if (holes.size() > kHoleSeedsScanned)
       grid.emplace(P, tris, component, removed);
+    // Every seed is placed before any region goes, so that the regions
+    // removed do not depend on the seeds' order (a review: a seed on a
+    // segment took whichever side an earlier seed had not removed, and the
+    // holes (1.5, 0.5), (1, 0.5) emptied a mesh the other order did not).
+    Array<int> target(holes.size(), -1);
     for (std::size_t h = 0; h < holes.size(); ++h)
     {
       int t = locate(holes[h]);
-      if (t < 0)
-      {
-        out.unusedHoles.push_back(static_cast<int>(h));
-        continue;
-      }
-      if (const int side = sideOf(t, holes[h]); side >= 0)
-      {
-        out.seedsOnSegments.push_back(static_cast<int>(h));
-        t = side;
-      }
-      removed[component[t]] = 1;
+      if (t >= 0)
+        if (const int side = sideOf(t, holes[h]); side >= 0)
+        {
+          out.seedsOnSegments.push_back(static_cast<int>(h));
+          t = side;
+        }
+      target[h] = t;
     }
+    // A second seed in a region is one too many, as one outside the domain.
+    for (std::size_t h = 0; h < holes.size(); ++h)
+      if (target[h] < 0 || removed[component[target[h]]])
+        out.unusedHoles.push_back(static_cast<int>(h));
+      else
+        removed[component[target[h]]] = 1;
   }
   // The grid skips the triangles removed when it was built, and no others.
   if (!grid && regionSeeds.size() > kHoleSeedsScanned)

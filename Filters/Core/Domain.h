@@ -31,9 +31,10 @@ struct Carving
 {
   Array<int> regionId; ///< per input triangle: its region, or -1 if removed
   std::size_t regions = 0;
-  Array<int> unusedHoles; ///< hole seeds outside the remaining triangles
+  /// Hole seeds outside the domain, or in a region an earlier seed names.
+  Array<int> unusedHoles;
   /// Hole seeds on a segment or at a segment's end (within rounding) where
-  /// regions not yet removed meet. The region taken is the same in every mesh
+  /// regions of the domain meet. The region taken is the same in every mesh
   /// of the input: the one the direction +x from the seed enters, the one
   /// above where a segment runs along +x (at a segment's end, the first
   /// counter-clockwise from +x if +x leads out of the domain).

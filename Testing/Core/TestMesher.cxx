@@ -1097,6 +1097,32 @@ TEST(Domain, HolesRemoveTheirRegion)
   EXPECT_EQ(r.stats.regions, 1u);
 }
 
+TEST(Domain, HolesRemoveTheSameRegionsInAnyOrder)
+{
+  // Found by a review: [0, 2] x [0, 1] parted at x = 1, the holes (1.5, 0.5)
+  // and (1, 0.5) on the parting (its +x side is the right square). Seeds
+  // placed one by one let the second take the side the first had left: in
+  // one order the mesh was empty.
+  Pslg p;
+  p.points = { { 0, 0 }, { 1, 0 }, { 2, 0 }, { 2, 1 }, { 1, 1 }, { 0, 1 } };
+  p.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 4 }, { 4, 5 }, { 5, 0 }, { 1, 4 } };
+  for (const bool reversed : { false, true })
+  {
+    p.holes = { { 1.5, 0.5 }, { 1, 0.5 } };
+    if (reversed)
+      std::swap(p.holes[0], p.holes[1]);
+    const std::string name = reversed ? "seed on the parting first" : "seed inside first";
+    const Result r = meshAndValidate(p, name);
+    EXPECT_NEAR(area(r.mesh), 1.0, 1e-12) << name;
+    EXPECT_EQ(r.stats.regions, 1u) << name;
+    EXPECT_TRUE(mentions(r.warnings, "1 hole point(s) lie on a segment or at its end")) << name;
+    // Both name the right square: the second is one too many.
+    EXPECT_TRUE(mentions(r.warnings,
+      "1 hole point(s) lie outside the meshed domain or in a region already removed, e.g. hole 1"))
+      << name;
+  }
+}
+
 TEST(Mesher, HoleSeedOnASegmentIsSaid)
 {
   // Which side of a segment a seed on it removes is an accident of the search
