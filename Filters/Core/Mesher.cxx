@@ -267,6 +267,9 @@ private:
   SeedsAcross seedsAcrossJoins;    ///< seeds that segments those joins bent crossed
   /// The auto domain found cycles of segments that enclose no area: hull.
   bool enclosesNothing = false;
+  /// The pieces of the segments, split where they pass input points or
+  /// overlap, form a cycle that the segments alone do not: enclosed.
+  bool piecesEnclose = false;
   /// No region the auto domain would enclose has an input point on its
   /// boundary and is more than a speck across (inputPointOnACycle), as where
   /// segments meant to meet at one point cross apart: hull.
@@ -668,6 +671,18 @@ bool inputPointOnACycle(const Array<Point>& points, const Array<char>& isInput,
   return false;
 }
 
+/// Whether the walk's pieces of the first `inputs` segments (the rest are
+/// the hull's) form a cycle among the overlay's `vertices`: split where they
+/// pass input points, and once where they overlap (duplicates left out).
+bool walkedPiecesEnclose(const Walk& walk, std::size_t inputs, std::size_t vertices)
+{
+  Array<Segment> pieces;
+  for (const Piece& p : walk.pieces)
+    if (!p.duplicate && static_cast<std::size_t>(p.segment) < inputs)
+      pieces.push_back({ p.v0, p.v1 });
+  return segmentsEncloseRegion(vertices, pieces);
+}
+
 /// Per vertex of a round's mesh (n of them): whether it is an input point,
 /// not a crossing; vertexOf maps w's points to them.
 Array<char> inputVertices(const Work& w, const Array<int>& vertexOf, std::size_t n)
@@ -699,7 +714,7 @@ Domain Mesher::chooseDomain(const Work& w, Array<int>& hull)
   if (domain == Domain::Auto)
   {
     const bool encloses = !enclosesNothing && !enclosesOnlyCrossings &&
-      segmentsEncloseRegion(w.points.size(), w.segments);
+      (piecesEnclose || segmentsEncloseRegion(w.points.size(), w.segments));
     // After a crossing round whose walk found no input point on a segment
     // (which only the walk splits at), the segments here have the cycles of
     // the pieces: judge them now rather than mesh the regions first.
@@ -824,6 +839,18 @@ void Mesher::meshRounds(Work& w)
         crossingsJoined += joined;
       if (seeds.count > 0 && seedsAcrossJoins.count == 0)
         seedsAcrossJoins = seeds;
+      continue;
+    }
+    // A segment ending on another (a T-junction) or overlapping it closes a
+    // cycle that only the walk's pieces show (a review: a triangle with one
+    // corner on its base was meshed as the hull): the enclosed domain then.
+    if (options.domain == Domain::Auto && domain == Domain::Hull && !enclosesNothing &&
+      !enclosesOnlyCrossings && !piecesEnclose &&
+      (walk.splitsAtInputVertices > 0 || !walk.overlaps.empty()) &&
+      walkedPiecesEnclose(walk, w.segments.size(), overlay.mesh.points.size()))
+    {
+      res.warnings.resize(warningsBefore);
+      piecesEnclose = true;
       continue;
     }
     // Say why the domain changed, once.

@@ -2515,6 +2515,30 @@ TEST(Domain, AutoSeesRegionsClosedByCrossings)
   EXPECT_LT(area(r.mesh), 1.0);
 }
 
+TEST(Domain, AutoSeesRegionsClosedByASegmentEndingOnAnotherOrOverlapping)
+{
+  // Found by a review: a triangle whose third side ends on the middle of its
+  // base, and an L whose base is two overlapping segments, enclose a region
+  // only once the walk splits the segments; auto meshed their hulls.
+  Pslg t;
+  t.points = { { 0, 0 }, { 4, 0 }, { 4, 4 }, { 2, 0 } };
+  t.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 } };
+  Result r = meshAndValidate(t, "a triangle closed by a T-junction");
+  EXPECT_NEAR(area(r.mesh), 4.0, 1e-12);
+  EXPECT_EQ(r.stats.regions, 1u);
+  EXPECT_FALSE(mentions(r.warnings, "open chain")) << r.warnings.size();
+  Pslg l;
+  l.points = { { 0, 0 }, { 4, 0 }, { 4, 2 }, { 2, 2 }, { 2, 4 }, { 0, 4 }, { 3, 0 }, { 1, 0 } };
+  l.segments = { { 0, 6 }, { 7, 1 }, { 1, 2 }, { 2, 3 }, { 3, 4 }, { 4, 5 }, { 5, 0 } };
+  r = meshAndValidate(l, "an L closed by overlapping segments");
+  EXPECT_NEAR(area(r.mesh), 12.0, 1e-12);
+  EXPECT_EQ(r.stats.regions, 1u);
+  // Open pieces that only touch stay the hull's.
+  t.segments = { { 0, 1 }, { 2, 3 } };
+  r = meshAndValidate(t, "one segment ending on another");
+  EXPECT_NEAR(area(r.mesh), 8.0, 1e-12);
+}
+
 TEST(Domain, AutoMeshesTheHullWhenOnlyCrossingsAreEnclosed)
 {
   // Roads digitised apart cross at three points that close a triangle 1e-11
