@@ -49,6 +49,34 @@ Stitched stitchInput(const Array<Point>& pts, const Array<Segment>& segs, double
   return s;
 }
 
+/// count long random segments in the unit square, stitched at 30 degrees:
+/// many of them cross.
+Stitched randomLongSegments(unsigned seed, int count)
+{
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> U(0, 1);
+  Array<Point> pts;
+  Array<Segment> segs;
+  for (int i = 0; i < count; ++i)
+  {
+    pts.push_back({ U(rng), U(rng) });
+    pts.push_back({ U(rng), U(rng) });
+    segs.push_back({ 2 * i, 2 * i + 1 });
+  }
+  return stitchInput(pts, segs, 30);
+}
+
+/// The same crossing pairs, each at the same point.
+void expectSameSegmentCrossings(const Walk& w, const Walk& ref)
+{
+  ASSERT_EQ(w.segmentCrossings.size(), ref.segmentCrossings.size());
+  for (std::size_t k = 0; k < ref.segmentCrossings.size(); ++k)
+  {
+    const SegmentCrossing &x = w.segmentCrossings[k], &y = ref.segmentCrossings[k];
+    EXPECT_TRUE(x.a == y.a && x.b == y.b && x.p == y.p) << "crossing " << k;
+  }
+}
+
 } // namespace
 
 TEST(Stitch, EdgeIdsNameEveryOverlayEdgeOnce)
@@ -316,17 +344,7 @@ TEST(Stitch, CrossingsReducedOnTheWayKeepTheSamePointPerPair)
 {
   // The records of crossing pairs are reduced whenever they grow by the cap:
   // the pairs and the point kept for each must not depend on when.
-  std::mt19937_64 rng(5);
-  std::uniform_real_distribution<double> U(0, 1);
-  Array<Point> pts;
-  Array<Segment> segs;
-  for (int i = 0; i < 120; ++i)
-  {
-    pts.push_back({ U(rng), U(rng) });
-    pts.push_back({ U(rng), U(rng) });
-    segs.push_back({ 2 * i, 2 * i + 1 });
-  }
-  Stitched s = stitchInput(pts, segs, 30);
+  Stitched s = randomLongSegments(5, 120);
   RunContext run(nullptr);
   const double sinTheta1 = std::sin(30 * kPi / 180);
   const Walk ref =
@@ -340,12 +358,7 @@ TEST(Stitch, CrossingsReducedOnTheWayKeepTheSamePointPerPair)
     s.ov, s.overlay, s.segments, sinTheta1, run, nullptr, nullptr, {}, 1200.0 * double(pairs));
   EXPECT_EQ(ref.segmentCrossingsReduced, 0u);
   EXPECT_GE(w.segmentCrossingsReduced, 1u);
-  ASSERT_EQ(w.segmentCrossings.size(), pairs);
-  for (std::size_t k = 0; k < pairs; ++k)
-  {
-    const SegmentCrossing &x = w.segmentCrossings[k], &y = ref.segmentCrossings[k];
-    EXPECT_TRUE(x.a == y.a && x.b == y.b && x.p == y.p) << "crossing " << k;
-  }
+  expectSameSegmentCrossings(w, ref);
 }
 
 TEST(Stitch, TheMachinesMemoryIsAskedOnlyBeyondTheUncheckedCrossings)
@@ -354,17 +367,7 @@ TEST(Stitch, TheMachinesMemoryIsAskedOnlyBeyondTheUncheckedCrossings)
   // kPointsUncheckedAgainstMemory points, and this machine's is asked when
   // the crossings outgrow them: a walk beyond them goes on, and finds what
   // a walk without limits finds.
-  std::mt19937_64 rng(7);
-  std::uniform_real_distribution<double> U(0, 1);
-  Array<Point> pts;
-  Array<Segment> segs;
-  for (int i = 0; i < 480; ++i)
-  {
-    pts.push_back({ U(rng), U(rng) });
-    pts.push_back({ U(rng), U(rng) });
-    segs.push_back({ 2 * i, 2 * i + 1 });
-  }
-  Stitched s = stitchInput(pts, segs, 30);
+  Stitched s = randomLongSegments(7, 480);
   if (physicalMemoryBytes() < 1e9)
     GTEST_SKIP() << "this machine's memory: " << physicalMemoryBytes();
   RunContext run(nullptr);
@@ -373,12 +376,7 @@ TEST(Stitch, TheMachinesMemoryIsAskedOnlyBeyondTheUncheckedCrossings)
     walkSegments(s.ov, s.overlay, s.segments, sinTheta1, run, nullptr, nullptr, {}, 0);
   ASSERT_GT(double(none.segmentCrossings.size()), kPointsUncheckedAgainstMemory / 4);
   const Walk asked = walkSegments(s.ov, s.overlay, s.segments, sinTheta1, run);
-  ASSERT_EQ(asked.segmentCrossings.size(), none.segmentCrossings.size());
-  for (std::size_t k = 0; k < none.segmentCrossings.size(); ++k)
-  {
-    const SegmentCrossing &x = asked.segmentCrossings[k], &y = none.segmentCrossings[k];
-    EXPECT_TRUE(x.a == y.a && x.b == y.b && x.p == y.p) << "crossing " << k;
-  }
+  expectSameSegmentCrossings(asked, none);
   EXPECT_EQ(asked.crossings.size(), none.crossings.size());
 }
 
