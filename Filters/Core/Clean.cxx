@@ -188,6 +188,14 @@ std::pair<std::size_t, int> dropDuplicates(Array<OriginSegment>& segs)
   return { dropped, example };
 }
 
+/// How far past a segment's ends in x a point within tol of it along and
+/// across may lie: tol (|ux| + |uy|) for its direction u, at most tol sqrt(2)
+/// (a review: a seed beyond a diagonal segment's end was missed with tol).
+double reachInX(double tol)
+{
+  return tol * std::sqrt(2.0);
+}
+
 /// Hole and region seeds within tol of a segment that snapping bent may now
 /// lie on its other side (its region and theirs swapped): say so, as the
 /// mesh shows no trace of it. Seeds by the split segments: both are few.
@@ -206,13 +214,14 @@ void warnAboutSeedsBesideBends(const Pslg& in, const Array<Point>& points,
   std::sort(seeds.begin(), seeds.end());
   // Per seed: the first split segment it lies beside, or -1.
   Array<int> besideSegment(seedCount, -1);
+  const double reach = reachInX(tol);
   for (std::size_t k = 0; k < split.size(); ++k)
   {
     const Point &a = points[split[k].first[0]], &b = points[split[k].first[1]];
     const SegmentFrame frame(a, b);
-    auto it = std::lower_bound(seeds.begin(), seeds.end(), std::min(a.x, b.x) - tol,
+    auto it = std::lower_bound(seeds.begin(), seeds.end(), std::min(a.x, b.x) - reach,
       [](const std::pair<Point, std::size_t>& seed, double x) { return seed.first.x < x; });
-    for (; it != seeds.end() && it->first.x <= std::max(a.x, b.x) + tol; ++it)
+    for (; it != seeds.end() && it->first.x <= std::max(a.x, b.x) + reach; ++it)
     {
       const double along = frame.along(it->first);
       if (besideSegment[it->second] < 0 && along >= -tol && along <= frame.length + tol &&
@@ -269,9 +278,9 @@ void warnAboutSeedsAcrossMerges(const Pslg& in, const CleanPslg& out, double tol
     const bool collapsed = a == b;
     const SegmentFrame frame(a, collapsed ? Point{ a.x + 1, a.y } : b);
     const double length = collapsed ? 0.0 : frame.length;
-    auto it = std::lower_bound(seeds.begin(), seeds.end(), std::min(a.x, b.x) - tol,
+    auto it = std::lower_bound(seeds.begin(), seeds.end(), std::min(a.x, b.x) - reachInX(tol),
       [](const Seed& seed, double x) { return seed.p.x < x; });
-    for (; it != seeds.end() && it->p.x <= std::max(a.x, b.x) + tol; ++it)
+    for (; it != seeds.end() && it->p.x <= std::max(a.x, b.x) + reachInX(tol); ++it)
     {
       const Point& q = it->p;
       const double along = frame.along(q);

@@ -167,53 +167,55 @@ std::string nearMissWarning(const Work& w, const Walk& walk, const Array<Segment
 /// with no word). A point's nearest neighbour is joined to it in a Delaunay
 /// triangulation, and the refinement puts no Steiner point nearer: the
 /// overlay's edges find the pairs. Crossing points are the mesher's own.
-std::string closePointsWarning(const Work& w, const Overlay& overlay, const OverlayEdges& ov,
-  const NearMissSearch& search, const Pslg& input, const Array<int>& pointOf,
-  const PointFormat& format)
+Array<ClosePair> closePointPairs(const Work& w, const Overlay& overlay, const OverlayEdges& ov,
+  const NearMissSearch& search, const Pslg& input, const Array<int>& pointOf)
 {
   const Array<Point>& P = overlay.mesh.points;
-  struct Pair
-  {
-    double d2;
-    int a, b;
-  };
-  Array<Pair> pairs; // overlay vertices: rarely any
+  Array<Segment> near; // overlay vertices: rarely any
   for (std::size_t h = 0; h < ov.idBound(); ++h)
   {
     if (!ov.isEdge(static_cast<int>(h)))
       continue;
     const auto [a, b] = ov.ends(static_cast<int>(h));
-    if (!overlay.isInput[a] || !overlay.isInput[b])
-      continue;
-    const double d2 = dist2(P[a], P[b]), reach = search.at(P[a]);
-    if (d2 < reach * reach)
-      pairs.push_back({ d2, a, b });
+    const double reach = search.at(P[a]);
+    if (overlay.isInput[a] && overlay.isInput[b] && dist2(P[a], P[b]) < reach * reach)
+      near.push_back({ a, b });
   }
-  if (pairs.empty())
-    return "";
+  Array<ClosePair> pairs;
+  if (near.empty())
+    return pairs;
   Array<int> pointAt(P.size(), -1); // overlay vertex -> working point
   for (std::size_t i = 0; i < overlay.inputVertex.size(); ++i)
     pointAt[overlay.inputVertex[i]] = static_cast<int>(i);
-  const auto crossing = [&](int v) { return pointAt[v] < 0 || w.isCrossingPoint[pointAt[v]]; };
-  pairs.erase(std::remove_if(pairs.begin(), pairs.end(),
-                [&](const Pair& q) { return crossing(q.a) || crossing(q.b); }),
-    pairs.end());
-  if (pairs.empty())
+  for (const auto& [u, v] : near)
+  {
+    const int i = pointAt[u], j = pointAt[v];
+    if (i < 0 || j < 0 || w.isCrossingPoint[i] || w.isCrossingPoint[j])
+      continue;
+    const int a = firstInputPoint(pointOf, i), b = firstInputPoint(pointOf, j);
+    // From the user's coordinates: the working ones are translated, rounded.
+    pairs.push_back(
+      { std::min(a, b), std::max(a, b), std::sqrt(dist2(input.points[a], input.points[b])) });
+  }
+  return pairs;
+}
+
+std::string closePointsWarning(const Array<ClosePair>& pairs, const Array<int>& inputVertex,
+  const Pslg& input, const PointFormat& format)
+{
+  std::size_t count = 0;
+  const ClosePair* nearest = nullptr;
+  for (const ClosePair& q : pairs)
+    if (inputVertex[q.a] >= 0 && inputVertex[q.b] >= 0 && ++count &&
+      (!nearest || q.distance < nearest->distance))
+      nearest = &q;
+  if (!nearest)
     return "";
-  const Pair& nearest = *std::min_element(
-    pairs.begin(), pairs.end(), [](const Pair& x, const Pair& y) { return x.d2 < y.d2; });
-  const int points[2] = { pointAt[nearest.a], pointAt[nearest.b] };
-  const std::size_t count = pairs.size();
-  const int first = firstInputPoint(pointOf, points[0]),
-            second = firstInputPoint(pointOf, points[1]);
-  // From the user's coordinates: the working ones are translated, rounded.
-  const std::string gap = formatNumber(std::sqrt(dist2(input.points[first], input.points[second])));
   return std::to_string(count) +
-    " pair(s) of input points lie a hair apart (within 1e-6 of the extent, or, where every "
-    "coordinate is a float, within float rounding), e.g. point " +
-    std::to_string(std::min(first, second)) + " at " +
-    formatPoint(input.points[std::min(first, second)], format) + " and point " +
-    std::to_string(std::max(first, second)) + ", " + gap +
+    " pair(s) of input points in the mesh lie a hair apart (within 1e-6 of the extent, or, where "
+    "every coordinate is a float, within float rounding), e.g. point " +
+    std::to_string(nearest->a) + " at " + formatPoint(input.points[nearest->a], format) +
+    " and point " + std::to_string(nearest->b) + ", " + formatNumber(nearest->distance) +
     " apart: the mesh grades down to their distance around them; if they are meant as one "
     "point, a merge tolerance above it merges them (osm-mesh --merge-tolerance, the filter's "
     "MergeTolerance)";

@@ -39,12 +39,22 @@ std::string nearMissWarning(const Work& w, const Walk& walk, const Array<Segment
 
 /// Pairs of input points closer than kClosePointsExtent of the extent (or
 /// float rounding, by search.at) of each other, found among the overlay's
-/// edges; "" if none.
+/// edges: the first input point of each (a < b) and their distance.
 constexpr double kClosePointsExtent = 1e-6;
 
-std::string closePointsWarning(const Work& w, const Overlay& overlay, const OverlayEdges& ov,
-  const NearMissSearch& search, const Pslg& input, const Array<int>& pointOf,
-  const PointFormat& format);
+struct ClosePair
+{
+  int a = -1, b = -1;
+  double distance = 0;
+};
+
+Array<ClosePair> closePointPairs(const Work& w, const Overlay& overlay, const OverlayEdges& ov,
+  const NearMissSearch& search, const Pslg& input, const Array<int>& pointOf);
+
+/// The warning about the pairs whose points are both in the mesh
+/// (inputVertex, Result's), naming the nearest; "" if none.
+std::string closePointsWarning(const Array<ClosePair>& pairs, const Array<int>& inputVertex,
+  const Pslg& input, const PointFormat& format);
 
 /// " (try about ...)": a merge tolerance to try where segments meet closer
 /// than double precision separates, or "" where the one given is as large.

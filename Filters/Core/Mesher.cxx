@@ -270,6 +270,7 @@ private:
   /// The pieces of the segments, split where they pass input points or
   /// overlap, form a cycle that the segments alone do not: enclosed.
   bool piecesEnclose = false;
+  Array<ClosePair> closePairs; ///< the round's input points a hair apart
   /// No region the auto domain would enclose has an input point on its
   /// boundary and is more than a speck across (inputPointOnACycle), as where
   /// segments meant to meet at one point cross apart: hull.
@@ -907,10 +908,7 @@ void Mesher::meshRounds(Work& w)
       res.warnings.push_back(std::move(nearMiss));
     NearMissSearch closePoints = nearMissSearch(w);
     closePoints.reach *= kClosePointsExtent / kNearMissExtent;
-    if (std::string close = closePointsWarning(
-          w, overlay, ov, closePoints, input, clean.pointOf, options.pointFormat);
-        !close.empty())
-      res.warnings.push_back(std::move(close));
+    closePairs = closePointPairs(w, overlay, ov, closePoints, input, clean.pointOf);
     st.overlayVertices = overlay.mesh.points.size();
     st.overlaySteinerPoints = overlay.steinerPoints + kBoxCorners;
     if (overlay.refinementsSkipped > 0)
@@ -1410,6 +1408,10 @@ void Mesher::buildOutput(const Work& w, const PlanarGraph& g, Completion& c, Car
           ? "; if segments meant to meet at one point cross apart and enclose a tiny region "
             "there, a merge tolerance joins their crossings"
           : ""));
+  if (std::string close =
+        closePointsWarning(closePairs, res.inputVertex, input, options.pointFormat);
+      !close.empty())
+    res.warnings.push_back(std::move(close));
   warnAboutDroppedSegments(w, g, carve.droppedConstrained, domain, unscale);
   st.regions = carve.regions;
   st.outputVertices = res.mesh.vertices.size();

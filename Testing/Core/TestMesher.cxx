@@ -524,14 +524,14 @@ TEST(Mesher, InputPointsAHairApartAreWarnedOf)
 {
   // Found by a review: a float slice of a sphere had points one float step
   // apart, and gave 50 times the triangles, with no word.
-  const std::string apart = "pair(s) of input points lie a hair apart";
+  const std::string apart = "pair(s) of input points in the mesh lie a hair apart";
   Pslg t;
   t.points = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 }, { 0.5, 0.5 }, { 0.5, 0.5 + 1e-9 } };
   t.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 } };
   Result r = meshAndValidate(t, "two points 1e-9 apart");
   EXPECT_TRUE(mentions(r.warnings,
-    "1 pair(s) of input points lie a hair apart (within 1e-6 of the extent, or, where every "
-    "coordinate is a float, within float rounding), e.g. point 4 at (0.5, 0.5) and point 5, "
+    "1 pair(s) of input points in the mesh lie a hair apart (within 1e-6 of the extent, or, where "
+    "every coordinate is a float, within float rounding), e.g. point 4 at (0.5, 0.5) and point 5, "
     "9.999999717180685e-10 apart: the mesh grades down to their distance around them; if they are "
     "meant as one point, a merge tolerance above it merges them"))
     << (r.warnings.empty() ? std::string("no warning") : r.warnings[0]);
@@ -545,6 +545,12 @@ TEST(Mesher, InputPointsAHairApartAreWarnedOf)
   // A distance the extent resolves is a feature: no word.
   t.points[4].y = 0.5 + 1e-5;
   EXPECT_FALSE(mentions(mesh(t).warnings, apart));
+  // Nor a pair the domain leaves out (a review: outside the enclosed square).
+  t.points[4] = { 2, 0.5 };
+  t.points[5] = { 2, 0.5 + 1e-9 };
+  r = meshAndValidate(t, "a pair outside the domain");
+  EXPECT_NEAR(area(r.mesh), 1.0, 1e-12);
+  EXPECT_FALSE(mentions(r.warnings, apart));
   // Nor is a crossing the mesher splits a hair from an input point the input's.
   t.points = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 }, { 0.5, 0.5 + 1e-9 } };
   t.segments.push_back({ 0, 2 });
@@ -2272,6 +2278,17 @@ TEST(Clean, ASeedBesideABentSegmentIsWarnedAbout)
   EXPECT_TRUE(mentions(bent.warnings,
     "1 hole or region seed(s) lie within the merge tolerance of a segment that was split"));
   EXPECT_TRUE(mentions(bent.warnings, "hole 0 lies within the merge tolerance of segment 4"));
+  // Beyond a diagonal segment's end, within the tolerance along and across
+  // it, yet further than the tolerance in x (a review: missed by x).
+  Pslg diagonal;
+  diagonal.points = { { 0, 0 }, { 10, 10 }, { 5, 5.05 } };
+  diagonal.segments = { { 0, 1 } };
+  diagonal.holes = { { 10.14, 10 } };
+  Options near;
+  near.mergeTolerance = 0.1;
+  near.domain = Domain::Hull;
+  EXPECT_TRUE(mentions(mesh(diagonal, near).warnings,
+    "1 hole or region seed(s) lie within the merge tolerance of a segment that was split"));
   // Each seed counted once, holes named before regions (seeds by x find them).
   Pslg more = p;
   more.regions.push_back({ { 4, 5.2 } });
