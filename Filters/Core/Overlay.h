@@ -95,11 +95,15 @@ inline double meshPointsMemoryHolds(double memoryBytes)
 /// 20 MB. Larger ones ask when they get there.
 constexpr double kPointsUncheckedAgainstMemory = 65536;
 
+/// The memory a mesh of kPointsUncheckedAgainstMemory points takes.
+constexpr double kBytesUncheckedAgainstMemory =
+  kPointsUncheckedAgainstMemory * 2 * kBytesPerTriangle;
+
 /// The memory to check a mesh needing `bytes` against: physicalMemoryBytes(),
 /// or 0 (no check) for a mesh of at most kPointsUncheckedAgainstMemory points.
 inline double memoryToCheck(double bytes)
 {
-  return bytes > kPointsUncheckedAgainstMemory * 2 * kBytesPerTriangle ? physicalMemoryBytes() : 0;
+  return bytes > kBytesUncheckedAgainstMemory ? physicalMemoryBytes() : 0;
 }
 
 /// Mesh the points (distinct, finite) alone; segments are ignored here.

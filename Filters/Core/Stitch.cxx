@@ -142,8 +142,7 @@ public:
   {
     // Below so many crossings any machine holds the mesh: its memory is
     // asked only beyond them (askMemory), which small inputs never reach.
-    setLimits(
-      memoryBytes < 0 ? kPointsUncheckedAgainstMemory * 2 * kBytesPerTriangle : memoryBytes);
+    setLimits(memoryBytes < 0 ? kBytesUncheckedAgainstMemory : memoryBytes);
     memoryAsked = memoryBytes >= 0;
   }
 
