@@ -115,5 +115,37 @@ TEST(MemoryLimit, ASecondMeshMemoryCouldNotHoldIsNotTried)
   EXPECT_TRUE(warned) << (r.warnings.empty() ? std::string("no warning") : r.warnings[0]);
 }
 
+TEST(MemoryLimit, AnOverlayMemoryCannotHoldEndsInAnError)
+{
+  // Run by the test MemoryLimit.OverlayInAControlGroup (in_memory_group.sh):
+  // the overlay asks for the memory only once past the points it leaves
+  // unchecked (Refiner::checkHardCap), and must then stop at what it holds.
+  const char* bytes = std::getenv("OSM_TEST_MEMORY_GROUP_BYTES");
+  if (!bytes)
+    GTEST_SKIP() << "run in a memory-limited control group by in_memory_group.sh only";
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "AddressSanitizer's shadow memory and quarantine would not fit the group";
+#endif
+  const double limit = std::strtod(bytes, nullptr);
+  ASSERT_EQ(physicalMemoryBytes(), limit);
+  // A square and a point at 35 degrees with the gap-ratio overlay: a
+  // refinement that does not end (found by trying), its own cap 1.5e6 points.
+  Pslg p;
+  p.points = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 }, { 0.3, 0.6 } };
+  p.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 } };
+  Options o;
+  o.minAngleDeg = 35;
+  o.gapRatioOverlay = true;
+  const std::size_t holds = std::size_t(meshPointsMemoryHolds(limit));
+  ASSERT_LT(double(holds), 1.5e6);
+  ASSERT_GT(double(holds), kPointsUncheckedAgainstMemory);
+  const Result r = mesh(p, o);
+  ASSERT_FALSE(r.ok);
+  EXPECT_NE(r.error.find("exceeded " + std::to_string(holds) +
+              " Steiner points, as many as this machine's memory"),
+    std::string::npos)
+    << r.error;
+}
+
 } // namespace
 } // namespace osm
