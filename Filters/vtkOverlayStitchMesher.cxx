@@ -18,6 +18,7 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
+#include "vtkMath.h"
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -688,8 +689,9 @@ vtkSmartPointer<vtkPoints> MakePoints(const osm::Array<osm::Point>& vertices,
 }
 
 /// Points, then triangles, each half of poll's range; false if stopped.
+/// reversed: each triangle wound the other way round (NormalsOppose).
 bool MakeTriangles(const osm::TriMesh& mesh, const osm::PlaneMap& map, vtkPolyData* output,
-  const Poll& poll, const osm::Array<long long>* inputOf = nullptr)
+  const Poll& poll, const osm::Array<long long>* inputOf = nullptr, bool reversed = false)
 {
   auto points = MakePoints(mesh.vertices, map, Part(poll, 0.0, 0.5), inputOf);
   if (!points || poll(0.5))
@@ -699,7 +701,9 @@ bool MakeTriangles(const osm::TriMesh& mesh, const osm::PlaneMap& map, vtkPolyDa
   output->SetPoints(points);
   auto cells = MakeCells(
     mesh.triangles.size(), 3,
-    [&mesh](std::size_t c, int k) { return static_cast<vtkIdType>(mesh.triangles[c][k]); },
+    [&mesh, reversed](std::size_t c, int k) {
+      return static_cast<vtkIdType>(mesh.triangles[c][reversed && k > 0 ? 3 - k : k]);
+    },
     Part(poll, 0.5, 1.0));
   if (!cells)
   {
@@ -718,9 +722,39 @@ vtkSmartPointer<ArrayT> MakeArray(const char* name, vtkIdType size)
   return array;
 }
 
-/// Fills the Mesh output; stops early when poll says so.
-void FillMesh(
-  const osm::Result& result, const osm::PlaneMap& map, vtkPolyData* output, const Poll& poll)
+/// Whether normals (3 components, the input's, carried to the mesh) point
+/// mostly to the side from which the mesh's triangles, all wound one way in
+/// the plane, are clockwise: they are then reversed, so that the winding and
+/// the carried normals agree (a review: a Plane source's normals, -z, on
+/// triangles counter-clockwise seen from +z).
+bool NormalsOppose(vtkDataArray* normals, const osm::TriMesh& mesh, const osm::PlaneMap& map)
+{
+  if (!normals || normals->GetNumberOfComponents() != 3 || mesh.triangles.empty())
+  {
+    return false;
+  }
+  const osm::Triangle& t = mesh.triangles[0];
+  const osm::Vec3 a = map.toSpace(mesh.vertices[t[0]]), b = map.toSpace(mesh.vertices[t[1]]),
+                  c = map.toSpace(mesh.vertices[t[2]]);
+  const double ab[3] = { b.x - a.x, b.y - a.y, b.z - a.z };
+  const double ac[3] = { c.x - a.x, c.y - a.y, c.z - a.z };
+  double side[3];
+  vtkMath::Cross(ab, ac, side);
+  double sum = 0.0;
+  for (vtkIdType i = 0; i < normals->GetNumberOfTuples(); ++i)
+  {
+    double n[3];
+    normals->GetTuple(i, n);
+    const double d = vtkMath::Dot(n, side);
+    sum += std::isfinite(d) ? d : 0.0;
+  }
+  return sum < 0.0;
+}
+
+/// Fills the Mesh output; stops early when poll says so. reversed: the
+/// triangles wound the other way round (NormalsOppose).
+void FillMesh(const osm::Result& result, const osm::PlaneMap& map, vtkPolyData* output,
+  const Poll& poll, bool reversed)
 {
   // Each mesh vertex that is an input point gets that point's original
   // coordinates (the first of merged points): by index, not by a round trip.
@@ -733,7 +767,7 @@ void FillMesh(
       inputOf[static_cast<std::size_t>(v)] = static_cast<long long>(i);
     }
   }
-  if (!MakeTriangles(result.mesh, map, output, Part(poll, 0.0, 0.4), &inputOf))
+  if (!MakeTriangles(result.mesh, map, output, Part(poll, 0.0, 0.4), &inputOf, reversed))
   {
     return;
   }
@@ -947,8 +981,10 @@ int vtkOverlayStitchMesher::FillInputPortInformation(int port, vtkInformation* i
     // (RequestData): meshed block by block, its blocks would overlap with
     // seams, and under MPI the ranks would gather once per local block, a
     // different number of times each, and hang.
-    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
-    info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkUnstructuredGrid");
+    // Other datasets (image data, structured grids) are accepted here only to
+    // be refused once with a remedy (LocalPiece): the pipeline's own type
+    // error names no remedy and is printed once per pipeline pass.
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
     info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkCompositeDataSet");
     return 1;
   }
@@ -1053,6 +1089,18 @@ vtkSmartPointer<vtkPolyData> vtkOverlayStitchMesher::MeshRun::LocalPiece(
   vtkDataObject* data, std::string& refused)
 {
   vtkOverlayStitchMesher* self = this->Self;
+  if (vtkDataSet::SafeDownCast(data) && !vtkPolyData::SafeDownCast(data) &&
+    !vtkUnstructuredGrid::SafeDownCast(data))
+  {
+    // Still gathered, as a refused piece, so that no rank waits for this one.
+    refused = data->GetClassName();
+    vtkErrorWithObjectMacro(self,
+      "Cannot mesh a " << refused
+                       << ": the filter meshes points and line segments, of polydata or an "
+                          "unstructured grid. Apply Contour first to mesh its isolines, or "
+                          "Extract Surface to mesh the edges of its cells.");
+    return OverlayStitchRefusedPiece();
+  }
   // Arrays named like those the filter adds would stand for them.
   std::vector<std::string> internalNames;
   const vtkSmartPointer<vtkDataObject> withoutInternal =
@@ -1483,7 +1531,13 @@ int vtkOverlayStitchMesher::MeshRun::FillOutputs(bool interpolate)
   {
     return 1;
   }
-  FillMesh(result, this->Map, this->Mesh, outputSteps(start + 0.06, start + 0.09));
+  // Carried normals (the point normals, else those of the cells) decide
+  // which way the triangles face.
+  vtkDataArray* pointNormals = interpolate ? input->GetPointData()->GetNormals() : nullptr;
+  vtkDataArray* cellNormals = self->PassCellData ? input->GetCellData()->GetNormals() : nullptr;
+  const bool reversed =
+    NormalsOppose(pointNormals ? pointNormals : cellNormals, result.mesh, this->Map);
+  FillMesh(result, this->Map, this->Mesh, outputSteps(start + 0.06, start + 0.09), reversed);
   if (this->Aborted())
   {
     return 1;

@@ -41,6 +41,7 @@
 #include "vtkGenericCell.h"
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
+#include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkIntArray.h"
 #include "vtkMath.h"
@@ -2881,6 +2882,99 @@ int TestUnstructuredGrid()
   Check(block && ids && gridEdges >= 9 && wrongBlock == 0,
     "InputBlockId 2 on the grid block's edges, the line block's cell 0 on its own (" +
       std::to_string(gridEdges) + " grid edges, " + std::to_string(wrongBlock) + " wrong)");
+
+  // Other datasets are refused once, with the remedy (a review: an image's
+  // type error came from the pipeline, once per pass, naming none).
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(5, 5, 1);
+  Harness im;
+  vtkPolyData* imageMesh = im.Run(image, "image data");
+  Check(im.Updated == 0 && imageMesh->GetNumberOfCells() == 0 && im.Messages->Errors.size() == 1 &&
+      im.Messages->HasError({ "Cannot mesh a vtkImageData: the filter meshes points and line "
+                              "segments",
+        "Apply Contour first" }),
+    "image data: one error, naming it and the remedy");
+  return 0;
+}
+
+/// Twice the summed signed areas of mesh's triangles seen from +dir (dir
+/// 0, 1, 2 for x, y, z): positive when they are counter-clockwise from there.
+double SignedAreaFrom(vtkPolyData* mesh, int dir)
+{
+  const int a = (dir + 1) % 3, b = (dir + 2) % 3;
+  double sum = 0.0;
+  vtkIdType n = 0;
+  const vtkIdType* ids = nullptr;
+  auto polys = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
+  for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell())
+  {
+    polys->GetCurrentCell(n, ids);
+    double p[3][3];
+    for (int k = 0; k < 3; ++k)
+    {
+      mesh->GetPoint(ids[k], p[k]);
+    }
+    sum += (p[1][a] - p[0][a]) * (p[2][b] - p[0][b]) - (p[1][b] - p[0][b]) * (p[2][a] - p[0][a]);
+  }
+  return sum;
+}
+
+/// Point normals, all n, as the input's active Normals.
+void AddNormals(vtkPolyData* input, const Xyz& n)
+{
+  vtkNew<vtkFloatArray> normals;
+  normals->SetName("Normals");
+  normals->SetNumberOfComponents(3);
+  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+  {
+    normals->InsertNextTuple3(n[0], n[1], n[2]);
+  }
+  input->GetPointData()->SetNormals(normals);
+}
+
+int TestNormals()
+{
+  // The triangles face where the carried normals point (a review: a Plane
+  // source's normals, -z, were carried onto triangles facing +z).
+  struct Case
+  {
+    std::string label;
+    std::vector<Xyz> square;
+    int dir;             // the axis the plane faces along
+    Xyz normal;          // the input's normals, or none if all 0
+    bool interpolate;    // InterpolatePointData
+    double expectedSign; // of the area seen from +dir
+  };
+  const std::vector<Xyz> xy = { { 0, 0, 1 }, { 4, 0, 1 }, { 4, 3, 1 }, { 0, 3, 1 } };
+  const std::vector<Xyz> yz = { { 2, 0, 0 }, { 2, 4, 0 }, { 2, 4, 3 }, { 2, 0, 3 } };
+  const std::vector<Case> cases = {
+    { "no normals", xy, 2, { 0, 0, 0 }, true, 1 },
+    { "normals +z", xy, 2, { 0, 0, 1 }, true, 1 },
+    { "normals -z", xy, 2, { 0, 0, -1 }, true, -1 },
+    { "normals -z, slightly tilted", xy, 2, { 0.1, -0.2, -0.9 }, true, -1 },
+    { "normals -z, not carried", xy, 2, { 0, 0, -1 }, false, 1 },
+    { "plane x = 2, normals +x", yz, 0, { 1, 0, 0 }, true, 1 },
+    { "plane x = 2, normals -x", yz, 0, { -1, 0, 0 }, true, -1 },
+  };
+  for (const Case& c : cases)
+  {
+    auto input = MakeLines(c.square, { { 0, 1, 2, 3, 0 } });
+    if (c.normal[0] != 0 || c.normal[1] != 0 || c.normal[2] != 0)
+    {
+      AddNormals(input, c.normal);
+    }
+    Harness h;
+    h.Mesher->SetInterpolatePointData(c.interpolate);
+    vtkPolyData* mesh = h.Run(input, c.label);
+    const double area = SignedAreaFrom(mesh, c.dir);
+    vtkDataArray* carried = mesh->GetPointData()->GetNormals();
+    Check(
+      h.NoError() && mesh->GetNumberOfPolys() > 0 && std::fabs(area - c.expectedSign * 24) < 1e-9,
+      c.label + ": the triangles face " + (c.expectedSign > 0 ? "+" : "-") + "xyz"[c.dir] +
+        " (twice their signed area " + Num(area) + ")");
+    Check((carried != nullptr) == (c.interpolate && c.normal[c.dir] != 0),
+      c.label + ": the normals are carried as the active Normals when interpolated");
+  }
   return 0;
 }
 
@@ -3437,6 +3531,7 @@ int main(int argc, char* argv[])
     { "cell-data", TestCellData },
     { "polygon-data", TestPolygonData },
     { "unstructured-grid", TestUnstructuredGrid },
+    { "normals", TestNormals },
     { "higher-order-cells", TestHigherOrderCells },
     { "malformed-cells", TestMalformedCells },
     { "internal-names", TestInternalNames },
