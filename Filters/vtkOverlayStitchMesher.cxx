@@ -1031,6 +1031,7 @@ public:
     {
       return *stop;
     }
+    this->KeepInputZ();
     const bool interpolate = this->Self->GetInterpolatePointData() &&
       OverlayStitchHasUserArrays(this->Input->GetPointData());
     if (auto stop = this->MeshPslg(interpolate))
@@ -1044,6 +1045,7 @@ private:
   std::optional<int> Prepare(vtkDataObject* data);
   vtkSmartPointer<vtkPolyData> LocalPiece(vtkDataObject* data, std::string& refused);
   std::optional<int> ReadPslg();
+  void KeepInputZ();
   std::optional<int> ReadHoleSeeds();
   osm::Options MakeOptions(bool interpolate) const;
   std::optional<int> MeshPslg(bool interpolate);
@@ -1235,6 +1237,34 @@ std::optional<int> vtkOverlayStitchMesher::MeshRun::Prepare(vtkDataObject* data)
   return std::nullopt;
 }
 
+/// Input projected onto XY keeps its z as the point array InputZ, carried
+/// to the mesh as other point data, so that contour lines at their heights
+/// give a terrain (Warp By Scalar) instead of a plane at the mean z. An input
+/// array of that name is carried instead.
+void vtkOverlayStitchMesher::MeshRun::KeepInputZ()
+{
+  vtkPointData* pointData = this->Input->GetPointData();
+  if (!this->Map.isProjected() || !this->Self->GetInterpolatePointData() ||
+    pointData->GetAbstractArray("InputZ") ||
+    static_cast<vtkIdType>(this->Points.size()) != this->Input->GetNumberOfPoints())
+  {
+    return;
+  }
+  auto z = vtkSmartPointer<vtkDoubleArray>::New();
+  z->SetName("InputZ");
+  z->SetNumberOfValues(static_cast<vtkIdType>(this->Points.size()));
+  for (std::size_t i = 0; i < this->Points.size(); ++i)
+  {
+    z->SetValue(static_cast<vtkIdType>(i), this->Points[i].z);
+  }
+  // On a copy: the input may be the caller's own dataset.
+  auto withZ = vtkSmartPointer<vtkPolyData>::New();
+  withZ->ShallowCopy(this->Input);
+  withZ->GetPointData()->AddArray(z);
+  this->Gathered = withZ;
+  this->Input = withZ;
+}
+
 /// Phase "input": the points, the plane they lie in, the segments, the hole
 /// seeds and the regional attributes, into Pslg.
 std::optional<int> vtkOverlayStitchMesher::MeshRun::ReadPslg()
@@ -1282,7 +1312,10 @@ std::optional<int> vtkOverlayStitchMesher::MeshRun::ReadPslg()
     vtkWarningWithObjectMacro(
       self, << "The input points are not in a plane z = constant: projected onto the XY plane "
                "(ProjectToXYPlane); the outputs lie at z = "
-            << this->Map.z() << ", the mean z.");
+            << this->Map.z() << ", the mean z"
+            << (self->GetInterpolatePointData()
+                   ? ", and the mesh carries the input's z as the point array InputZ."
+                   : "."));
   }
   this->Ignored.OwnIds =
     vtkIdTypeArray::SafeDownCast(input->GetCellData()->GetArray(OverlayStitchSourceCellIdName));

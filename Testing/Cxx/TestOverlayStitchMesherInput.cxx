@@ -617,6 +617,47 @@ int TestProjectToXY()
   }
   Check(kept == 6, "on: every input point keeps its exact x and y");
   Check(std::fabs(osmtest::TotalArea(mesh) - 100.0) < 1e-9, "on: the projected square is meshed");
+  auto* inputZ = vtkDoubleArray::SafeDownCast(mesh->GetPointData()->GetArray("InputZ"));
+  int wrongZ = 0;
+  for (vtkIdType v = 0; inputZ && v < mesh->GetNumberOfPoints(); ++v)
+  {
+    double p[3];
+    mesh->GetPoint(v, p);
+    const double z = inputZ->GetValue(v);
+    bool input = false;
+    for (const Xyz& q : xyz)
+    {
+      input = input || (q[0] == p[0] && q[1] == p[1]);
+      wrongZ += q[0] == p[0] && q[1] == p[1] && q[2] != z;
+    }
+    wrongZ += !input && !(z >= 0.5 && z <= 4);
+  }
+  Check(inputZ && wrongZ == 0 && !input->GetPointData()->GetArray("InputZ"),
+    "on: the input's z is carried as the point array InputZ, exact at input points, between the "
+    "input's lowest and highest z elsewhere (" +
+      std::to_string(wrongZ) + " wrong); the input is left as it was");
+  // A tilted plane's z, linear in x and y, is reproduced at every vertex.
+  std::vector<Xyz> tilted = xyz;
+  for (Xyz& q : tilted)
+  {
+    q[2] = 0.25 * q[0] - 0.5 * q[1] + 3;
+  }
+  mesh = h.Run(MakeLines(tilted, { { 0, 1, 2, 3, 0 }, { 4, 5 } }), "a tilted plane, projection on");
+  inputZ = vtkDoubleArray::SafeDownCast(mesh->GetPointData()->GetArray("InputZ"));
+  double worstZ = inputZ ? 0.0 : 1.0;
+  for (vtkIdType v = 0; inputZ && v < mesh->GetNumberOfPoints(); ++v)
+  {
+    double p[3];
+    mesh->GetPoint(v, p);
+    worstZ = std::max(worstZ, std::fabs(inputZ->GetValue(v) - (0.25 * p[0] - 0.5 * p[1] + 3)));
+  }
+  Check(h.NoError() && worstZ < 1e-12,
+    "on: a tilted plane's InputZ is its z at every vertex (off by " + Num(worstZ) + ")");
+  h.Mesher->InterpolatePointDataOff();
+  mesh = h.Run(input, "non-coplanar, projection on, no point data");
+  Check(h.NoError() && !mesh->GetPointData()->GetArray("InputZ"),
+    "on, InterpolatePointData off: no InputZ");
+  h.Mesher->InterpolatePointDataOn();
 
   // A vertical plane projects onto a line: an error, not a box around it;
   // also one at 30 degrees to the axes, whose points round off the line.
@@ -639,7 +680,9 @@ int TestProjectToXY()
   // A plane z = constant is never changed by the option.
   mesh = h.Run(Square(10.0, 7.5), "z = 7.5, projection on");
   mesh->GetBounds(bounds);
-  Check(h.NoError() && bounds[4] == 7.5 && bounds[5] == 7.5, "on: a plane z = 7.5 stays at 7.5");
+  Check(h.NoError() && bounds[4] == 7.5 && bounds[5] == 7.5 &&
+      !mesh->GetPointData()->GetArray("InputZ"),
+    "on: a plane z = 7.5 stays at 7.5, with no InputZ");
   return 0;
 }
 
