@@ -99,7 +99,8 @@ void OverlayStitchKeepActive(vtkDataSetAttributes* in, vtkDataSetAttributes* out
     vtkAbstractArray* active = in->GetAbstractAttribute(a);
     if (active && active->GetName() &&
       std::find(carried.begin(), carried.end(), active) != carried.end() &&
-      a != vtkDataSetAttributes::GLOBALIDS && a != vtkDataSetAttributes::PEDIGREEIDS)
+      a != vtkDataSetAttributes::GLOBALIDS && a != vtkDataSetAttributes::PEDIGREEIDS &&
+      a != vtkDataSetAttributes::NORMALS)
     {
       out->SetActiveAttribute(active->GetName(), a);
     }

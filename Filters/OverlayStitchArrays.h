@@ -50,7 +50,9 @@ std::string OverlayStitchShortArrayNote(const char* kind, const char* name, vtkI
 
 /// Makes in's active attributes (scalars, vectors, ...) active in out where
 /// they are among carried, the arrays carried there; not global or pedigree
-/// ids, which the output repeats, so that they are ids no more.
+/// ids, which the output repeats, so that they are ids no more; nor normals:
+/// a flat mesh's are its plane's, and those carried from a curved surface
+/// (a Slice of a sphere) would shade it as a dome (a review).
 void OverlayStitchKeepActive(vtkDataSetAttributes* in, vtkDataSetAttributes* out,
   const std::vector<vtkAbstractArray*>& carried);
 

@@ -902,6 +902,7 @@ vtkOverlayStitchMesher::vtkOverlayStitchMesher()
   , MergeTolerance(0.0)
   , ProjectToXYPlane(0)
   , UseInputHolePoints(1)
+  , ReportFailureToPipeline(1)
   , ApplyRegionAreas(0)
   , GapRatioOverlay(0)
   , MaximumSteinerPoints(0)
@@ -995,14 +996,16 @@ int vtkOverlayStitchMesher::FillInputPortInformation(int port, vtkInformation* i
 namespace
 {
 /// What RequestData returns after reporting an error: 0, VTK's failure, in a
-/// serial run, so that Update() returns 0 too; 1 in a parallel one, whose
-/// other ranks return 1 with empty outputs: a failure on rank 0 alone would
-/// stop the filters downstream there, while on the other ranks they would
-/// wait for rank 0 in their collective steps.
-int Failure()
+/// serial run, so that Update() returns 0 too (unless the filter's
+/// ReportFailureToPipeline is off, as in ParaView); 1 in a parallel one,
+/// whose other ranks return 1 with empty outputs: a failure on rank 0 alone
+/// would stop the filters downstream there, while on the other ranks they
+/// would wait for rank 0 in their collective steps.
+int Failure(vtkOverlayStitchMesher* self)
 {
   vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
-  return controller && controller->GetNumberOfProcesses() > 1 ? 1 : 0;
+  const bool parallel = controller && controller->GetNumberOfProcesses() > 1;
+  return parallel || !self->GetReportFailureToPipeline() ? 1 : 0;
 }
 } // namespace
 
@@ -1217,12 +1220,12 @@ std::optional<int> vtkOverlayStitchMesher::MeshRun::Prepare(vtkDataObject* data)
   if (this->Combination.InvalidCells > 0 || this->Gather.InvalidCells > 0 || !refused.empty() ||
     this->Gather.MalformedPieces > 0)
   {
-    return Failure();
+    return Failure(self);
   }
   if (!this->Input)
   {
     vtkErrorWithObjectMacro(self, "No input polydata.");
-    return Failure();
+    return Failure(self);
   }
   WarnOf(self, this->Gather.NotCarried);
   const std::string leftOut = ArraysLeftOut({ &this->Combination, &this->Gather },
@@ -1299,7 +1302,7 @@ std::optional<int> vtkOverlayStitchMesher::MeshRun::ReadPslg()
   {
     vtkErrorWithObjectMacro(self,
       "Cannot mesh the input: " << Numbered(ExplainPoints(inputError, input), this->Numbering));
-    return Failure();
+    return Failure(self);
   }
   this->Pslg.points.reserve(points.size());
   for (const osm::Vec3& p : points)
@@ -1366,7 +1369,7 @@ std::optional<int> vtkOverlayStitchMesher::MeshRun::ReadHoleSeeds()
         << xySeeds
         << ", names no single point; give hole seeds as the input's field data HolePoints with 3 "
            "components (x, y, z).");
-    return Failure();
+    return Failure(self);
   }
   const std::vector<double>& property = self->HolePoints;
   if (property.size() % 2 != 0)
@@ -1463,7 +1466,7 @@ std::optional<int> vtkOverlayStitchMesher::MeshRun::MeshPslg(bool interpolate)
   catch (const std::exception& e)
   {
     vtkErrorWithObjectMacro(self, "Internal error in the mesher: " << e.what());
-    return Failure();
+    return Failure(self);
   }
 
   // Which cells the named segments are, and which seeds the named holes.
@@ -1482,7 +1485,7 @@ std::optional<int> vtkOverlayStitchMesher::MeshRun::MeshPslg(bool interpolate)
     vtkErrorWithObjectMacro(
       self, "Meshing failed: " << Numbered(explain(this->Result.error), this->Numbering));
     // An abort is no failure of the filter's, as for VTK's own (a review).
-    return this->Result.error == osm::kAbortedByTheUser ? 1 : Failure();
+    return this->Result.error == osm::kAbortedByTheUser ? 1 : Failure(self);
   }
   return std::nullopt;
 }
@@ -1672,10 +1675,13 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   catch (const std::exception& e)
   {
     // Saying so allocates too: with no memory left, the outputs stay as they
-    // are and the error unsaid, rather than an exception leaving.
+    // are and the error unsaid, rather than an exception leaving; such
+    // outputs are never passed on as a success.
+    bool cleared = false;
     try
     {
       ClearOutputs({ mesh, edges, overlay });
+      cleared = true;
       if (dynamic_cast<const std::bad_alloc*>(&e))
       {
         vtkErrorMacro("Cannot mesh the input: out of memory while reading it or building the "
@@ -1688,7 +1694,7 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
     }
     catch (...)
     {}
-    return Failure();
+    return cleared ? Failure(this) : 0;
   }
 }
 
@@ -1715,6 +1721,8 @@ void vtkOverlayStitchMesher::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MergeTolerance: " << this->MergeTolerance << "\n";
   os << indent << "ProjectToXYPlane: " << (this->ProjectToXYPlane ? "On" : "Off") << "\n";
   os << indent << "UseInputHolePoints: " << (this->UseInputHolePoints ? "On" : "Off") << "\n";
+  os << indent << "ReportFailureToPipeline: " << (this->ReportFailureToPipeline ? "On" : "Off")
+     << "\n";
   os << indent << "ApplyRegionAreas: " << (this->ApplyRegionAreas ? "On" : "Off") << "\n";
   os << indent << "GapRatioOverlay: " << (this->GapRatioOverlay ? "On" : "Off") << "\n";
   os << indent << "MaximumSteinerPoints: " << this->MaximumSteinerPoints << "\n";

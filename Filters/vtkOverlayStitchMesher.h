@@ -228,6 +228,20 @@ public:
 
   ///@{
   /**
+   * If on (the default), a serial run that fails returns failure to the
+   * pipeline, so that Update() returns 0; either way the error is reported
+   * and the outputs are empty. ParaView's plugin turns it off (its XML): in
+   * ParaView 5.11 a filter that returns failure during a render leaves the
+   * view and the Information panel on its last output for good, even once
+   * the run succeeds again (a review; its stock filters do the same).
+   */
+  vtkSetMacro(ReportFailureToPipeline, vtkTypeBool);
+  vtkGetMacro(ReportFailureToPipeline, vtkTypeBool);
+  vtkBooleanMacro(ReportFailureToPipeline, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
    * Stop with an error when more Steiner points than this would be needed.
    * 0 (the default) means no cap.
    */
@@ -341,6 +355,7 @@ protected:
   double MergeTolerance;
   vtkTypeBool ProjectToXYPlane;
   vtkTypeBool UseInputHolePoints;
+  vtkTypeBool ReportFailureToPipeline;
   vtkTypeBool ApplyRegionAreas;
   vtkTypeBool GapRatioOverlay;
   vtkIdType MaximumSteinerPoints;
