@@ -40,6 +40,7 @@
 #include "OverlayStitchGather.h"
 #include "OverlayStitchInternalNames.h"
 #include "OverlayStitchPointData.h"
+#include "OverlayStitchSeeds.h"
 #include "OverlayStitchUnstructured.h"
 #include "Plane.h"
 #include "Pslg.h"
@@ -1106,10 +1107,27 @@ vtkSmartPointer<vtkPolyData> vtkOverlayStitchMesher::MeshRun::LocalPiece(
                           "Extract Surface to mesh the edges of its cells.");
     return OverlayStitchRefusedPiece();
   }
+  // Field data seeds written with reference points (the .poly reader's)
+  // follow the points through Transform and the like.
+  std::string stayed;
+  const vtkSmartPointer<vtkDataObject> seedsFollowing =
+    OverlayStitchWithBlocksReplaced(data, [&stayed](vtkDataObject* block, int index) {
+      std::string note;
+      vtkSmartPointer<vtkDataObject> moved = OverlayStitchSeedsFollowingPoints(block, note);
+      if (!note.empty() && stayed.empty())
+      {
+        stayed = (index < 0 ? "Of the input: " : "Of block " + std::to_string(index) + ": ") + note;
+      }
+      return moved;
+    });
+  if (!stayed.empty())
+  {
+    vtkWarningWithObjectMacro(self, << stayed << ".");
+  }
   // Arrays named like those the filter adds would stand for them.
   std::vector<std::string> internalNames;
   const vtkSmartPointer<vtkDataObject> withoutInternal =
-    OverlayStitchWithoutInternalArrays(data, internalNames);
+    OverlayStitchWithoutInternalArrays(seedsFollowing, internalNames);
   if (!internalNames.empty())
   {
     vtkWarningWithObjectMacro(

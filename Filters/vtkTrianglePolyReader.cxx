@@ -5,6 +5,8 @@
 // osm::PolyFile into vtkPolyData.
 #include "vtkTrianglePolyReader.h"
 
+#include "OverlayStitchSeeds.h"
+
 #include "vtkAlgorithm.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -167,6 +169,11 @@ void FillOutput(const osm::PolyFile& file, vtkPolyData* output)
         static_cast<vtkIdType>(r), region.seed.x, region.seed.y, region.attribute, region.maxArea);
     }
     output->GetFieldData()->AddArray(regions);
+  }
+  // So that the seeds follow the points through Transform and the like.
+  if (!file.pslg.holes.empty() || !file.pslg.regions.empty())
+  {
+    OverlayStitchAddSeedReference(output);
   }
 }
 

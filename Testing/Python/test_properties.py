@@ -253,6 +253,40 @@ def test_poly_with_hole(data_dir):
     Delete(reader)
 
 
+def test_seeds_follow_transform(data_dir):
+    """The file's hole and region seeds follow the points through Transform
+    (a review: field data passes through Transform unchanged, and a scaled
+    face.poly lost its main region to a hole seed left behind)."""
+    reader = TrianglePolyReader(FileName=os.path.join(data_dir, "square_hole.poly"))
+    check(servermanager.Fetch(reader).GetFieldData().GetArray("SeedReferencePoints") is not None,
+          "the reader records the seeds' reference points")
+    moved = Transform(Input=reader)
+    moved.Transform = "Transform"
+    # The hole [4, 6]^2 goes to [98, 102] x [-62, -58]: x' = 110 - 2y, y' = 2x - 70.
+    moved.Transform.Scale = [2, 2, 1]
+    moved.Transform.Rotate = [0, 0, 90]
+    moved.Transform.Translate = [110, -70, 0]
+    mesher = OverlayStitchMesher(Input=moved, ApplyRegionAreas=1)
+    mesh = mesh_of(mesher)
+    area = area3d(mesh)
+    inside = 0
+    for c in range(mesh.GetNumberOfCells()):
+        ids = mesh.GetCell(c).GetPointIds()
+        xs = [mesh.GetPoint(ids.GetId(k)) for k in range(3)]
+        cx, cy = sum(p[0] for p in xs) / 3, sum(p[1] for p in xs) / 3
+        inside += 1 if 98 < cx < 102 and -62 < cy < -58 else 0
+    largest = max(triangle_areas(mesh))
+    check(abs(area - 384.0) < 1e-6 and inside == 0,
+          "Transform (scale 2, rotate 90, translate): the hole moves with the square (area %.9g, "
+          "expected 384; %d centroid(s) in the hole)" % (area, inside))
+    check(largest <= 2.0 and mesh.GetNumberOfCells() >= 384 / 2.0,
+          "Transform: the region seed moves too, its maximum area scaled by 4 (%d triangles, "
+          "largest %.3g)" % (mesh.GetNumberOfCells(), largest))
+    Delete(mesher)
+    Delete(moved)
+    Delete(reader)
+
+
 def test_hole_points_property(data_dir):
     """HolePoints: (x, y) pairs cut holes, one AddHolePoint per pair (the panel's two columns)."""
     path = os.path.join(data_dir, "square_hole.poly")
@@ -291,6 +325,7 @@ def main(plugin, data_dir, scratch):
     test_merge_tolerance(scratch)
     test_poly_with_hole(data_dir)
     test_hole_points_property(data_dir)
+    test_seeds_follow_transform(data_dir)
     print("%d failure(s)" % len(failures))
     return 1 if failures else 0
 
