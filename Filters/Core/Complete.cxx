@@ -386,6 +386,8 @@ Stop untriangulable(const Array<Point>& points, const Array<Point>& polygon)
 
 Completion complete(PlanarGraph& g, Statistics& stats, RunContext& run)
 {
+  // This round's counts, as stitch's.
+  stats.facesCompleted = stats.largestFace = 0;
   Completion out;
   out.triangles = std::move(g.intact);
   if (!out.triangles.empty())

@@ -211,12 +211,15 @@ class Mesher
 {
 public:
   /// translate: whether points far from 0 for their spread are meshed about
-  /// an origin near them (exactOrigin).
-  Mesher(const Pslg& input, const Options& options, Progress* progress, bool translate)
+  /// an origin near them (exactOrigin); shrinkBound: whether that mesh meets
+  /// the size bound less the rounding of adding the origin back.
+  Mesher(const Pslg& input, const Options& options, Progress* progress, bool translate,
+    bool shrinkBound = false)
     : input(input)
     , options(options)
     , run(progress)
     , translate(translate)
+    , shrinkBound(shrinkBound)
   {}
   Result execute();
   /// The warnings collected so far (when a Stop ends the run, they still hold).
@@ -225,6 +228,10 @@ public:
   /// points turned a triangle over, past the angle bound or an edge past the
   /// maximum edge length: mesh without it.
   bool translationRoundedBadly() const { return roundedBadly; }
+  /// Whether the run stopped because adding the origin back stretched an
+  /// edge past the size bound by that rounding alone: mesh again with the
+  /// bound shrunk by it (shrinkBound).
+  bool boundStretchedByTheOrigin() const { return boundStretched; }
   /// What the split crossings added to a mesh that outgrew a cap or memory,
   /// where they are over 10 times the input points ("" otherwise): a
   /// streamline circling a limit cycle crossed itself 8.6 million times (a
@@ -242,6 +249,8 @@ public:
 
 private:
   void meshRounds(Work& w);
+  double originRounding() const;
+  double boundBeforeTheOrigin() const;
   Domain chooseDomain(const Work& w, Array<int>& hull);
   void buildOutput(const Work& w, const PlanarGraph& g, Completion& c, Carving& carve,
     const Overlay& overlay, Array<Edge>& edges, Domain domain);
@@ -259,7 +268,9 @@ private:
   Result res;
   CleanPslg clean;
   const bool translate;
+  const bool shrinkBound;
   bool roundedBadly = false;
+  bool boundStretched = false;
   Frame frame;
   const int& exponent = frame.exponent;
   std::string firstCrossing;       ///< the first crossing split, for the warning
@@ -741,6 +752,26 @@ Domain Mesher::chooseDomain(const Work& w, Array<int>& hull)
   return domain;
 }
 
+/// How much adding the origin back may lengthen an edge: half a unit in the
+/// last place of each coordinate, at both ends.
+double Mesher::originRounding() const
+{
+  const double far =
+    std::max(std::fabs(frame.origin.x), std::fabs(frame.origin.y)) + std::ldexp(1.0, exponent);
+  return 2 * std::numeric_limits<double>::epsilon() * far;
+}
+
+/// The size bound the mesh meets before the origin is added back: the
+/// user's, or with shrinkBound, less originRounding(), so that the user's
+/// coordinates meet it (a review: an edge of 7.0003e-5 against 7e-5 at 1e8).
+double Mesher::boundBeforeTheOrigin() const
+{
+  const double bound = options.maxEdgeLength;
+  if (!shrinkBound || !(bound > 0) || (frame.origin.x == 0 && frame.origin.y == 0))
+    return bound;
+  return originRounding() < bound / 2 ? bound - originRounding() : bound;
+}
+
 void Mesher::meshRounds(Work& w)
 {
   Statistics& st = res.stats;
@@ -761,7 +792,7 @@ void Mesher::meshRounds(Work& w)
     OverlayOptions oo;
     oo.gamma = st.gamma;
     oo.gapRatio = options.gapRatioOverlay;
-    oo.maxEdgeLength = std::ldexp(options.maxEdgeLength, -exponent);
+    oo.maxEdgeLength = std::ldexp(boundBeforeTheOrigin(), -exponent);
     // A bound that scaling rounds to 0 would read as none: keep it tiny, and
     // the overlay refuses it as too small to mesh.
     if (options.maxEdgeLength > 0 && oo.maxEdgeLength == 0)
@@ -1174,12 +1205,14 @@ void Mesher::assignRegionAttributes(const Carving& carve)
     res.regionAttribute[t] = ofRegion[res.regionId[t]];
 }
 
-/// Whether an edge of the mesh is longer than maxEdge by no more than rounding
-/// (the fuzzer: 2.9285714285714306 against 2.928571428571429 once an origin
-/// was added back). Edges a warning says stay longer are far longer.
-bool anyRoundedAbove(const TriMesh& mesh, double maxEdge)
+/// Whether an edge of the mesh is longer than maxEdge by no more than rounding:
+/// a relative 2^-36 (the fuzzer: 2.9285714285714306 against 2.928571428571429
+/// once an origin was added back), or slack (the rounding of adding it back).
+/// Edges a warning says stay longer are far longer.
+bool anyRoundedAbove(const TriMesh& mesh, double maxEdge, double slack)
 {
-  const double bound2 = maxEdge * maxEdge, rounded2 = bound2 * (1 + 0x1p-36);
+  const double bound2 = maxEdge * maxEdge;
+  const double rounded2 = std::max(bound2 * (1 + 0x1p-36), (maxEdge + slack) * (maxEdge + slack));
   if (!(maxEdge > 0))
     return false;
   for (const Triangle& t : mesh.triangles)
@@ -1418,12 +1451,19 @@ void Mesher::buildOutput(const Work& w, const PlanarGraph& g, Completion& c, Car
   st.outputTriangles = res.mesh.triangles.size();
   run.report(0.6);
   angleExtremes(res.mesh, st.minAngleDeg, st.maxAngleDeg, run);
-  if ((frame.origin.x != 0 || frame.origin.y != 0) &&
-    (st.maxAngleDeg > st.predictedMaxAngleDeg || anyTurnedOver(res.mesh) ||
-      anyRoundedAbove(res.mesh, options.maxEdgeLength)))
+  if (frame.origin.x != 0 || frame.origin.y != 0)
   {
-    roundedBadly = true;
-    throw Stop{ "adding the origin back rounded the mesh badly" };
+    const bool stretched = anyRoundedAbove(res.mesh, options.maxEdgeLength, originRounding());
+    if (stretched && !shrinkBound)
+    {
+      boundStretched = true;
+      throw Stop{ "adding the origin back stretched an edge past the size bound" };
+    }
+    if (stretched || st.maxAngleDeg > st.predictedMaxAngleDeg || anyTurnedOver(res.mesh))
+    {
+      roundedBadly = true;
+      throw Stop{ "adding the origin back rounded the mesh badly" };
+    }
   }
   if (st.maxAngleDeg > st.predictedMaxAngleDeg)
     res.warnings.push_back(
@@ -1450,11 +1490,11 @@ void Mesher::buildOutput(const Work& w, const PlanarGraph& g, Completion& c, Car
 namespace
 {
 
-Result meshIn(
-  const Pslg& input, const Options& options, Progress* progress, bool translate, bool& roundedBadly)
+Result meshIn(const Pslg& input, const Options& options, Progress* progress, bool translate,
+  bool& roundedBadly, bool shrinkBound = false, bool* stretched = nullptr)
 {
   const pages::Reuse reuse; // declared first: the mesher's arrays are freed into it
-  Mesher mesher(input, options, progress, translate);
+  Mesher mesher(input, options, progress, translate, shrinkBound);
   try
   {
     return mesher.execute();
@@ -1462,6 +1502,8 @@ Result meshIn(
   catch (const Stop& stop)
   {
     roundedBadly = mesher.translationRoundedBadly();
+    if (stretched)
+      *stretched = mesher.boundStretchedByTheOrigin();
     Result r;
     r.error = stop.reason + (stop.outgrown ? mesher.grownByCrossings() : "");
     r.warnings = mesher.takeWarnings();
@@ -1482,8 +1524,12 @@ Result meshIn(
 /// see the points as they are written.
 Result meshOnce(const Pslg& input, const Options& options, Progress* progress)
 {
-  bool roundedBadly = false;
-  Result r = meshIn(input, options, progress, true, roundedBadly);
+  bool roundedBadly = false, stretched = false;
+  Result r = meshIn(input, options, progress, true, roundedBadly, false, &stretched);
+  // Edges the origin's rounding stretched past the size bound: that mesh
+  // again, meeting the bound less the rounding.
+  if (stretched)
+    r = meshIn(input, options, progress, true, roundedBadly, true);
   if (!roundedBadly)
     return r;
   r = meshIn(input, options, progress, false, roundedBadly);

@@ -243,6 +243,20 @@ int Walker::firstStep(int cur, int b, int& l, int& r, int& tri)
   });
   if (tri >= 0)
     return -1;
+  // Or b lies exactly beyond a neighbour u, on no triangle's inside: cur
+  // was taken onto the segment, a few units of rounding off its line, and u
+  // lies on the line from cur to b but outside its own reach of the line
+  // (a review: 55 of 1,968 such inputs ended in the error below). The
+  // chain's detour from the line is no larger than cur's.
+  if (ov.aroundVertex(cur, [&](int t, int i) {
+        const int u = ov.tris[t][(i + 1) % 3];
+        if (orientSign(C, P[u], B) != 0 || !ahead(C, P[u], B))
+          return false;
+        tri = ov.edgeId(t, (i + 2) % 3);
+        next = u;
+        return true;
+      }) >= 0)
+    return next;
   throw Stop{ "internal error: cannot leave vertex " + std::to_string(cur) + " while stitching" };
 }
 
@@ -745,6 +759,10 @@ void listIntact(OverlayEdges& ov, const Array<std::uint8_t>& flags, const Array<
 PlanarGraph stitch(OverlayEdges ov, Array<Point> points, const Array<char>& isInput,
   const Walk& walk, Array<Edge>* inspect, Statistics& stats, RunContext& run)
 {
+  // This round's counts: a round meshed again (a size bound, region areas,
+  // crossings split) counts afresh (a review: KeptEdges added up over rounds).
+  stats.goodCrossings = stats.badCrossings = stats.uncrossedEdges = 0;
+  stats.keptEdges = stats.discardedEdges = 0;
   PlanarGraph g;
   // Each crossing may add a stitch vertex, and each overlay edge, crossing
   // and piece at most two edges: reserve so that appending never copies.

@@ -134,32 +134,51 @@ TEST(Mesher, OverlayIsAQualityMeshWhereTheDomainMayBe)
   }
 }
 
-TEST(Mesher, EdgeClassesAreConsistent)
+/// Every overlay edge of the result is counted in its class by the
+/// statistics, which are of the last round only.
+void expectEdgeClassesMatchStatistics(const Result& r, const std::string& name)
 {
-  const Result r = meshAndValidate(wedgeInSquare(), "wedge");
-  std::size_t overlay = 0, discarded = 0, keptCrossed = 0, uncrossed = 0, input = 0;
+  std::size_t overlay = 0, discarded = 0, keptCrossed = 0, uncrossed = 0;
   for (const Edge& e : r.edges)
   {
-    ASSERT_GE(e.a, 0);
-    ASSERT_LT(static_cast<std::size_t>(e.b), r.edgeVertices.size());
+    ASSERT_GE(e.a, 0) << name;
+    ASSERT_LT(static_cast<std::size_t>(e.b), r.edgeVertices.size()) << name;
     if (e.flags & EdgeOverlay)
     {
       ++overlay;
       // Kept and discarded are exclusive, and one of them always holds.
-      EXPECT_NE(bool(e.flags & EdgeKept), bool(e.flags & EdgeDiscarded));
+      EXPECT_NE(bool(e.flags & EdgeKept), bool(e.flags & EdgeDiscarded)) << name;
     }
     discarded += edgeClass(e.flags) == EdgeClass::Discarded;
     keptCrossed += edgeClass(e.flags) == EdgeClass::Kept;
     uncrossed += (e.flags & EdgeOverlay) && !(e.flags & EdgeCrossed);
-    input += (e.flags & EdgeInput) != 0;
   }
-  EXPECT_EQ(overlay, r.stats.uncrossedEdges + r.stats.keptEdges + r.stats.discardedEdges);
-  EXPECT_EQ(discarded, r.stats.discardedEdges);
-  EXPECT_EQ(keptCrossed, r.stats.keptEdges);
-  EXPECT_EQ(uncrossed, r.stats.uncrossedEdges);
+  EXPECT_EQ(overlay, r.stats.uncrossedEdges + r.stats.keptEdges + r.stats.discardedEdges) << name;
+  EXPECT_EQ(discarded, r.stats.discardedEdges) << name;
+  EXPECT_EQ(keptCrossed, r.stats.keptEdges) << name;
+  EXPECT_EQ(uncrossed, r.stats.uncrossedEdges) << name;
+  EXPECT_EQ(r.stats.crossings, r.stats.goodCrossings + r.stats.badCrossings) << name;
+}
+
+TEST(Mesher, EdgeClassesAreConsistent)
+{
+  const Result r = meshAndValidate(wedgeInSquare(), "wedge");
+  expectEdgeClassesMatchStatistics(r, "wedge");
+  std::size_t input = 0;
+  for (const Edge& e : r.edges)
+    input += (e.flags & EdgeInput) != 0;
   EXPECT_GT(r.stats.discardedEdges, 0u); // the 5° wedge forces bad crossings
   EXPECT_GT(input, wedgeInSquare().segments.size());
-  EXPECT_EQ(r.stats.crossings, r.stats.goodCrossings + r.stats.badCrossings);
+  // Meshed in two rounds, the second at the size bound: the statistics
+  // count the last (a review: they added up the rounds' counts).
+  Pslg thinL;
+  thinL.points = { { 0, 0 }, { 10, 0 }, { 10, 0.1 }, { 0.1, 0.1 }, { 0.1, 10 }, { 0, 10 } };
+  for (int k = 0; k < 6; ++k)
+    thinL.segments.push_back({ k, (k + 1) % 6 });
+  Options bounded;
+  bounded.maxEdgeLength = 0.05;
+  const Result l = meshAndValidate(thinL, "a thin L at a size bound", bounded);
+  expectEdgeClassesMatchStatistics(l, "a thin L at a size bound");
 }
 
 TEST(Mesher, IsDeterministic)
@@ -486,6 +505,66 @@ TEST(Mesher, AMeshBeyondTheMachinesMemoryIsRefusedAtOnce)
     std::string::npos)
     << r.error;
   EXPECT_LE(progress.furthest, 0.02);
+}
+
+TEST(Mesher, APointTakenOntoASegmentLeavesAlongANeighbourOnTheLineFromIt)
+{
+  // Found by a review: point C a few units of rounding above the segment
+  // (0.75, 0) (0, 0), taken onto it by the walk, and point u exactly on the
+  // line from C to the segment's end but beyond its own reach of the segment:
+  // no triangle at C held the direction strictly, and the walk ended in
+  // "internal error: cannot leave vertex". Its sweep, 1,968 inputs.
+  const double eps = std::numeric_limits<double>::epsilon();
+  int cases = 0;
+  for (double c : { 0.5, 0.375, 0.625, 0.5625 })
+    for (double s : { 31.0 / 32, 63.0 / 64, 15.0 / 16, 127.0 / 128, 7.0 / 8, 0.75 })
+      for (int k = 0; k <= 40; ++k)
+        for (const bool box : { true, false })
+        {
+          const double delta = eps * (2.0 + 0.25 * k);
+          Pslg p;
+          p.points = { { 0.75, 0 }, { 0, 0 }, { c, delta }, { c * s, delta * s } };
+          if (!box)
+            p.points.insert(p.points.end(), { { 0.3, 0.5 }, { 0.3, -0.5 } });
+          p.segments = { { 0, 1 } };
+          Options o;
+          o.domain = box ? Domain::Box : Domain::Auto;
+          const std::string name = "C = (" + std::to_string(c) + ", " +
+            std::to_string(2.0 + 0.25 * k) + " eps), u = C " + std::to_string(s) +
+            (box ? ", box" : ", auto");
+          const Result r = mesh(p, o);
+          EXPECT_EQ(r.error.find("internal error"), std::string::npos) << name << ": " << r.error;
+          if (r.ok)
+            meshAndValidate(p, name, o);
+          ++cases;
+        }
+  EXPECT_EQ(cases, 1968);
+}
+
+TEST(Mesher, ASizeBoundHoldsAtFarOffCoordinates)
+{
+  // Found by a review: a square 1e-3 wide at (1e8, 1e8), meshed about an
+  // origin near it, had edges of 7.0003e-5 against a bound of 7e-5 once the
+  // origin was added back, which rounds each vertex by half a unit in the
+  // last place there (7e-9); nothing said so.
+  for (const double at : { 1e8, -3.7e12, 12345.678 })
+  {
+    const double w = 1e-3 * std::max(1.0, std::fabs(at) / 1e8);
+    Pslg p;
+    p.points = { { at, at }, { at + w, at }, { at + w, at + w }, { at, at + w } };
+    p.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 } };
+    Options o;
+    o.maxEdgeLength = 0.07 * w;
+    const std::string name = "a square " + std::to_string(w) + " wide at " + std::to_string(at);
+    const Result r = meshAndValidate(p, name, o);
+    double longest = 0;
+    for (const Triangle& t : r.mesh.triangles)
+      for (int k = 0; k < 3; ++k)
+        longest = std::max(
+          longest, std::sqrt(dist2(r.mesh.vertices[t[k]], r.mesh.vertices[t[(k + 1) % 3]])));
+    EXPECT_LE(longest, o.maxEdgeLength) << name;
+    EXPECT_TRUE(r.warnings.empty()) << name << ": " << r.warnings.front();
+  }
 }
 
 TEST(Mesher, ABrickWallDigitisedTwiceMeshesOnceMerged)
