@@ -219,18 +219,23 @@ int Walker::firstStep(int cur, int b, int& l, int& r, int& tri)
   const Point& A = P[segmentStart];
   const Point& C = P[cur];
   const Point& B = P[b];
-  // First look for a neighbour on the way to b (within rounding): go there.
+  // A neighbour u ahead that accepts(u): the segment runs along the edge to it.
   int next = -1;
-  if (ov.aroundVertex(cur, [&](int t, int i) {
-        const int u = ov.tris[t][(i + 1) % 3];
-        if (!ahead(C, P[u], B) ||
-          !onLineWithinRounding(
-            orient2d(A, B, P[u]), P[u], std::sqrt(dist2(C, P[u])), segmentLength, onSegmentUlps(u)))
-          return false;
-        tri = ov.edgeId(t, (i + 2) % 3);
-        next = u;
-        return true;
-      }) >= 0)
+  auto alongEdge = [&](auto accepts) {
+    return ov.aroundVertex(cur, [&](int t, int i) {
+      const int u = ov.tris[t][(i + 1) % 3];
+      if (!ahead(C, P[u], B) || !accepts(u))
+        return false;
+      tri = ov.edgeId(t, (i + 2) % 3);
+      next = u;
+      return true;
+    }) >= 0;
+  };
+  // First look for a neighbour on the way to b (within rounding): go there.
+  if (alongEdge([&](int u) {
+        return onLineWithinRounding(
+          orient2d(A, B, P[u]), P[u], std::sqrt(dist2(C, P[u])), segmentLength, onSegmentUlps(u));
+      }))
     return next;
   // Otherwise b lies strictly inside the angle of one incident triangle.
   tri = ov.aroundVertex(cur, [&](int t, int i) {
@@ -248,14 +253,7 @@ int Walker::firstStep(int cur, int b, int& l, int& r, int& tri)
   // lies on the line from cur to b but outside its own reach of the line
   // (a review: 55 of 1,968 such inputs ended in the error below). The
   // chain's detour from the line is no larger than cur's.
-  if (ov.aroundVertex(cur, [&](int t, int i) {
-        const int u = ov.tris[t][(i + 1) % 3];
-        if (orientSign(C, P[u], B) != 0 || !ahead(C, P[u], B))
-          return false;
-        tri = ov.edgeId(t, (i + 2) % 3);
-        next = u;
-        return true;
-      }) >= 0)
+  if (alongEdge([&](int u) { return orientSign(C, P[u], B) == 0; }))
     return next;
   throw Stop{ "internal error: cannot leave vertex " + std::to_string(cur) + " while stitching" };
 }
