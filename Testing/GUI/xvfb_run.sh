@@ -3,28 +3,33 @@
 #
 # Runs COMMAND under xvfb-run, in a private virtual X server: Debian's ParaView
 # renders through GLX only, so anything that renders needs one. Two guards
-# around xvfb-run's start-up handshake, which was seen (rarely, under ctest) to
-# start the command before the server accepted connections ("bad X server
-# connection", and an Xvfb left behind):
-#  - the command starts only once the display's socket accepts a connection;
-#  - a run that still could not reach its display is retried, on another one.
+# around xvfb-run's start-up handshake, which was seen (rarely, under ctest on
+# a loaded machine) to start the command before the server took clients
+# ("bad X server connection", three attempts in a row once, while a fuzzer
+# and a compiler ran; an Xvfb left behind):
+#  - the command starts only once an X client can open the display (libX11's
+#    XOpenDisplay, with the server's authority file, as ParaView opens it;
+#    a socket that accepts a connection was not enough);
+#  - a run that still could not reach its display is retried, on another
+#    one, after a pause that grows with each attempt.
 # Display numbers are searched from a random start, away from xvfb-run's
 # default :99 that other jobs on the same machine may use.
 set -u
 
 if [ "${1:-}" = "--inside" ]; then
   shift
-  socket=/tmp/.X11-unix/X${DISPLAY#:}
-  /usr/bin/python3 - "$socket" <<'PY' || { echo "xvfb_run.sh: $DISPLAY never accepted a connection" >&2; exit 97; }
-import socket, sys, time
+  /usr/bin/python3 - <<'PY' || { echo "xvfb_run.sh: $DISPLAY never took a client" >&2; exit 97; }
+import ctypes, sys, time
+x11 = ctypes.cdll.LoadLibrary("libX11.so.6")
+x11.XOpenDisplay.restype = ctypes.c_void_p
+x11.XOpenDisplay.argtypes = [ctypes.c_char_p]
+x11.XCloseDisplay.argtypes = [ctypes.c_void_p]
 for _ in range(300):
-    try:
-        s = socket.socket(socket.AF_UNIX)
-        s.connect(sys.argv[1])
-        s.close()
+    display = x11.XOpenDisplay(None)
+    if display:
+        x11.XCloseDisplay(display)
         sys.exit(0)
-    except OSError:
-        time.sleep(0.1)
+    time.sleep(0.1)
 sys.exit(1)
 PY
   exec "$@"
@@ -33,13 +38,14 @@ fi
 log=$(mktemp -t osm-xvfb.XXXXXX)
 trap 'rm -f "$log"' EXIT
 status=1
-for attempt in 1 2 3; do
+for attempt in 1 2 3 4 5; do
+  [ "$attempt" -gt 1 ] && sleep $((2 * attempt))
   : >"$log"
   xvfb-run -a -n $((100 + RANDOM % 800)) -s "-screen 0 1280x1024x24" \
     bash "$0" --inside "$@" 2>&1 | tee "$log"
   status=${PIPESTATUS[0]}
   if [ "$status" -eq 0 ] ||
-    ! grep -q "bad X server connection\|never accepted a connection\|cannot open display\|Xvfb failed to start" "$log"; then
+    ! grep -q "bad X server connection\|never took a client\|cannot open display\|Xvfb failed to start" "$log"; then
     break
   fi
   echo "xvfb_run.sh: no usable X display (attempt $attempt), retrying" >&2
