@@ -88,38 +88,54 @@ private:
   double AreaScale = 0.0;
 };
 
-/// A copy of seeds (HolePoints: x, y and perhaps z; RegionAttributes: x, y,
-/// attribute and perhaps a maximum area) with each seed mapped.
-vtkSmartPointer<vtkDoubleArray> Mapped(vtkDataArray* seeds, bool regions, const PlaneAffineMap& map)
+/// HolePoints (x, y and perhaps z) mapped, as x, y, z: the plane they are
+/// mapped onto may contain the z direction, where (x, y) names no point.
+vtkSmartPointer<vtkDoubleArray> MappedHoles(vtkDataArray* holes, const PlaneAffineMap& map)
 {
   auto out = vtkSmartPointer<vtkDoubleArray>::New();
-  out->DeepCopy(seeds);
+  out->SetName(holes->GetName());
+  out->SetNumberOfComponents(3);
+  out->SetNumberOfTuples(holes->GetNumberOfTuples());
+  const bool xyz = holes->GetNumberOfComponents() == 3;
+  for (vtkIdType i = 0; i < holes->GetNumberOfTuples(); ++i)
+  {
+    double t[3] = { 0, 0, 0 };
+    holes->GetTuple(i, t);
+    Xyz to = map.Map(xyz ? Xyz{ t[0], t[1], t[2] } : map.Lift(t[0], t[1]));
+    out->SetTuple(i, to.data());
+  }
+  return out;
+}
+
+/// RegionAttributes (x, y, attribute and perhaps a maximum area) mapped, the
+/// areas scaled with the plane's.
+vtkSmartPointer<vtkDoubleArray> MappedRegions(vtkDataArray* regions, const PlaneAffineMap& map)
+{
+  auto out = vtkSmartPointer<vtkDoubleArray>::New();
+  out->DeepCopy(regions);
   const int components = out->GetNumberOfComponents();
-  const bool xyz = !regions && components == 3;
   for (vtkIdType i = 0; i < out->GetNumberOfTuples(); ++i)
   {
     double* t = out->GetPointer(i * components);
-    const Xyz to = map.Map(xyz ? Xyz{ t[0], t[1], t[2] } : map.Lift(t[0], t[1]));
+    const Xyz to = map.Map(map.Lift(t[0], t[1]));
     t[0] = to[0];
     t[1] = to[1];
-    if (xyz)
-    {
-      t[2] = to[2];
-    }
-    if (regions && components == 4 && t[3] > 0)
+    if (components == 4 && t[3] > 0)
     {
       t[3] *= map.GetAreaScale();
     }
   }
   return out;
 }
+
+constexpr int kReferencePoints = 4;
 } // namespace
 
 //------------------------------------------------------------------------------
 void OverlayStitchAddSeedReference(vtkPolyData* output)
 {
   const vtkIdType n = output->GetNumberOfPoints();
-  if (n < 3)
+  if (n < kReferencePoints)
   {
     return;
   }
@@ -128,8 +144,10 @@ void OverlayStitchAddSeedReference(vtkPolyData* output)
     output->GetPoint(i, p.data());
     return p;
   };
-  // The lowest point, the farthest from it, and the farthest from their line.
-  vtkIdType ids[3] = { 0, 0, 0 };
+  // The lowest point, the farthest from it, and the farthest from their
+  // line span the plane; a fourth, the middle one by id, tells whether the
+  // points moved by an affine map (a Warp By Scalar does not).
+  vtkIdType ids[kReferencePoints] = { 0, 0, 0, n / 2 };
   for (vtkIdType i = 1; i < n; ++i)
   {
     ids[0] = point(i) < point(ids[0]) ? i : ids[0];
@@ -169,18 +187,19 @@ vtkSmartPointer<vtkDataObject> OverlayStitchSeedsFollowingPoints(
   vtkDataArray* reference = field ? field->GetArray(OverlayStitchSeedReferenceName) : nullptr;
   vtkDataArray* holes = field ? field->GetArray("HolePoints") : nullptr;
   vtkDataArray* regions = field ? field->GetArray("RegionAttributes") : nullptr;
+  const vtkIdType n = data ? data->GetNumberOfPoints() : 0;
   if (!reference || reference->GetNumberOfComponents() != 4 ||
-    reference->GetNumberOfTuples() != 4 || (!holes && !regions) ||
-    reference->GetComponent(3, 0) != static_cast<double>(data->GetNumberOfPoints()))
+    reference->GetNumberOfTuples() != kReferencePoints + 1 || (!holes && !regions) ||
+    reference->GetComponent(kReferencePoints, 0) != static_cast<double>(n))
   {
     return nullptr;
   }
-  std::array<Xyz, 3> from, to;
+  std::array<Xyz, kReferencePoints> from, to;
   bool moved = false;
-  for (int k = 0; k < 3; ++k)
+  for (int k = 0; k < kReferencePoints; ++k)
   {
     const double id = reference->GetComponent(k, 0);
-    if (!(id >= 0 && id < static_cast<double>(data->GetNumberOfPoints())))
+    if (!(id >= 0 && id < static_cast<double>(n)))
     {
       return nullptr;
     }
@@ -193,23 +212,29 @@ vtkSmartPointer<vtkDataObject> OverlayStitchSeedsFollowingPoints(
   {
     return nullptr;
   }
-  const PlaneAffineMap map(from, to);
-  if (!map.Defined())
+  const PlaneAffineMap map({ from[0], from[1], from[2] }, { to[0], to[1], to[2] });
+  // The fourth point where the map takes it, to rounding (float points: 1e-6
+  // of the triangle's size): else the points moved by no affine map.
+  const Xyz fourth = map.Map(from[3]);
+  const double size = std::sqrt(vtkMath::Distance2BetweenPoints(to[0].data(), to[1].data())) +
+    std::sqrt(vtkMath::Distance2BetweenPoints(to[0].data(), to[2].data()));
+  if (!map.Defined() ||
+    !(std::sqrt(vtkMath::Distance2BetweenPoints(fourth.data(), to[3].data())) <= 1e-6 * size))
   {
     note = "the points have moved since the hole and region seeds of its field data were "
-           "written, in a way that does not map a plane onto a plane: the seeds are used as "
-           "they are";
+           "written, by no map of a plane onto a plane (a Warp By Scalar, for instance): the "
+           "seeds are used as they were written";
     return nullptr;
   }
   vtkNew<vtkFieldData> moves;
   moves->ShallowCopy(field);
   if (holes && (holes->GetNumberOfComponents() == 2 || holes->GetNumberOfComponents() == 3))
   {
-    moves->AddArray(Mapped(holes, false, map));
+    moves->AddArray(MappedHoles(holes, map));
   }
   if (regions && (regions->GetNumberOfComponents() == 3 || regions->GetNumberOfComponents() == 4))
   {
-    moves->AddArray(Mapped(regions, true, map));
+    moves->AddArray(MappedRegions(regions, map));
   }
   vtkSmartPointer<vtkDataSet> copy = vtk::TakeSmartPointer(data->NewInstance());
   copy->ShallowCopy(data);

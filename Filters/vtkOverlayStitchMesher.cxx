@@ -93,7 +93,10 @@ bool AbortRequested(vtkAlgorithm* filter)
 /// them (OverlayStitchPieceToSend), and the outputs are the serial run's.
 /// So is the reader's FileFirstIndex, the numbering of the file the input
 /// came from: the outputs number from 0, as VTK does, and a mesh written
-/// and read again must not claim its file's numbering (a user review).
+/// and read again must not claim its file's numbering (a user review); and
+/// the reader's SeedReferencePoints, ids and coordinates of input points that
+/// the outputs number otherwise (a review: a second mesher downstream would
+/// move the seeds by a map of unrelated points).
 void PassFieldData(vtkFieldData* in, vtkPolyData* output)
 {
   vtkFieldData* out = output->GetFieldData();
@@ -102,6 +105,7 @@ void PassFieldData(vtkFieldData* in, vtkPolyData* output)
     vtkAbstractArray* array = in->GetAbstractArray(a);
     const char* name = array->GetName();
     if (array->GetNumberOfTuples() > 0 && !(name && std::strcmp(name, "FileFirstIndex") == 0) &&
+      !(name && std::strcmp(name, OverlayStitchSeedReferenceName) == 0) &&
       !OverlayStitchIsInternalName(name) && (!name || !out->GetAbstractArray(name)))
     {
       out->AddArray(array);
@@ -723,7 +727,7 @@ vtkSmartPointer<ArrayT> MakeArray(const char* name, vtkIdType size)
   return array;
 }
 
-/// Whether normals (3 components, the input's, carried to the mesh) point
+/// Whether point normals (3 components, the input's, carried to the mesh) point
 /// mostly to the side from which the mesh's triangles, all wound one way in
 /// the plane, are clockwise: they are then reversed, so that the winding and
 /// the carried normals agree (a review: a Plane source's normals, -z, on
@@ -1002,11 +1006,15 @@ namespace
 /// whose other ranks return 1 with empty outputs: a failure on rank 0 alone
 /// would stop the filters downstream there, while on the other ranks they
 /// would wait for rank 0 in their collective steps.
-int Failure(vtkOverlayStitchMesher* self)
+bool Parallel()
 {
   vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
-  const bool parallel = controller && controller->GetNumberOfProcesses() > 1;
-  return parallel || !self->GetReportFailureToPipeline() ? 1 : 0;
+  return controller && controller->GetNumberOfProcesses() > 1;
+}
+
+int Failure(vtkOverlayStitchMesher* self)
+{
+  return Parallel() || !self->GetReportFailureToPipeline() ? 1 : 0;
 }
 } // namespace
 
@@ -1585,12 +1593,10 @@ int vtkOverlayStitchMesher::MeshRun::FillOutputs(bool interpolate)
   {
     return 1;
   }
-  // Carried normals (the point normals, else those of the cells) decide
-  // which way the triangles face.
-  vtkDataArray* pointNormals = interpolate ? input->GetPointData()->GetNormals() : nullptr;
-  vtkDataArray* cellNormals = self->PassCellData ? input->GetCellData()->GetNormals() : nullptr;
+  // Carried point normals decide which way the triangles face (cell
+  // normals would count line cells' too, which reach no triangle).
   const bool reversed =
-    NormalsOppose(pointNormals ? pointNormals : cellNormals, result.mesh, this->Map);
+    interpolate && NormalsOppose(input->GetPointData()->GetNormals(), result.mesh, this->Map);
   FillMesh(result, this->Map, this->Mesh, outputSteps(start + 0.06, start + 0.09), reversed);
   if (this->Aborted())
   {
@@ -1712,7 +1718,7 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
     }
     catch (...)
     {}
-    return cleared ? Failure(this) : 0;
+    return cleared || Parallel() ? Failure(this) : 0;
   }
 }
 

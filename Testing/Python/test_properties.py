@@ -253,7 +253,7 @@ def test_poly_with_hole(data_dir):
     Delete(reader)
 
 
-def test_seeds_follow_transform(data_dir):
+def test_seeds_follow_transform(data_dir, scratch):
     """The file's hole and region seeds follow the points through Transform
     (a review: field data passes through Transform unchanged, and a scaled
     face.poly lost its main region to a hole seed left behind)."""
@@ -279,12 +279,62 @@ def test_seeds_follow_transform(data_dir):
     check(abs(area - 384.0) < 1e-6 and inside == 0,
           "Transform (scale 2, rotate 90, translate): the hole moves with the square (area %.9g, "
           "expected 384; %d centroid(s) in the hole)" % (area, inside))
-    check(largest <= 2.0 and mesh.GetNumberOfCells() >= 384 / 2.0,
+    # Unscaled, the bound of 0.5 would force at least 768 triangles, none
+    # larger than 0.5.
+    check(0.5 < largest <= 2.0 and 384 / 2.0 <= mesh.GetNumberOfCells() < 700,
           "Transform: the region seed moves too, its maximum area scaled by 4 (%d triangles, "
           "largest %.3g)" % (mesh.GetNumberOfCells(), largest))
+    check(mesh.GetFieldData().GetArray("SeedReferencePoints") is None,
+          "the reference points are not passed to the outputs")
     Delete(mesher)
+    # Stood up in a vertical plane, where (x, y) names no point: the moved
+    # hole seed is given in x, y and z.
+    # (square_hole.poly without its region line, whose seeds have no z.)
+    with open(os.path.join(data_dir, "square_hole.poly")) as f:
+        text = f.read()
+    holes_only = os.path.join(scratch, "square_hole_no_region.poly")
+    with open(holes_only, "w") as f:
+        f.write(text[:text.index("# one region seed")] + "0\n")
+    hole_reader = TrianglePolyReader(FileName=holes_only)
+    upright = Transform(Input=hole_reader)
+    upright.Transform = "Transform"
+    upright.Transform.Rotate = [90, 0, 0]
+    mesher = OverlayStitchMesher(Input=upright)
+    mesh = mesh_of(mesher)
+    check(abs(area3d(mesh) - 96.0) < 1e-6,
+          "Transform into a vertical plane: the hole moves with it (area %.9g, expected 96)"
+          % area3d(mesh))
+    Delete(mesher)
+    Delete(upright)
+    Delete(hole_reader)
+    # Warped in z by a point array, the points moved by no affine map: the
+    # seeds are used as written, which the XY projection still fits.
+    warped = WarpByScalar(Input=reader, Scalars=["POINTS", "Attribute0"], ScaleFactor=10)
+    mesher = OverlayStitchMesher(Input=warped, ProjectToXYPlane=1, ApplyRegionAreas=1)
+    errors = []
+    mesh = mesh_of(mesher, errors)
+    largest = max(triangle_areas_xy(mesh))
+    check(abs(area_xy(mesh) - 96.0) < 1e-6 and largest <= 0.5,
+          "Warp By Scalar: the file's hole and region area hold in the XY projection (area %.9g, "
+          "largest %.3g)" % (area_xy(mesh), largest))
+    check(any("by no map of a plane onto a plane" in e for e in errors),
+          "Warp By Scalar: a warning says the seeds are used as written")
+    Delete(mesher)
+    Delete(warped)
     Delete(moved)
     Delete(reader)
+
+
+def triangle_areas_xy(poly):
+    points = poly.GetPoints()
+    for c in range(poly.GetNumberOfCells()):
+        ids = poly.GetCell(c).GetPointIds()
+        a, b, p = (points.GetPoint(ids.GetId(k)) for k in range(3))
+        yield 0.5 * abs((b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]))
+
+
+def area_xy(poly):
+    return sum(triangle_areas_xy(poly))
 
 
 def test_hole_points_property(data_dir):
@@ -325,7 +375,7 @@ def main(plugin, data_dir, scratch):
     test_merge_tolerance(scratch)
     test_poly_with_hole(data_dir)
     test_hole_points_property(data_dir)
-    test_seeds_follow_transform(data_dir)
+    test_seeds_follow_transform(data_dir, scratch)
     print("%d failure(s)" % len(failures))
     return 1 if failures else 0
 
