@@ -5,10 +5,10 @@
 // Field data is passed through by geometric filters (Transform, Reflect, ...)
 // unchanged, so seeds written as coordinates stay behind when the points
 // move: a review's face.poly, scaled by 2, lost its main region to a seed
-// that then lay inside it. The .poly reader therefore records three input
+// that then lay inside it. The .poly reader therefore records four input
 // points beside its seeds (OverlayStitchAddSeedReference); the filter maps
-// the seeds by the affine map that takes those points where they are now
-// (OverlayStitchSeedsFollowingPoints).
+// the seeds by the affine map that takes the first three where they are now,
+// if it takes the fourth there too (OverlayStitchSeedsFollowingPoints).
 #ifndef OverlayStitchSeeds_h
 #define OverlayStitchSeeds_h
 
@@ -20,7 +20,7 @@ class vtkDataObject;
 class vtkPolyData;
 
 /// The field data array of the reference points: rows (point id, x, y, z) of
-/// three input points far apart, then (number of points, 0, 0, 0).
+/// three input points far apart and a fourth, then (number of points, 0, 0, 0).
 extern const char* const OverlayStitchSeedReferenceName;
 
 /// Adds the reference array to output's field data, from its points.
@@ -32,7 +32,8 @@ void OverlayStitchAddSeedReference(vtkPolyData* output);
 /// nothing moves: no reference array, another number of points than it
 /// recorded (a piece of a distributed dataset, merged points: the seeds are
 /// then used as they are), or the points where it recorded them. note: why
-/// the seeds could not follow, where the points moved but no map is defined.
+/// the seeds could not follow, where the points moved but by no affine map
+/// (the fourth point not where the first three's map takes it).
 vtkSmartPointer<vtkDataObject> OverlayStitchSeedsFollowingPoints(
   vtkDataObject* input, std::string& note);
 
