@@ -590,6 +590,18 @@ void Walker::findSegmentCrossings(const Array<int>* rank)
       addSegmentCrossing(s, steinerHits[k - 1].second, P[v]);
   }
   keepFirstOfEachPair(out.segmentCrossings);
+  // Where two segments properly cross, their crossing is taken from their own
+  // lines, not from the pieces, overlay edges or Steiner vertex that found it:
+  // those lie up to onSegmentUlps off the segments, and a crossing that far
+  // off bent the next round's pieces, and the chains stitched along them,
+  // past the rounding a chain may have (a review: 27 units in the last place
+  // at 1e8, meshed at its own coordinates).
+  for (SegmentCrossing& c : out.segmentCrossings)
+  {
+    const Segment &s = segments[c.a], &t = segments[c.b];
+    if (properlyCross(P[s[0]], P[s[1]], P[t[0]], P[t[1]]))
+      c.p = intersection(P[s[0]], P[s[1]], P[t[0]], P[t[1]]);
+  }
   refuseSegmentCrossings(out.segmentCrossings.size());
 }
 

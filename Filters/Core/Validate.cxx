@@ -869,6 +869,13 @@ void checkInputVertices(const Pslg& input, const VertexMap& map, Errors& errors)
       });
 }
 
+/// Rounding allowed off a segment, in units of the coordinates' epsilon: the
+/// stitching walk takes a point within 16 of them onto a segment of its
+/// round, and that segment's ends may be crossings, rounded within 1 of the
+/// input segment (a review: 16.1 at 1e8, where the mesh is made at the input's
+/// own coordinates).
+constexpr double kRoundingEpsilons = 17;
+
 /// How far off segment ab point p may be from rounding alone: the mesher's points on a
 /// segment are rounded, and so are its intersections with other lines.
 double roundingSlack(const Point& a, const Point& b, const Point& p)
@@ -876,7 +883,7 @@ double roundingSlack(const Point& a, const Point& b, const Point& p)
   const double scale = std::max({ std::fabs(a.x), std::fabs(a.y), std::fabs(b.x), std::fabs(b.y),
     std::fabs(p.x), std::fabs(p.y) });
   return 1e-9 * std::hypot(b.x - a.x, b.y - a.y) +
-    16 * std::numeric_limits<double>::epsilon() * scale;
+    kRoundingEpsilons * std::numeric_limits<double>::epsilon() * scale;
 }
 
 /// Searches a chain of mesh edges for input segment ab, from vertex A to vertex B. Each step
@@ -1168,7 +1175,7 @@ void checkDomainBoundary(
     return Box{ x.x0 - by, x.y0 - by, x.x1 + by, x.y1 + by };
   };
   const auto ulps = [](const Point& a, const Point& b) {
-    return 16 * std::numeric_limits<double>::epsilon() *
+    return kRoundingEpsilons * std::numeric_limits<double>::epsilon() *
       std::max({ std::fabs(a.x), std::fabs(a.y), std::fabs(b.x), std::fabs(b.y) });
   };
   std::vector<Box> boxes;

@@ -45,7 +45,7 @@ struct ValidationOptions
   /// chain may lie (after the split above): where a merge tolerance joined
   /// the crossings of segments, the chains bend through the joined points.
   /// A chain passes if it is straight (within the rounding allowance: 1e-9
-  /// of the length plus 16 units in the last place of the coordinates)
+  /// of the length plus 17 times the coordinates' magnitude times epsilon)
   /// between bends, each bend a vertex within this offset of the segment and
   /// within twice it of another input segment (a crossing joined there; a
   /// later round's crossing of two bent pieces may lie twice as far). Weaker

@@ -541,6 +541,53 @@ TEST(Mesher, APointTakenOntoASegmentLeavesAlongANeighbourOnTheLineFromIt)
   EXPECT_EQ(cases, 1968);
 }
 
+TEST(Mesher, ChainsMeshedAtFarOffCoordinatesStayWithinTheirRounding)
+{
+  // Found by a review (random segments 1e-4 long at 1e8, meshed at their own
+  // coordinates): 1 in 1,500 had a chain bent 27 units in the last place off
+  // its segment, and 9 in 1,500 with an enclosing pair of far points a
+  // boundary edge off its segment. The first (pencil) took a crossing from
+  // the pieces that found it, up to the walk's reach off the segments; the
+  // second (reduced to 6 segments) bent 16.1 epsilons off, the walk's 16 from
+  // a segment of its round plus that segment's rounded crossing.
+  const std::vector<std::pair<Pslg, Domain>> inputs = {
+    { { { { 100000000.00001957, 100000000.00009806 }, { 99999999.999991134, 99999999.99995397 },
+          { 99999999.999931797, 100000000.00007313 }, { 100000000.00003202, 99999999.999961555 },
+          { 100000000.00008868, 100000000.00004621 }, { 99999999.999935582, 99999999.999982268 },
+          { 99999999.999967441, 100000000.00009455 }, { 100000000.00002412, 99999999.999943182 },
+          { 100000000.00004248, 100000000.00009052 }, { 99999999.999980837, 99999999.999950409 },
+          { 100000000.00008363, 100000000.00005484 }, { 99999999.999928325, 99999999.999975905 } },
+        { { 0, 1 }, { 2, 3 }, { 4, 5 }, { 6, 7 }, { 8, 9 }, { 10, 11 } } },
+      Domain::Auto },
+    { { { { 100000000.00006732, 100000000.00008816 }, { 100000000.00000206, 100000000.00006102 },
+          { 100000000.00000794, 100000000.00010084 }, { 100000000.0000485, 100000000.00001724 },
+          { 100000000.00003543, 100000000.00007768 }, { 100000000.00003006, 100000000.00006264 },
+          { 100000000.0000419, 100000000.00004305 }, { 99999999.999931082, 99999999.999995962 },
+          { 100000000.00011383, 100000000.00002076 }, { 100000000.00003797, 100000000.00007251 },
+          { 99999999.999984086, 100000000.00003637 }, { 100000000.0000384, 100000000.00007927 },
+          { 100000000.00002022, 100000000.00004916 }, { 100000000.00007302, 100000000.0000134 },
+          { 100000000.00005573, 100000000.0000352 }, { 100000000.00003541, 100000000.00001468 },
+          { 100000000.00002544, 100000000.00000033 }, { 100000000.00004284, 100000000.00002 },
+          { 100000000.00005616, 100000000.00002778 }, { 100000000.00000459, 100000000.00001557 },
+          { 100000000.00007707, 100000000.00003977 }, { 100000000.00003761, 100000000.00008066 },
+          { 100000000.0000263, 100000000.00007176 }, { 100000000.0000419, 99999999.999999925 } },
+        { { 1, 2 }, { 3, 4 }, { 9, 10 }, { 14, 15 }, { 17, 18 }, { 22, 23 } } },
+      Domain::Enclosed },
+  };
+  for (std::size_t i = 0; i < inputs.size(); ++i)
+  {
+    Options o;
+    o.domain = inputs[i].second;
+    const Result r = meshAndValidate(inputs[i].first, "input " + std::to_string(i), o);
+    // Both are meshed at their own coordinates, the case in question.
+    EXPECT_TRUE(std::any_of(r.warnings.begin(), r.warnings.end(),
+      [](const std::string& w) {
+        return w.find("it was made at those coordinates") != std::string::npos;
+      }))
+      << i;
+  }
+}
+
 TEST(Mesher, ASizeBoundHoldsAtFarOffCoordinates)
 {
   // Found by a review: a square 1e-3 wide at (1e8, 1e8), meshed about an
@@ -896,7 +943,7 @@ TEST(Mesher, AnOverlapCarriesTheFirstInputSegment)
   }
 }
 
-TEST(Clean, TinySegmentsAmongCrossingsOfLongOnesAreRefusedAsBelowPrecision)
+TEST(Clean, TinySegmentsAmongCrossingsOfLongOnesMeshInTheHullAndAreRefusedInTheBox)
 {
   // Found by Properties.TinySegmentsAtCrossingsOfLongOnes at 400 seeds (seed
   // 241): segments 1e-10 and 3e-13 long within 1e-13 of where four long ones
@@ -904,7 +951,10 @@ TEST(Clean, TinySegmentsAmongCrossingsOfLongOnesAreRefusedAsBelowPrecision)
   // apart, placed to within 1e-16, in the wrong order, and the face they
   // made ran twice through them: "internal error: a face with 12 sides
   // could not be triangulated". Below what double precision resolves at the
-  // input's scale: refused as such, with where and the remedy.
+  // input's scale: refused as such, with where and the remedy. Since the
+  // crossings are taken from the segments' own lines (Stitch.cxx), the hull
+  // domain meshes it; the padded box's overlay still meets the tiny segments
+  // where double precision cannot separate them.
   Pslg p;
   p.points = { { 1.5921147501605128, 0.7059046524850171 },
     { -0.73960436503097082, -0.32792244542734966 }, { 1.1812011094083736, 0.68085332804616405 },
@@ -920,17 +970,20 @@ TEST(Clean, TinySegmentsAmongCrossingsOfLongOnesAreRefusedAsBelowPrecision)
   p.segments = { { 0, 1 }, { 2, 3 }, { 4, 5 }, { 6, 7 }, { 8, 9 }, { 10, 11 }, { 12, 13 } };
   Options hull;
   hull.domain = Domain::Hull;
-  const Result r = mesh(p, hull);
+  const Result meshed = meshAndValidate(p, "hull", hull);
+  EXPECT_NE(meshed.inputVertex[12], meshed.inputVertex[13]);
+  Options box;
+  box.domain = Domain::Box;
+  const Result r = mesh(p, box);
   ASSERT_FALSE(r.ok);
   EXPECT_EQ(r.error.find("internal error"), std::string::npos) << r.error;
-  EXPECT_NE(r.error.find("closer together than double precision resolves at the input's scale"),
-    std::string::npos)
+  EXPECT_NE(
+    r.error.find("closer to each other than double precision can separate"), std::string::npos)
     << r.error;
   EXPECT_NE(r.error.find("a merge tolerance"), std::string::npos) << r.error;
   // Which joins the tiny segments' points into one, and it meshes.
-  hull.mergeTolerance = 1e-12;
-  const Result merged = mesh(p, hull);
-  EXPECT_TRUE(merged.ok) << merged.error;
+  box.mergeTolerance = 1e-12;
+  const Result merged = meshAndValidate(p, "box, merged", box);
   EXPECT_EQ(merged.inputVertex[12], merged.inputVertex[13]);
 }
 
