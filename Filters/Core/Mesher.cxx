@@ -249,6 +249,7 @@ public:
 
 private:
   void meshRounds(Work& w);
+  void nameThePointPassed(Stop& stop, const Work& w) const;
   double originRounding() const;
   double boundBeforeTheOrigin() const;
   Domain chooseDomain(const Work& w, Array<int>& hull);
@@ -459,6 +460,7 @@ Result Mesher::execute()
   }
   catch (Stop& stop)
   {
+    nameThePointPassed(stop, w);
     // Name the segments at fault as the user numbers them.
     std::string names;
     for (int s : stop.segments)
@@ -490,11 +492,39 @@ Result Mesher::execute()
       stop.reason += "; if segments there are meant to meet at one point, a " + tolerance +
         " joins their crossings and bends segments onto the points near them" +
         toleranceToTry(boundsOf(input.points), options.mergeTolerance);
+    else if (stop.remedy == Stop::Remedy::BendOntoPoint)
+      stop.reason += "; if the point is meant to lie on the segment, a " + tolerance +
+        " bends the segment onto it" +
+        toleranceToTry(boundsOf(input.points), options.mergeTolerance);
     throw;
   }
   st.secondsTotal = since(t0);
   res.ok = true;
   return std::move(res);
+}
+
+/// A stop at a point of the round that a segment passes within rounding of
+/// (Stop::atPoint): where it is an input point, not a crossing split in an
+/// earlier round (segments are what come too close there), says so, naming
+/// the point as the user numbers it.
+void Mesher::nameThePointPassed(Stop& stop, const Work& w) const
+{
+  if (!stop.atPoint || stop.segments[0] < 0)
+    return;
+  const std::size_t at = static_cast<std::size_t>(
+    std::find(w.points.begin(), w.points.end(), stop.at) - w.points.begin());
+  if (at == w.points.size() || w.isCrossingPoint[at])
+    return;
+  const int user = firstInputPoint(clean.pointOf, static_cast<int>(at));
+  if (user == static_cast<int>(clean.pointOf.size()))
+    return;
+  stop.reason = segmentName(w, stop.segments[0]) + " passes input point " + std::to_string(user) +
+    " at " + formatPoint(frame.toUser(stop.at), options.pointFormat) +
+    " closer than double precision can separate: within rounding of it, neither through it nor "
+    "clear of it";
+  stop.segments = { -1, -1 };
+  stop.located = false;
+  stop.remedy = Stop::Remedy::BendOntoPoint;
 }
 
 /// The sum of value[c] over the largest of boxes (by area) and the boxes not

@@ -35,13 +35,17 @@ struct Stop
     MergePoints,
     /// Segments too close (crossings rounded apart, segments at tiny
     /// angles): it joins crossings and bends segments onto points.
-    JoinSegments
+    JoinSegments,
+    /// A segment within rounding of an input point: it bends it onto it.
+    BendOntoPoint
   };
   Remedy remedy = Remedy::None;
   /// The mesh outgrew a cap (Steiner points, this machine's memory).
   bool outgrown = false;
   /// Said after the segments and the point.
   std::string tail;
+  /// at is a point of the round, which the segment passes within rounding.
+  bool atPoint = false;
 };
 
 class RunContext

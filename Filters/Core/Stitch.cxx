@@ -690,6 +690,23 @@ bool tooClose(const Point& p, const Point& q, double edgeLength)
   return dist2(p, q) <= tolerance * tolerance;
 }
 
+/// A crossing p of segment on an overlay edge, within rounding of a crossing
+/// of other, or of the edge's end v (-1: none). Where v is an input point of
+/// the round, the stop is there: the segment passes it too near to say on
+/// which side (a review: one segment and a point 8.6 epsilons off it were
+/// said to be segments too close to each other).
+Stop crossingTooClose(const PlanarGraph& g, const Point& p, int segment, int v, int other)
+{
+  Stop stop{ "input segments come closer to each other than double precision can separate", true, p,
+    { segment, other }, Stop::Remedy::JoinSegments };
+  if (v >= 0 && g.origin[v] == VertexOrigin::Input)
+  {
+    stop.at = g.points[v];
+    stop.atPoint = true;
+  }
+  return stop;
+}
+
 /// Per overlay half-edge (both halves of an edge alike): crossed by a
 /// segment, kept, and along an input segment.
 enum HalfEdgeFlag : std::uint8_t
@@ -876,13 +893,9 @@ PlanarGraph stitch(OverlayEdges ov, Array<Point> points, const Array<char>& isIn
         // Crossings within rounding of each other (or of the edge's ends) cannot
         // be told apart: the segments meet at an angle below double precision.
         if (tooClose(c.p, g.points[prev], edgeLength))
-          throw Stop{ "input segments come closer to each other than double precision can "
-                      "separate",
-            true, c.p, { segment, prevSegment }, Stop::Remedy::JoinSegments };
+          throw crossingTooClose(g, c.p, segment, prevSegment < 0 ? prev : -1, prevSegment);
         if (tooClose(c.p, g.points[ends[1]], edgeLength))
-          throw Stop{ "input segments come closer to each other than double precision can "
-                      "separate",
-            true, c.p, { segment, -1 }, Stop::Remedy::JoinSegments };
+          throw crossingTooClose(g, c.p, segment, ends[1], -1);
         prevSegment = segment;
         const int v = static_cast<int>(g.points.size());
         g.points.push_back(c.p);

@@ -987,6 +987,35 @@ TEST(Clean, TinySegmentsAmongCrossingsOfLongOnesMeshInTheHullAndAreRefusedInTheB
   EXPECT_EQ(merged.inputVertex[12], merged.inputVertex[13]);
 }
 
+TEST(Clean, ASegmentWithinRoundingOfAPointIsRefusedNamingThePoint)
+{
+  // Found by a review: one segment, and points 7.7 and 8.6 epsilons off it
+  // (collinear within rounding: the padded box is meshed). The first is taken
+  // onto the segment; the segment's crossing next to the second could not be
+  // told from it, which was said as "input segments come closer to each other
+  // than double precision can separate", with one segment.
+  Pslg p;
+  p.points = { { -0.89090500332764433, -0.88225748547901461 },
+    { 0.76170566734104717, 0.84466872196855669 }, { 0.18206199640265527, 0.23895930468663371 },
+    { -0.47039068423231589, -0.44283323925963214 } };
+  p.segments = { { 0, 1 } };
+  const Result r = mesh(p);
+  ASSERT_FALSE(r.ok);
+  EXPECT_NE(r.error.find("input segment 0 passes input point 3 at (-0.4703906842323159, "
+                         "-0.44283323925963214) closer than double precision can separate"),
+    std::string::npos)
+    << r.error;
+  EXPECT_NE(r.error.find("if the point is meant to lie on the segment, a merge tolerance"),
+    std::string::npos)
+    << r.error;
+  EXPECT_EQ(r.error.find("each other"), std::string::npos) << r.error;
+  // The tolerance it suggests bends the segment onto both points.
+  Options merged;
+  merged.mergeTolerance = 1.7e-9;
+  const Result m = meshAndValidate(p, "merged", merged);
+  EXPECT_TRUE(m.ok) << m.error;
+}
+
 TEST(Clean, APointTooNearALongSegmentIsRefusedAsBelowPrecision)
 {
   // Found by a review (rays from one point at tiny angles, 19 of 2,000): a
