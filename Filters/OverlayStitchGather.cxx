@@ -44,6 +44,7 @@ namespace
 {
 
 const char* const HolePointsName = "HolePoints";
+const char* const RegionAttributesName = "RegionAttributes";
 
 /// Exact coordinates of a point; -0.0 and +0.0 are the same point.
 using PointKey = std::array<double, 3>;
@@ -329,6 +330,37 @@ bool CollectHolePoints(vtkFieldData* field, std::vector<HoleSeed>& seeds, std::s
       components == 2 };
     // NaN seeds are passed on (the mesher reports them); they are never "equal".
     if (!IsFinite(seed.At) || seen.insert(seed).second)
+    {
+      seeds.push_back(seed);
+    }
+  }
+  return true;
+}
+
+/// A region seed of a piece's field data: (x, y, attribute, maximum area),
+/// the area -1 (none) where the array has 3 components.
+using RegionSeed = std::array<double, 4>;
+
+/// Appends the region seeds of `field` (a 4-component, or 3-component,
+/// numeric "RegionAttributes" array) to `seeds`, skipping exact repeats (every
+/// rank may hold the same field data); false if the array has another number
+/// of components, which the serial run ignores with a warning too.
+bool CollectRegionSeeds(
+  vtkFieldData* field, std::vector<RegionSeed>& seeds, std::set<RegionSeed>& seen)
+{
+  vtkDataArray* regions = field ? field->GetArray(RegionAttributesName) : nullptr;
+  const int components = regions ? regions->GetNumberOfComponents() : 4;
+  if (!regions || (components != 3 && components != 4))
+  {
+    return !regions;
+  }
+  for (vtkIdType t = 0; t < regions->GetNumberOfTuples(); ++t)
+  {
+    RegionSeed seed{ 0.0, 0.0, 0.0, -1.0 };
+    regions->GetTuple(t, seed.data());
+    const bool finite =
+      std::all_of(seed.begin(), seed.end(), [](double v) { return std::isfinite(v); });
+    if (!finite || seen.insert(seed).second)
     {
       seeds.push_back(seed);
     }
@@ -793,6 +825,8 @@ public:
     , Invalid{ pieceName }
   {
     this->Holes->SetName(HolePointsName);
+    this->Regions->SetName(RegionAttributesName);
+    this->Regions->SetNumberOfComponents(4);
   }
 
   vtkSmartPointer<vtkPolyData> Combine(OverlayStitchGatherSummary* summary)
@@ -812,6 +846,7 @@ public:
       summary->SharedCellsDropped = this->SharedCells;
       summary->HolePoints = static_cast<vtkIdType>(this->Seeds.size());
       summary->FloatPoints = this->AnyFloat;
+      summary->CountsFromOne = this->CountsFromOne;
       summary->MalformedPieces = static_cast<vtkIdType>(this->Refused.size());
       summary->FirstMalformedPiece = this->FirstRefused;
       summary->InvalidCells = this->Invalid.Count;
@@ -826,6 +861,7 @@ private:
   void MergeCells();
   void MergeFieldData();
   void NoteRefused(vtkFieldData* field, std::size_t p);
+  void CollectRegions(vtkFieldData* field, std::size_t p);
   void SetHoleSeeds();
 
   const std::vector<vtkSmartPointer<vtkDataObject>>& Pieces;
@@ -843,10 +879,13 @@ private:
   vtkIdType SharedCells = 0;
   bool AnyFloat = false;
   bool AllFloat = false;
+  bool CountsFromOne = false;
   std::vector<HoleSeed> Seeds;
   std::set<HoleSeed> SeenSeeds;
   bool AnyHoles = false;
   vtkNew<vtkDoubleArray> Holes;
+  std::set<RegionSeed> SeenRegions;
+  vtkNew<vtkDoubleArray> Regions;
   vtkIdType IgnoredCells = 0;
   // The refused pieces' block ids (-1 where not a block's), and how messages
   // name the first.
@@ -1068,11 +1107,12 @@ void PieceCombination::MergeCells()
   }
 }
 
-/// Field data: the first array of each name, except the hole seeds, which are
-/// gathered from every piece (empty pieces included) and deduplicated. The
-/// seeds' array takes its place among the others when first seen, and its
-/// values at the end: the order of a serial run's input. The marks (ignored
-/// cells, float points, refused pieces) are summed up.
+/// Field data: the first array of each name, except the hole and region
+/// seeds, which are gathered from every piece (empty pieces included) and
+/// deduplicated (a review: a second block's region seeds were dropped). The
+/// seeds' arrays take their places among the others when first seen, and
+/// their values at the end: the order of a serial run's input. The marks
+/// (ignored cells, float points, refused pieces) are summed up.
 void PieceCombination::MergeFieldData()
 {
   vtkFieldData* outField = this->Combined->GetFieldData();
@@ -1086,6 +1126,7 @@ void PieceCombination::MergeFieldData()
     }
     this->IgnoredCells += OverlayStitchIgnoredCells(piece);
     this->AnyFloat = this->AnyFloat || field->GetArray(OverlayStitchFloatPointsName);
+    this->CountsFromOne = this->CountsFromOne || OverlayStitchCountsFromOne(field);
     this->NoteRefused(field, p);
     if (vtkAbstractArray* array = field->GetAbstractArray(HolePointsName))
     {
@@ -1100,13 +1141,16 @@ void PieceCombination::MergeFieldData()
             " components (2 or 3 expected: x, y and perhaps z): ignored." });
       }
     }
+    this->CollectRegions(field, p);
     for (int a = 0; a < field->GetNumberOfArrays(); ++a)
     {
       vtkAbstractArray* array = field->GetAbstractArray(a);
       const char* name = array ? array->GetName() : nullptr;
       if (name && !outField->GetAbstractArray(name) && !OverlayStitchIsInternalName(name))
       {
-        outField->AddArray(std::strcmp(name, HolePointsName) == 0 ? this->Holes.Get() : array);
+        outField->AddArray(std::strcmp(name, HolePointsName) == 0 ? this->Holes.Get()
+            : std::strcmp(name, RegionAttributesName) == 0        ? this->Regions.Get()
+                                                                  : array);
       }
     }
   }
@@ -1130,6 +1174,32 @@ void PieceCombination::MergeFieldData()
   if (this->AnyHoles)
   {
     this->SetHoleSeeds();
+  }
+}
+
+/// The region seeds of piece p's field data appended to Regions; an array of
+/// another shape is noted and left out, as a serial run warns and ignores it.
+void PieceCombination::CollectRegions(vtkFieldData* field, std::size_t p)
+{
+  vtkAbstractArray* array = field->GetAbstractArray(RegionAttributesName);
+  if (!array)
+  {
+    return;
+  }
+  std::vector<RegionSeed> seeds;
+  if (!CollectRegionSeeds(field, seeds, this->SeenRegions))
+  {
+    auto* polyData = vtkPolyData::SafeDownCast(this->Pieces[p]);
+    this->Notes.push_back({ { "field", RegionAttributesName },
+      "The field data array RegionAttributes of " +
+        (polyData ? PieceLabel(polyData, this->PieceName, p) : PieceLabel(this->PieceName, p)) +
+        " has " + std::to_string(array->GetNumberOfComponents()) +
+        " components (4 expected: x, y, attribute, maximum area): ignored." });
+    return;
+  }
+  for (const RegionSeed& seed : seeds)
+  {
+    this->Regions->InsertNextTypedTuple(seed.data());
   }
 }
 
@@ -1189,6 +1259,13 @@ void PieceCombination::SetHoleSeeds()
   }
 }
 } // namespace
+
+//------------------------------------------------------------------------------
+bool OverlayStitchCountsFromOne(vtkFieldData* field)
+{
+  vtkDataArray* first = field ? field->GetArray("FileFirstIndex") : nullptr;
+  return first && first->GetNumberOfTuples() == 1 && first->GetComponent(0, 0) == 1.0;
+}
 
 //------------------------------------------------------------------------------
 vtkSmartPointer<vtkPolyData> OverlayStitchCombinePieces(
@@ -1337,6 +1414,7 @@ vtkSmartPointer<vtkPolyData> OverlayStitchCombineBlocks(vtkCompositeDataSet* inp
     if (summary)
     {
       summary->NotCarried = notes;
+      summary->CountsFromOne = only && OverlayStitchCountsFromOne(only->GetFieldData());
     }
     return only;
   }

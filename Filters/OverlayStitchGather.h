@@ -43,6 +43,7 @@ class vtkCompositeDataSet;
 class vtkDataArray;
 class vtkDataObject;
 class vtkDataSetAttributes;
+class vtkFieldData;
 class vtkIdTypeArray;
 class vtkMultiProcessController;
 class vtkPolyData;
@@ -83,6 +84,10 @@ struct OverlayStitchGatherSummary
   /// Some piece has float points (rounded to 2^-24 of themselves): the
   /// combination's are float only where every piece's are.
   bool FloatPoints = false;
+  /// Some piece was read from a .poly or .node file that counts from 1 (its
+  /// field data FileFirstIndex): messages that number a block's cells from 0
+  /// say so.
+  bool CountsFromOne = false;
   /// Cells naming a point their own piece does not have: after combining, such
   /// an id is -1 and says nothing, so the first is described here ("cell 3 of
   /// rank 1 refers to point 57, ..."), for the caller to report.
@@ -99,6 +104,10 @@ struct OverlayStitchGatherSummary
   /// its points or cells; a ghost array VTK cannot use), one sentence each.
   std::vector<OverlayStitchNote> NotCarried;
 };
+
+/// Whether field data says its points and cells were read from a .poly or
+/// .node file that counts from 1 (the reader's FileFirstIndex).
+bool OverlayStitchCountsFromOne(vtkFieldData* field);
 
 /// Collective over `controller`: every rank must call it once, in the same
 /// order relative to the controller's other collective calls, whatever its

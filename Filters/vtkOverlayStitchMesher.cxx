@@ -285,8 +285,7 @@ bool NamesNumberedItems(const std::string& message)
 /// field data FileFirstIndex), those naming one say so.
 std::string NumberingNote(vtkPolyData* input)
 {
-  vtkDataArray* first = input->GetFieldData()->GetArray("FileFirstIndex");
-  return first && first->GetNumberOfTuples() == 1 && first->GetComponent(0, 0) == 1.0
+  return OverlayStitchCountsFromOne(input->GetFieldData())
     ? " (numbers of points, segments, cells, holes and regions in this message count from 0; "
       "the input counts from 1)"
     : "";
@@ -1319,9 +1318,12 @@ std::optional<int> vtkOverlayStitchMesher::MeshRun::ReadPslg()
   const bool combined = this->Composite || this->Gather.Ranks > 1;
   this->Numbering = !combined ? NumberingNote(input)
     : this->Composite
-    ? " (numbers of points, segments and cells in this message count through the combined "
-      "input: every polydata or unstructured grid block, or every rank's piece, in turn; blocks "
-      "are named by their flat index, as InputBlockId does)"
+    ? std::string(" (numbers of points, segments and cells in this message count through the "
+                  "combined input: every polydata or unstructured grid block, or every rank's "
+                  "piece, in turn; blocks are named by their flat index, as InputBlockId does") +
+      (this->Combination.CountsFromOne
+          ? "; a block's cells count from 0, also where its file counts from 1)"
+          : ")")
     : " (numbers of points, segments and cells in this message count through the combined "
       "input: every rank's piece in turn)";
   if (!inputError.empty())

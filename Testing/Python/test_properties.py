@@ -337,6 +337,73 @@ def area_xy(poly):
     return sum(triangle_areas_xy(poly))
 
 
+def test_seeds_of_every_block(data_dir, scratch):
+    """A composite input's blocks each bring their hole and region seeds (a
+    review: only the first block's region seeds were used, the second block's
+    region had neither its attribute nor its area bound); messages note that a
+    block's cells count from 0 where its file counts from 1."""
+    with open(os.path.join(data_dir, "square_hole.poly")) as f:
+        text = f.read()
+    lines = text.split("\n")
+    # The same square 20 to the right: its points, hole and region seed moved,
+    # its region given attribute 9 and maximum area 2.
+    moved = []
+    for line in lines:
+        fields = line.split()
+        if len(fields) == 5 and fields[0] != "9" and not line.startswith("#"):
+            fields[1] = str(float(fields[1]) + 20)
+            if line == "1 1 1 7 0.5":
+                fields[3], fields[4] = "9", "2"
+            line = " ".join(fields)
+        elif len(fields) == 3 and line == "1 5 5":
+            line = "1 25 5"
+        moved.append(line)
+    right = os.path.join(scratch, "square_hole_right.poly")
+    with open(right, "w") as f:
+        f.write("\n".join(moved))
+    left_reader = TrianglePolyReader(FileName=os.path.join(data_dir, "square_hole.poly"))
+    right_reader = TrianglePolyReader(FileName=right)
+    group = GroupDatasets(Input=[left_reader, right_reader])
+    mesher = OverlayStitchMesher(Input=group, ApplyRegionAreas=1)
+    mesh = mesh_of(mesher)
+    attribute = mesh.GetCellData().GetArray("RegionAttribute")
+    seen = {"left": set(), "right": set()}
+    largest = {"left": 0.0, "right": 0.0}
+    for c, size in enumerate(triangle_areas(mesh)):
+        side = "left" if mesh.GetCell(c).GetPoints().GetPoint(0)[0] < 15 else "right"
+        seen[side].add(attribute.GetValue(c))
+        largest[side] = max(largest[side], size)
+    check(seen == {"left": {7.0}, "right": {9.0}},
+          "Group Datasets: each block's region seed gives its region its attribute (%s)" % seen)
+    # Unbounded, the right square's triangles reach about 9.
+    check(largest["left"] <= 0.5 and 0.5 < largest["right"] <= 2.0,
+          "Group Datasets: each block's region seed bounds its region's area (largest %.3g left, "
+          "%.3g right)" % (largest["left"], largest["right"]))
+    check(abs(area3d(mesh) - 192.0) < 1e-6,
+          "Group Datasets: both blocks' holes are cut (area %.9g, expected 192)" % area3d(mesh))
+    Delete(mesher)
+    # A crossing refused names cells of the block, which count from 0 though the
+    # file counts from 1.
+    one_based = os.path.join(scratch, "crossing_from_one.poly")
+    with open(one_based, "w") as f:
+        f.write("# crossing.poly numbered from 1\n6 2 0 0\n1 0 0\n2 4 0\n3 4 4\n4 0 4\n"
+                "5 1 1\n6 3 3.5\n6 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n5 5 6\n6 2 4\n0\n")
+    reader = TrianglePolyReader(FileName=one_based)
+    one_block = GroupDatasets(Input=[reader])
+    mesher = OverlayStitchMesher(Input=one_block, ResolveIntersections=0)
+    errors = []
+    mesh_of(mesher, errors)
+    text = "".join(errors)
+    check("cross near" in text and "also where its file counts from 1" in text,
+          "Group Datasets of a file counting from 1: the error says the block's cells count from 0")
+    Delete(mesher)
+    Delete(one_block)
+    Delete(reader)
+    Delete(group)
+    Delete(right_reader)
+    Delete(left_reader)
+
+
 def test_hole_points_property(data_dir):
     """HolePoints: (x, y) pairs cut holes, one AddHolePoint per pair (the panel's two columns)."""
     path = os.path.join(data_dir, "square_hole.poly")
@@ -376,6 +443,7 @@ def main(plugin, data_dir, scratch):
     test_poly_with_hole(data_dir)
     test_hole_points_property(data_dir)
     test_seeds_follow_transform(data_dir, scratch)
+    test_seeds_of_every_block(data_dir, scratch)
     print("%d failure(s)" % len(failures))
     return 1 if failures else 0
 
