@@ -1016,6 +1016,28 @@ TEST(Clean, ASegmentWithinRoundingOfAPointIsRefusedNamingThePoint)
   EXPECT_TRUE(m.ok) << m.error;
 }
 
+TEST(Clean, ASegmentWithinRoundingOfAHullEdgeIsRefusedNamingTheBoxDomain)
+{
+  // Found by a review: one segment and three points 12 to 27 epsilons off it.
+  // The auto domain meshes their thin hull, whose edges from those points
+  // run within rounding of the segment; the merge tolerance suggested did
+  // not help there (13 of 29 such inputs), and the box domain meshes them.
+  Pslg p;
+  p.points = { { 366916.48082017922, 733484.57873601362 },
+    { 20528.649068668692, -525677.1818735362 }, { 286033.0388663098, 439463.46182835806 },
+    { 289212.70557786769, 451021.93579218158 }, { 219719.3883441629, 198405.30305388258 } };
+  p.segments = { { 0, 1 } };
+  const Result r = mesh(p);
+  ASSERT_FALSE(r.ok);
+  EXPECT_NE(r.error.find("an edge of the convex hull"), std::string::npos) << r.error;
+  EXPECT_NE(r.error.find("the box domain (osm-mesh --domain box, the filter's Domain) none"),
+    std::string::npos)
+    << r.error;
+  Options box;
+  box.domain = Domain::Box;
+  meshAndValidate(p, "box", box);
+}
+
 TEST(Clean, APointTooNearALongSegmentIsRefusedAsBelowPrecision)
 {
   // Found by a review (rays from one point at tiny angles, 19 of 2,000): a
