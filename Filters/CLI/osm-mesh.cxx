@@ -522,7 +522,13 @@ bool ParseArguments(int argc, char* argv[], Arguments& args)
     }
     else if (arg == "-o" || arg == "--output")
     {
+      // One mesh per run: a second -o wrote only the last file (a review).
+      const std::string earlier = args.output;
       args.output = needValue();
+      if (!earlier.empty())
+      {
+        Fail("more than one output file: '" + earlier + "' and '" + args.output + "'", 2);
+      }
       if (args.output.empty())
       {
         Fail(arg + ": empty file name", 2);

@@ -28,6 +28,10 @@ namespace
 {
 
 namespace fs = std::filesystem;
+
+/// Attribute values a file may declare without writing them (read as 0):
+/// 8 MB of them, however short the file.
+constexpr long long kUnwrittenAttributeValues = 1 << 20;
 using Tokens = std::vector<std::string_view>;
 
 // '\r' counts as blank so that CRLF files read like LF files.
@@ -376,7 +380,12 @@ private:
     if (h.attributes < 0)
       return fail("negative number of vertex attributes: " + std::to_string(h.attributes));
     // A written attribute takes at least two bytes (a digit and a separator).
-    if (h.count > 0 && h.attributes > static_cast<long long>(lines_.bytesLeft() / 2) / h.count)
+    // Lines may leave attributes out (read as 0, as Triangle does): more than
+    // the file holds are refused only where their zeros would be many (a
+    // review: 3 vertices with 5 attributes left out were refused, or read when
+    // a long comment followed).
+    if (h.count > 0 && h.attributes > static_cast<long long>(lines_.bytesLeft() / 2) / h.count &&
+      h.attributes > kUnwrittenAttributeValues / h.count)
       return fail(std::to_string(h.count) + " vertices with " + std::to_string(h.attributes) +
         " attributes each cannot fit in the rest of the file");
     h.markers = markers != 0; // any nonzero value means markers, as in triangle.c

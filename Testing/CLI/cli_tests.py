@@ -942,6 +942,7 @@ def group_errors():
     bad = [
         ([], ["no input file"]),
         ([square, square], ["more than one input"]),
+        ([square, "-o", "a.vtp", "--output", "b.vtp"], ["more than one output file: 'a.vtp' and 'b.vtp'"]),
         ([square, "--frobnicate"], ["unknown option '--frobnicate'"]),
         ([square, "--min-angle"], ["--min-angle needs a value"]),
         # Found by a user review: this wrote an SVG file named --stats.

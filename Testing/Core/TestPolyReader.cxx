@@ -176,6 +176,24 @@ TEST(PolyReader, AttributesAndMarkers)
   EXPECT_EQ(f.segmentMarkers, (std::vector<int>{ 5, -6, 0 }));
 }
 
+TEST(PolyReader, DeclaredAttributesLeftOutReadAsZeroWhateverTheFileLength)
+{
+  // A review: 3 vertices declaring 5 attributes and writing none were refused
+  // as "cannot fit in the rest of the file", and read once a long comment
+  // followed. Triangle reads them as 0; so does the reader, up to 2^20 values.
+  const std::string text = "3 2 5 0\n1 0 0\n2 1 0\n3 0 1\n0 0\n0\n";
+  for (const std::string& tail : { std::string(), "#" + std::string(100, 'x') + "\n" })
+  {
+    const PolyFile f = poly(text + tail);
+    ASSERT_TRUE(f.ok) << f.error;
+    ASSERT_EQ(f.pointAttributes.size(), 3u);
+    EXPECT_EQ(f.pointAttributes[2], (std::vector<double>(5, 0.0)));
+  }
+  // Beyond 2^20 values the file must hold them.
+  EXPECT_TRUE(failsAt(poly("3 2 400000 0\n1 0 0\n2 1 0\n3 0 1\n"), "t.poly:1",
+    "3 vertices with 400000 attributes each cannot fit in the rest of the file"));
+}
+
 TEST(PolyReader, ZeroMarkerFlagsIgnoreExtraColumns)
 {
   const PolyFile f = poly("3 2 0 0\n1 0 0 8\n2 1 0 8\n3 0 1 8\n1 0\n1 1 2 9\n0\n");
