@@ -463,7 +463,10 @@ bool ListsNoVertices(const std::string& path)
   return false;
 }
 
-bool ParseArguments(int argc, char* argv[], Arguments& args)
+/// Reads the command line into args; false after --help or --version. Past
+/// the options, the files are checked, and a check failing with --stats
+/// prints its JSON too (window->Stats).
+bool ParseArguments(int argc, char* argv[], Arguments& args, OsmOutputWindow* window)
 {
   bool inputGiven = false;
   double gamma = 0.0;
@@ -649,6 +652,9 @@ bool ParseArguments(int argc, char* argv[], Arguments& args)
   {
     Fail("no input file (see --help)", 2);
   }
+  // A script reading --stats gets its JSON for an output it cannot write
+  // too (a review: a missing output folder printed none).
+  window->Stats = args.stats;
   if (args.minAngleGiven && args.gammaGiven)
   {
     Fail("--min-angle and --gamma set the same thing: give only one", 2);
@@ -1226,11 +1232,10 @@ void PrintFailure(const std::string& error, const std::vector<std::string>& warn
 int Run(int argc, char* argv[], OsmOutputWindow* window)
 {
   Arguments args;
-  if (!ParseArguments(argc, argv, args))
+  if (!ParseArguments(argc, argv, args, window))
   {
     return 0;
   }
-  window->Stats = args.stats;
 
   vtkSmartPointer<vtkAlgorithm> reader = MakeReader(args.input);
   reader->Update();

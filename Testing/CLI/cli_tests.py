@@ -1037,6 +1037,16 @@ def group_errors():
           any("duplicate point" in w for w in failed.get("Warnings", [])),
           "--stats on a failure keeps the mesher's warnings from before it stopped",
           p.stdout[-300:])
+    # ... and where the output cannot be written (a CLI review: none was printed).
+    p = run(poly, "-o", out(os.path.join("no-such-folder", "x.vtp")), "--stats")
+    try:
+        failed = json.loads(p.stdout)
+    except ValueError:
+        failed = {}
+    check(p.returncode == 1 and failed.get("ok") is False and
+          "cannot write" in failed.get("Error", ""),
+          "--stats with an output folder that does not exist prints ok false and the error",
+          p.stdout[-300:])
 
 
 def group_determinism():
