@@ -862,6 +862,12 @@ private:
   void MergeFieldData();
   void NoteRefused(vtkFieldData* field, std::size_t p);
   void CollectRegions(vtkFieldData* field, std::size_t p);
+  /// How notes name piece p: by its block id where its cells carry one.
+  std::string Label(std::size_t p) const
+  {
+    auto* polyData = vtkPolyData::SafeDownCast(this->Pieces[p]);
+    return polyData ? PieceLabel(polyData, this->PieceName, p) : PieceLabel(this->PieceName, p);
+  }
   void SetHoleSeeds();
 
   const std::vector<vtkSmartPointer<vtkDataObject>>& Pieces;
@@ -1133,11 +1139,9 @@ void PieceCombination::MergeFieldData()
       this->AnyHoles = true;
       if (!CollectHolePoints(field, this->Seeds, this->SeenSeeds))
       {
-        auto* polyData = vtkPolyData::SafeDownCast(piece);
         this->Notes.push_back({ { "field", HolePointsName },
-          "The field data array HolePoints of " +
-            (polyData ? PieceLabel(polyData, this->PieceName, p) : PieceLabel(this->PieceName, p)) +
-            " has " + std::to_string(array->GetNumberOfComponents()) +
+          "The field data array HolePoints of " + this->Label(p) + " has " +
+            std::to_string(array->GetNumberOfComponents()) +
             " components (2 or 3 expected: x, y and perhaps z): ignored." });
       }
     }
@@ -1189,11 +1193,9 @@ void PieceCombination::CollectRegions(vtkFieldData* field, std::size_t p)
   std::vector<RegionSeed> seeds;
   if (!CollectRegionSeeds(field, seeds, this->SeenRegions))
   {
-    auto* polyData = vtkPolyData::SafeDownCast(this->Pieces[p]);
     this->Notes.push_back({ { "field", RegionAttributesName },
-      "The field data array RegionAttributes of " +
-        (polyData ? PieceLabel(polyData, this->PieceName, p) : PieceLabel(this->PieceName, p)) +
-        " has " + std::to_string(array->GetNumberOfComponents()) +
+      "The field data array RegionAttributes of " + this->Label(p) + " has " +
+        std::to_string(array->GetNumberOfComponents()) +
         " components (4 expected: x, y, attribute, maximum area): ignored." });
     return;
   }

@@ -382,6 +382,46 @@ def test_seeds_of_every_block(data_dir, scratch):
     check(abs(area3d(mesh) - 192.0) < 1e-6,
           "Group Datasets: both blocks' holes are cut (area %.9g, expected 192)" % area3d(mesh))
     Delete(mesher)
+    # A block whose RegionAttributes has another shape: left out, with a
+    # warning that names it; the other block's seed still applies.
+    from vtkmodules.vtkCommonCore import vtkDoubleArray
+    odd = vtkPolyData()
+    odd_points = vtkPoints()
+    odd_points.SetDataTypeToDouble()
+    for p in [(20, 0, 0), (30, 0, 0), (30, 10, 0), (20, 10, 0)]:
+        odd_points.InsertNextPoint(p)
+    odd_lines = vtkCellArray()
+    for a in range(4):
+        odd_lines.InsertNextCell(2)
+        odd_lines.InsertCellPoint(a)
+        odd_lines.InsertCellPoint((a + 1) % 4)
+    odd.SetPoints(odd_points)
+    odd.SetLines(odd_lines)
+    seeds = vtkDoubleArray()
+    seeds.SetName("RegionAttributes")
+    seeds.SetNumberOfComponents(2)
+    seeds.InsertNextTuple2(21, 1)
+    odd.GetFieldData().AddArray(seeds)
+    odd_path = os.path.join(scratch, "square_odd_regions.vtp")
+    writer = vtkXMLPolyDataWriter()
+    writer.SetFileName(odd_path)
+    writer.SetInputData(odd)
+    check(writer.Write() == 1, "wrote " + os.path.basename(odd_path))
+    odd_reader = XMLPolyDataReader(FileName=[odd_path])
+    odd_group = GroupDatasets(Input=[left_reader, odd_reader])
+    mesher = OverlayStitchMesher(Input=odd_group)
+    errors = []
+    mesh = mesh_of(mesher, errors)
+    attribute = mesh.GetCellData().GetArray("RegionAttribute")
+    left = {attribute.GetValue(c) for c in range(mesh.GetNumberOfCells())
+            if mesh.GetCell(c).GetPoints().GetPoint(0)[0] < 15}
+    check(any("RegionAttributes of block" in e and "has 2 components" in e and "ignored" in e
+              for e in errors) and left == {7.0},
+          "Group Datasets: a block's RegionAttributes of 2 components is left out with a warning "
+          "(left square's attributes %s)" % left)
+    Delete(mesher)
+    Delete(odd_group)
+    Delete(odd_reader)
     # A crossing refused names cells of the block, which count from 0 though the
     # file counts from 1.
     one_based = os.path.join(scratch, "crossing_from_one.poly")
