@@ -376,11 +376,13 @@ std::string ExplainPoints(const std::string& text, vtkPolyData* input)
 /// The core names segments by their index in the PSLG ("input segment 7"):
 /// append which cell and points each named segment is. In a combined input
 /// (the blocks of a composite, the pieces of a parallel run) cell and point
-/// ids count through the combination, not through any block the user sees:
-/// there the segment's ends are given by their coordinates instead, after
-/// its cell's block and id in it where the input is a composite.
+/// ids count through the combination, not through any block the user sees,
+/// and in a .poly's polydata cell ids are no numbers of the file's (lone
+/// vertices come first): there the segment's ends are given by their
+/// coordinates instead, after its cell's block and id in it where the input
+/// is a composite.
 std::string ExplainSegments(const std::string& text, const osm::Array<SegmentSource>& sources,
-  vtkPolyData* input, bool combined)
+  vtkPolyData* input, bool byCoordinates)
 {
   const std::vector<std::size_t> named = NamedNumbers(text, "segment ", sources.size());
   if (named.empty())
@@ -393,7 +395,7 @@ std::string ExplainSegments(const std::string& text, const osm::Array<SegmentSou
   {
     const SegmentSource& source = sources[named[k]];
     out << (k ? "; " : "") << "segment " << named[k];
-    if (combined)
+    if (byCoordinates)
     {
       double a[3], b[3];
       input->GetPoint(source.A, a);
@@ -1500,8 +1502,10 @@ std::optional<int> vtkOverlayStitchMesher::MeshRun::MeshPslg(bool interpolate)
   // Which cells the named segments are, and which seeds the named holes.
   const std::size_t propertySeeds = self->HolePoints.size() / 2;
   auto explain = [&](const std::string& text) {
+    const bool byCoordinates = this->Composite || this->Gather.Ranks > 1 ||
+      OverlayStitchCountsFromOne(this->Input->GetFieldData());
     return ExplainHoles(ExplainSegments(ExplainPoints(text, this->Input), this->SegmentSources,
-                          this->Input, this->Composite || this->Gather.Ranks > 1),
+                          this->Input, byCoordinates),
       propertySeeds, this->Pslg.holes.size());
   };
   for (const std::string& warning : this->Result.warnings)

@@ -768,9 +768,14 @@ def group_errors():
     # The same in a 1-based file: the message says how it numbers.
     one_based = write("crossing1.poly", "6 2 0 0\n1 0 0\n2 4 0\n3 4 4\n4 0 4\n5 1 1\n6 3 3.5\n"
                       "6 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n5 5 6\n6 2 4\n0\n")
-    expect_error([one_based, "--no-resolve"], 1,
-                 ["input segment 4", "input segment 5", "count from 0",
-                  one_based + " counts from 1"], "crossing segments in a 1-based file")
+    p = expect_error([one_based, "--no-resolve"], 1,
+                     ["input segment 4", "input segment 5", "count from 0",
+                      one_based + " counts from 1", "segment 4 runs from (1, 1, 0) to (3, 3.5, 0)"],
+                     "crossing segments in a 1-based file")
+    # A .poly's polydata holds its lone vertices' cells first: cell ids are no
+    # numbers of the file's, so segments are placed by their ends' coordinates.
+    check("is cell" not in p.stderr,
+          "a 1-based file's segments are not named by VTK cell ids", repr(p.stderr))
     # Warnings that name points or segments say it too, and only those.
     for base in (0, 1):
         dup = write("duplicate%d.poly" % base,
