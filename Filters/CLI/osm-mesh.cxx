@@ -11,6 +11,7 @@
 #include "vtkCellType.h"
 #include "vtkDataArray.h"
 #include "vtkDataObject.h"
+#include "vtkDataReader.h"
 #include "vtkErrorCode.h"
 #include "vtkFieldData.h"
 #include "vtkIdTypeArray.h"
@@ -43,6 +44,7 @@
 #include <cerrno>
 #include <cfloat>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -116,8 +118,9 @@ INPUT                  Triangle .poly (holes honoured) or .node file, or
                        counts them for the last round, its padding box's 4
                        corners included; 0: no cap)
   --project-xy         mesh the projection onto the XY plane of input points
-                       that are not coplanar (default: an error), at their
-                       mean z
+                       not in a plane z = constant, at their mean z, their z
+                       kept as point data InputZ (default: points in a
+                       tilted plane are meshed in it, others are an error)
   --region-areas       apply the maximum areas of a .poly's region lines to
                        their regions, as Triangle's -a (default: ignored,
                        with a warning)
@@ -756,6 +759,20 @@ bool ParseArguments(int argc, char* argv[], Arguments& args, OsmOutputWindow* wi
   return true;
 }
 
+/// A legacy reader reads only the first SCALARS, VECTORS, ... section of each
+/// kind unless told otherwise; ParaView's reads them all, and so do we, so
+/// that no array is dropped without a word.
+void ReadEveryArray(vtkDataReader* reader)
+{
+  reader->ReadAllScalarsOn();
+  reader->ReadAllVectorsOn();
+  reader->ReadAllNormalsOn();
+  reader->ReadAllTensorsOn();
+  reader->ReadAllColorScalarsOn();
+  reader->ReadAllTCoordsOn();
+  reader->ReadAllFieldsOn();
+}
+
 /// The input reader, chosen by extension; the file must exist.
 vtkSmartPointer<vtkAlgorithm> MakeReader(const std::string& path)
 {
@@ -791,6 +808,7 @@ vtkSmartPointer<vtkAlgorithm> MakeReader(const std::string& path)
   reader->SetFileName(path.c_str());
   if (reader->IsFilePolyData())
   {
+    ReadEveryArray(reader);
     return reader;
   }
   auto grid = vtkSmartPointer<vtkUnstructuredGridReader>::New();
@@ -799,6 +817,7 @@ vtkSmartPointer<vtkAlgorithm> MakeReader(const std::string& path)
   {
     Fail("'" + path + "' is not a legacy VTK polydata or unstructured grid file");
   }
+  ReadEveryArray(grid);
   return grid;
 }
 
@@ -1340,6 +1359,12 @@ int main(int argc, char* argv[])
   // VTK's messages reach the user only through OsmOutputWindow: the logger's
   // own copy on stderr (VTK 9.2 logs errors as well) is turned off.
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+#ifdef SIGXFSZ
+  // Over a file size limit (ulimit -f) the default action of SIGXFSZ kills
+  // the process mid-write, with no message and a partial file left. Ignored,
+  // the write fails with EFBIG and is reported and cleaned up like any other.
+  std::signal(SIGXFSZ, SIG_IGN);
+#endif
   vtkNew<OsmOutputWindow> window;
   vtkOutputWindow::SetInstance(window);
   int status = 0;
