@@ -1549,9 +1549,15 @@ Result meshIn(const Pslg& input, const Options& options, Progress* progress, boo
   }
   catch (const std::bad_alloc&)
   {
+    // Above 30 degrees a runaway refinement is the likelier cause, which no
+    // machine or cap cures.
     Result r;
-    r.error = "out of memory: the input needs a larger machine, or a Steiner point cap" +
-      mesher.grownByCrossings();
+    r.error = options.minAngleDeg > 30.0
+      ? "out of memory: with a minimum angle above 30 degrees the overlay refinement need not "
+        "end; use 30 degrees or less"
+      : "out of memory: the input needs a larger machine, or a Steiner point cap" +
+        mesher.grownByCrossings();
+    r.warnings = mesher.takeWarnings();
     return r;
   }
 }

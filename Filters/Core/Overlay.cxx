@@ -539,7 +539,9 @@ void Refiner::countSteiner()
   ++out.steinerPoints;
   if (steinerCap > 0 && out.steinerPoints + kBoxCorners > steinerCap)
     outgrew("the overlay needs more than the allowed " + std::to_string(steinerCap) +
-      " Steiner points; raise the cap or coarsen the input");
+      (beyondGuarantee ? " Steiner points: with a minimum angle above 30 degrees it need not "
+                         "end, whatever the cap; use 30 degrees or less"
+                       : " Steiner points; raise the cap or coarsen the input"));
   if (out.steinerPoints > checkCapAt)
     checkHardCap();
 }

@@ -664,6 +664,10 @@ TEST(Mesher, InputPointsAHairApartAreWarnedOf)
   // Named the same whichever comes first.
   std::swap(t.points[4], t.points[5]);
   EXPECT_TRUE(mentions(mesh(t).warnings, "e.g. point 4 at (0.5, 0.500000001) and point 5,"));
+  // A point given twice (4 and 6) is named by its first copy.
+  Pslg twice = t;
+  twice.points.insert(twice.points.begin() + 4, t.points[5]);
+  EXPECT_TRUE(mentions(mesh(twice).warnings, "e.g. point 4 at (0.5, 0.5) and point 5,"));
   // The tolerance it asks for merges them: no word.
   Options merged;
   merged.mergeTolerance = 2e-9;
@@ -1881,6 +1885,21 @@ TEST(Mesher, AnglesAbove30DegreesWarnAndFailClearlyWhenRefinementDoesNotEnd)
   EXPECT_NE(
     failed.error.find("with a minimum angle above 30 degrees it need not end"), std::string::npos)
     << failed.error;
+  // A Steiner point cap stops it too, and the error says that raising the cap
+  // cannot help (a review: "raise the cap or coarsen the input"), keeping the
+  // warning.
+  o.maxSteinerPoints = 100000;
+  const Result capped = mesh(points, o);
+  EXPECT_FALSE(capped.ok);
+  EXPECT_TRUE(mentions({ capped.error },
+    "more than the allowed 100000 Steiner points: with a minimum angle above 30 degrees it need "
+    "not end, whatever the cap; use 30 degrees or less"))
+    << capped.error;
+  EXPECT_TRUE(mentions(capped.warnings, "(here 35) has no guarantee"));
+  // Where the refinement does end, the cap's advice stays.
+  o.minAngleDeg = 30;
+  o.maxSteinerPoints = 10;
+  EXPECT_TRUE(mentions({ mesh(points, o).error }, "Steiner points; raise the cap or coarsen"));
 }
 
 namespace
