@@ -114,5 +114,24 @@ TEST(AllocationFailure, OutOfMemoryAfterSplittingManyCrossingsSaysSo)
     << r.error;
 }
 
+TEST(AllocationFailure, OutOfMemoryAbove30DegreesBlamesTheAngle)
+{
+  // Above 30 degrees the refinement need not end, and a runaway is the
+  // likelier cause: no larger machine helps (a review). The warning stays.
+  Pslg in;
+  in.points = { { 0, 0 }, { 1, 0 }, { 0, 1 }, { 0.02, 0.01 } };
+  Options o;
+  o.minAngleDeg = 35;
+  failing_allocation::start(0);
+  const Result r = mesh(in, o);
+  failing_allocation::stop();
+  ASSERT_FALSE(r.ok);
+  EXPECT_EQ(r.error,
+    "out of memory: with a minimum angle above 30 degrees the overlay refinement need not end; "
+    "use 30 degrees or less");
+  ASSERT_FALSE(r.warnings.empty());
+  EXPECT_NE(r.warnings[0].find("(here 35) has no guarantee"), std::string::npos) << r.warnings[0];
+}
+
 } // namespace
 } // namespace osm
