@@ -38,6 +38,7 @@
 #include "Clean.h" // formatNumber
 #include "MeshWriter.h"
 #include "OutputFile.h"
+#include "StagedOutput.h"
 
 #include <algorithm>
 #include <cctype>
@@ -1116,6 +1117,15 @@ void WarnNotInNodeFiles(vtkPolyData* mesh, const osm::NodeData& data, OsmOutputW
   }
 }
 
+/// How a failed write's message ends: what became of the partial file, and
+/// of a file it was to replace where it was written beside it.
+std::string Removed(bool removed, bool oldKept)
+{
+  return !removed ? ""
+    : oldKept     ? " (the partial file is removed; the old one is kept)"
+                  : " (the partial file is removed)";
+}
+
 void WriteMesh(const std::string& path, vtkPolyData* mesh, vtkPolyData* edges, vtkPointSet* input,
   OsmOutputWindow* window)
 {
@@ -1139,15 +1149,18 @@ void WriteMesh(const std::string& path, vtkPolyData* mesh, vtkPolyData* edges, v
     return;
   }
   vtkSmartPointer<vtkPolyData> clean = WithoutTimings(mesh);
-  // On a failure only a file this write made or changed is removed.
+  // Written beside the file and renamed over it; where that cannot be, on a
+  // failure only a file this write made or changed is removed.
+  StagedOutput staged(path);
   const osm::OutputFile before(path);
+  const char* file = staged.WritePath().c_str();
   unsigned long code = vtkErrorCode::NoError;
   errno = 0;
   if (ext == ".vtp")
   {
     vtkNew<vtkXMLPolyDataWriter> writer;
     writer->SetInputData(clean);
-    writer->SetFileName(path.c_str());
+    writer->SetFileName(file);
     writer->SetCompressionLevel(kZLibLevel);
     ok = writer->Write();
     code = writer->GetErrorCode();
@@ -1156,7 +1169,7 @@ void WriteMesh(const std::string& path, vtkPolyData* mesh, vtkPolyData* edges, v
   {
     vtkNew<vtkXMLUnstructuredGridWriter> writer;
     writer->SetInputData(ToUnstructuredGrid(clean));
-    writer->SetFileName(path.c_str());
+    writer->SetFileName(file);
     writer->SetCompressionLevel(kZLibLevel);
     ok = writer->Write();
     code = writer->GetErrorCode();
@@ -1165,7 +1178,7 @@ void WriteMesh(const std::string& path, vtkPolyData* mesh, vtkPolyData* edges, v
   {
     vtkNew<vtkPolyDataWriter> writer;
     writer->SetInputData(clean);
-    writer->SetFileName(path.c_str());
+    writer->SetFileName(file);
     // Binary: ASCII legacy files keep about 11 significant digits, which would
     // move the input's points.
     writer->SetFileTypeToBinary();
@@ -1178,12 +1191,19 @@ void WriteMesh(const std::string& path, vtkPolyData* mesh, vtkPolyData* edges, v
     // file (a review: a full disk left one, with that report).
     const int error = errno;
     window->Reset();
-    const bool removed = before.removeIfWritten();
+    const bool oldKept = staged.IsStaged() && staged.Replaces();
+    const bool removed = staged.IsStaged() ? staged.Discard() : before.removeIfWritten();
     const std::string why = code == vtkErrorCode::OutOfDiskSpaceError
       ? std::string("out of disk space, or over the file size limit")
       : error != 0 ? std::generic_category().message(error)
                    : "the writer failed (VTK error code " + std::to_string(code) + ")";
-    Fail("cannot write '" + path + "': " + why + (removed ? " (the partial file is removed)" : ""));
+    Fail("cannot write '" + path + "': " + why + Removed(removed, oldKept));
+  }
+  const bool replaces = staged.IsStaged() && staged.Replaces();
+  if (const int error = staged.Commit())
+  {
+    Fail("cannot write '" + path + "': " + std::generic_category().message(error) +
+      Removed(true, replaces));
   }
 }
 
@@ -1326,21 +1346,28 @@ int Run(int argc, char* argv[], OsmOutputWindow* window)
     // leaves no partial drawing (a review: a full disk left half of one).
     const std::string kept =
       args.output.empty() ? "" : "; the mesh is written to '" + args.output + "'";
+    StagedOutput staged(args.svg);
     const osm::OutputFile before(args.svg);
     errno = 0;
-    std::ofstream svg(args.svg, std::ios::binary);
+    std::ofstream svg(staged.WritePath(), std::ios::binary);
     if (svg)
     {
       osm::writeSvg(svg, ToResult(mesh, edges));
       svg.close();
     }
-    if (!svg)
+    int error = svg ? 0 : errno;
+    if (svg)
     {
-      const int error = errno;
-      const bool removed = before.removeIfWritten();
+      error = staged.Commit();
+    }
+    if (!svg || error != 0)
+    {
+      const bool oldKept = staged.IsStaged() && staged.Replaces();
+      const bool removed = staged.IsStaged() ? staged.Discard() : !svg && before.removeIfWritten();
+      const std::string said = Removed(removed, oldKept);
       Fail("cannot write '" + args.svg +
         "': " + (error != 0 ? std::generic_category().message(error) : std::string("failed")) +
-        (removed           ? " (the partial file is removed" + kept + ")"
+        (removed           ? said.substr(0, said.size() - 1) + kept + ")"
             : kept.empty() ? ""
                            : " (" + kept.substr(2) + ")"));
     }
@@ -1359,6 +1386,7 @@ int main(int argc, char* argv[])
   // VTK's messages reach the user only through OsmOutputWindow: the logger's
   // own copy on stderr (VTK 9.2 logs errors as well) is turned off.
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  StagedOutput::HandleSignals();
 #ifdef SIGXFSZ
   // Over a file size limit (ulimit -f) the default action of SIGXFSZ kills
   // the process mid-write, with no message and a partial file left. Ignored,

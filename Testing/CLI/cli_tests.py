@@ -722,6 +722,39 @@ def group_inputs():
     validate(data("split_pslg.poly"), out("split.vtp"), what="split .poly/.node meshed, valid")
 
 
+def interrupted_write():
+    """A signal during a long write leaves the old output whole and no
+    temporary file (a review: SIGINT left a 0-byte file where a mesh was)."""
+    import random
+    import signal
+    import time
+    rng = random.Random(7)
+    points = [(i + rng.uniform(-0.3, 0.3), j + rng.uniform(-0.3, 0.3))
+              for i in range(320) for j in range(320)]
+    source = out("many-points.node")
+    with open(source, "w") as f:
+        f.write("%d 2 0 0\n" % len(points))
+        f.writelines("%d %.17g %.17g\n" % (k, x, y) for k, (x, y) in enumerate(points))
+    target = out("interrupted.vtp")
+    mesh_ok(data("square_hole.poly"), "-o", target)
+    old = read_bytes(target)
+    for sig in (signal.SIGTERM, signal.SIGINT, signal.SIGHUP):
+        p = subprocess.Popen([ARGS.cli, source, "-o", target],
+                             stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        temp = []
+        while p.poll() is None and not temp:
+            temp = [f for f in os.listdir(ARGS.out) if f.startswith(".interrupted.vtp.osm-") and
+                    os.path.getsize(out(f)) > 0]
+            time.sleep(0.002)
+        p.send_signal(sig)
+        status = p.wait(timeout=600)
+        check(temp and status == -sig, "signal %d arrived during the write" % sig,
+              "status %d, temporary files %r" % (status, temp))
+        check(read_bytes(target) == old, "signal %d during the write leaves the old file whole" % sig)
+        left = [f for f in os.listdir(ARGS.out) if ".osm-" in f]
+        check(not left, "signal %d during the write leaves no temporary file" % sig, str(left))
+
+
 def group_errors():
     missing = out("does-not-exist.poly")
     expect_error([missing], 1, ["cannot open '%s'" % missing, "No such file or directory"],
@@ -922,8 +955,31 @@ def group_errors():
         errors = [l for l in p.stderr.splitlines() if not l.startswith("osm-mesh: warning: ")]
         check(p.returncode == 1 and len(errors) == 1 and any(w in errors[0] for w in whys),
               "a %s write over the file size limit fails in one line" % ext, p.stderr[-400:])
-        left = [f for f in os.listdir(ARGS.out) if f.startswith("limited")]
-        check(not left, "no partial %s file is left" % ext, str(left))
+        left = [f for f in os.listdir(ARGS.out) if "limited" in f]
+        check(not left, "no partial %s file is left, nor a hidden one" % ext, str(left))
+    # An output written before is kept whole when the write over it fails (a
+    # review: Ctrl-C or a file size limit left a partial file in its place),
+    # with its permissions after one that succeeds.
+    for ext in (".vtp", ".svg"):
+        target = out("kept" + ext)
+        with open(target, "w") as f:
+            f.write("the old file\n")
+        os.chmod(target, 0o640)
+        option = "--svg" if ext == ".svg" else "-o"
+        p = subprocess.run([ARGS.cli, data("square_hole.poly"), option, target],
+                           capture_output=True, text=True, timeout=600, preexec_fn=small_files)
+        check(p.returncode == 1 and "the old one is kept" in p.stderr,
+              "a %s write over an old file that fails says the old one is kept" % ext,
+              p.stderr[-300:])
+        with open(target) as f:
+            check(f.read() == "the old file\n", "the old %s file is kept whole" % ext)
+        left = [f for f in os.listdir(ARGS.out) if "kept" + ext in f and f != "kept" + ext]
+        check(not left, "no temporary file is left beside the old %s" % ext, str(left))
+        mesh_ok(data("square_hole.poly"), option, target)
+        check(os.stat(target).st_mode & 0o777 == 0o640 and os.path.getsize(target) > 1000,
+              "a %s write over an old file keeps its permissions" % ext,
+              oct(os.stat(target).st_mode))
+    interrupted_write()
     p = subprocess.run([ARGS.cli, data("square_hole.poly"), "-o", out("limited.vtp"), "--stats"],
                        capture_output=True, text=True, timeout=600, preexec_fn=small_files)
     check(p.returncode == 1 and '"ok": false' in p.stdout and "file size limit" in p.stdout,
