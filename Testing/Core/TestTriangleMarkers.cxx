@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 
 using namespace osm;
 
@@ -161,6 +162,9 @@ TEST(MeshEdges, EveryEdgeOnceAndTheBoundaryThoseOfOneTriangle)
     const Point &a = mesh.vertices[all.lower(k)], &b = mesh.vertices[all.higher(k)];
     const bool side = onSquare(a) && onSquare(b) && (a.x == b.x || a.y == b.y);
     EXPECT_LT(all.lower(k), all.higher(k));
+    if (k > 0) // in order, which find's binary search needs
+      EXPECT_LT(std::make_pair(all.lower(k - 1), all.higher(k - 1)),
+        std::make_pair(all.lower(k), all.higher(k)));
     EXPECT_EQ(all.onBoundary(k), side);
     EXPECT_EQ(all.find(all.higher(k), all.lower(k)), k);
     EXPECT_EQ(boundary.edgeOnBoundary(all.lower(k), all.higher(k)), side);
