@@ -142,6 +142,13 @@ def read_triangle_files(base):
     return vertices, triangles, edges
 
 
+def array_names(path, section):
+    """The names of the arrays in a VTK XML file's PointData or CellData."""
+    header = read_bytes(path).split(b"<AppendedData")[0]
+    part = header.split(b"<" + section.encode())[1].split(b"</" + section.encode() + b">")[0]
+    return set(n.decode() for n in re.findall(b'Name="([^"]+)"', part))
+
+
 def area(vertices, tri):
     (ax, ay), (bx, by), (cx, cy) = (vertices[v - 1] for v in tri)
     return 0.5 * ((bx - ax) * (cy - ay) - (by - ay) * (cx - ax))
@@ -666,9 +673,7 @@ def group_inputs():
     for extra, carried in (([], True), (["--no-point-data"], False)):
         mesh_ok(land, "-o", out("land.vtu"), *extra)
         validate(land, out("land.vtu"), what="a .vtp polygon input meshed, valid %r" % extra)
-        header = read_bytes(out("land.vtu")).split(b"<AppendedData")[0]
-        cell_data = header.split(b"<CellData")[1].split(b"</CellData>")[0]
-        names = set(n.decode() for n in re.findall(b'Name="([^"]+)"', cell_data))
+        names = array_names(out("land.vtu"), "CellData")
         check(({"InputCellId", "Land"} <= names) == carried and
               ({"InputCellId", "Land"} & names == set()) == (not carried),
               "polygon cell data on the mesh %s %r" % ("with" if carried else "without", extra),
@@ -837,9 +842,7 @@ def group_errors():
                 "VECTORS current double\n0 1 0 0 1 0 0 1 0 0 1 0\n")
     for ext in (".vtp", ".vtu"):
         mesh_ok(sections, "-o", out("sections" + ext))
-        header = read_bytes(out("sections" + ext)).split(b"<AppendedData")[0]
-        point_data = header.split(b"<PointData")[1].split(b"</PointData>")[0]
-        names = set(n.decode() for n in re.findall(b'Name="([^"]+)"', point_data))
+        names = array_names(out("sections" + ext), "PointData")
         check({"temperature", "pressure", "wind", "current"} <= names,
               "every SCALARS and VECTORS section of a legacy input reaches the %s mesh" % ext,
               str(sorted(names)))
