@@ -7,10 +7,12 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <vector>
 
 #include <fcntl.h>
 #include <sys/stat.h>
+#include <sys/xattr.h>
 #include <unistd.h>
 
 namespace
@@ -42,11 +44,32 @@ extern "C" void RemovePendingAndDie(int signal)
 }
 
 /// The mode a new file gets: 0666 less the umask (mkstemp makes it 0600).
-mode_t NewFileMode()
+/// Read once, by HandleSignals at the start, while one thread runs: reading
+/// the umask sets it.
+mode_t NewFileMode = 0644;
+
+/// Whether a file replaced by a new one would lose something that writing it
+/// in place keeps: its owner or group (a file another user lets us write),
+/// its other hard links, its access control list.
+bool KeepsOnlyInPlace(const std::string& path, const struct stat& info)
 {
-  const mode_t mask = ::umask(0);
-  ::umask(mask);
-  return 0666 & ~mask;
+  return info.st_uid != ::geteuid() || info.st_gid != ::getegid() || info.st_nlink > 1 ||
+    ::getxattr(path.c_str(), "system.posix_acl_access", nullptr, 0) >= 0;
+}
+
+/// Copies file from over file to, truncating it: the write in place, where
+/// the rename is refused (a file another user owns in a sticky folder).
+int CopyInPlace(const std::string& from, const std::string& to)
+{
+  errno = 0;
+  std::ifstream in(from, std::ios::binary);
+  std::ofstream out(to, std::ios::binary | std::ios::trunc);
+  if (in && out)
+  {
+    out << in.rdbuf();
+    out.close();
+  }
+  return in && out ? 0 : (errno != 0 ? errno : EIO);
 }
 
 } // namespace
@@ -58,7 +81,8 @@ StagedOutput::StagedOutput(const std::string& path)
   struct stat info;
   const bool exists = ::stat(this->Target.c_str(), &info) == 0;
   this->Existed = exists;
-  if (exists && !S_ISREG(info.st_mode))
+  // Only a regular file, or none (not a link loop, which stat refuses).
+  if (exists ? !S_ISREG(info.st_mode) || KeepsOnlyInPlace(this->Target, info) : errno != ENOENT)
   {
     return;
   }
@@ -67,17 +91,26 @@ StagedOutput::StagedOutput(const std::string& path)
     (target.parent_path() / ("." + target.filename().string() + ".osm-XXXXXX")).string();
   std::vector<char> name(pattern.begin(), pattern.end());
   name.push_back('\0');
+  // No signal between making the file and noting it for the handler.
+  sigset_t all, before;
+  sigfillset(&all);
+  ::sigprocmask(SIG_BLOCK, &all, &before);
   const int fd = ::mkstemp(name.data());
+  if (fd >= 0)
+  {
+    SetPending(name.data());
+  }
+  ::sigprocmask(SIG_SETMASK, &before, nullptr);
   if (fd < 0)
   {
     return;
   }
   // The old file's permissions, or a new file's.
-  ::fchmod(fd, exists ? (info.st_mode & 07777) : NewFileMode());
+  ::fchmod(fd, exists ? (info.st_mode & 07777) : NewFileMode);
   ::close(fd);
   this->Temp = name.data();
   this->Staged = true;
-  SetPending(this->Temp);
+  this->Intact = true;
 }
 
 StagedOutput::~StagedOutput()
@@ -91,7 +124,15 @@ int StagedOutput::Commit()
   {
     return 0;
   }
-  const int error = std::rename(this->Temp.c_str(), this->Target.c_str()) == 0 ? 0 : errno;
+  int error = std::rename(this->Temp.c_str(), this->Target.c_str()) == 0 ? 0 : errno;
+  if (error == EPERM || error == EACCES)
+  {
+    this->Intact = false;
+    this->Copied = true;
+    error = CopyInPlace(this->Temp, this->Target);
+    this->Discard();
+    return error;
+  }
   if (error != 0)
   {
     this->Discard();
@@ -116,6 +157,9 @@ bool StagedOutput::Discard()
 
 void StagedOutput::HandleSignals()
 {
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  NewFileMode = 0666 & ~mask;
   for (const int signal : { SIGINT, SIGTERM, SIGHUP })
   {
     // A signal the caller ignores (nohup) stays ignored.

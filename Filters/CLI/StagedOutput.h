@@ -8,9 +8,12 @@
 /// the path names (through symbolic links), renamed over it once complete, so
 /// that a failed or interrupted write leaves the old file as it was (a review:
 /// Ctrl-C during a 15 s write left a 0-byte file where a good mesh had been).
-/// Where no file can be made beside it (a read-only folder holding a writable
-/// file), or the path names no regular file (a link to a device), the write
-/// goes to the path itself, as before.
+/// The write goes to the path itself, as before, where no file can be made
+/// beside it (a read-only folder holding a writable file), where the path
+/// names no regular file (a link to a device, a link loop), or where a new
+/// file would lose what the old one has (another owner or group, hard links,
+/// an access control list); and a rename refused (another user's file in a
+/// sticky folder) copies the new file over the old one.
 class StagedOutput
 {
 public:
@@ -23,8 +26,11 @@ public:
   const std::string& WritePath() const { return this->Staged ? this->Temp : this->Path; }
   /// Whether the write goes to a temporary file.
   bool IsStaged() const { return this->Staged; }
-  /// Whether the path named a file before the write.
-  bool Replaces() const { return this->Existed; }
+  /// Whether a file the path named before the write is still as it was: the
+  /// write was staged, and Commit has not copied over it.
+  bool OldFileIntact() const { return this->Existed && this->Intact; }
+  /// Whether Commit wrote over the target in place (a rename refused).
+  bool CopiedInPlace() const { return this->Copied; }
   /// Renames the temporary file over the target; 0, or the errno of a failure
   /// (the temporary file is then removed).
   int Commit();
@@ -32,7 +38,8 @@ public:
   bool Discard();
 
   /// Installs handlers for SIGINT, SIGTERM and SIGHUP that remove the
-  /// temporary file being written, then end the process as the signal would.
+  /// temporary file being written, then end the process as the signal would;
+  /// reads the umask. Call it first, while one thread runs.
   static void HandleSignals();
 
 private:
@@ -41,6 +48,8 @@ private:
   std::string Temp;
   bool Staged = false;
   bool Existed = false;
+  bool Intact = false;
+  bool Copied = false;
 };
 
 #endif

@@ -1191,19 +1191,18 @@ void WriteMesh(const std::string& path, vtkPolyData* mesh, vtkPolyData* edges, v
     // file (a review: a full disk left one, with that report).
     const int error = errno;
     window->Reset();
-    const bool oldKept = staged.IsStaged() && staged.Replaces();
     const bool removed = staged.IsStaged() ? staged.Discard() : before.removeIfWritten();
+    const bool oldKept = staged.OldFileIntact();
     const std::string why = code == vtkErrorCode::OutOfDiskSpaceError
       ? std::string("out of disk space, or over the file size limit")
       : error != 0 ? std::generic_category().message(error)
                    : "the writer failed (VTK error code " + std::to_string(code) + ")";
     Fail("cannot write '" + path + "': " + why + Removed(removed, oldKept));
   }
-  const bool replaces = staged.IsStaged() && staged.Replaces();
   if (const int error = staged.Commit())
   {
     Fail("cannot write '" + path + "': " + std::generic_category().message(error) +
-      Removed(true, replaces));
+      Removed(!staged.CopiedInPlace(), staged.OldFileIntact()));
   }
 }
 
@@ -1356,14 +1355,16 @@ int Run(int argc, char* argv[], OsmOutputWindow* window)
       svg.close();
     }
     int error = svg ? 0 : errno;
+    const bool wasStaged = staged.IsStaged();
     if (svg)
     {
       error = staged.Commit();
     }
     if (!svg || error != 0)
     {
-      const bool oldKept = staged.IsStaged() && staged.Replaces();
-      const bool removed = staged.IsStaged() ? staged.Discard() : !svg && before.removeIfWritten();
+      const bool oldKept = staged.OldFileIntact();
+      const bool removed =
+        wasStaged ? (staged.Discard(), !staged.CopiedInPlace()) : !svg && before.removeIfWritten();
       const std::string said = Removed(removed, oldKept);
       Fail("cannot write '" + args.svg +
         "': " + (error != 0 ? std::generic_category().message(error) : std::string("failed")) +

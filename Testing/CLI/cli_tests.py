@@ -982,6 +982,21 @@ def group_errors():
         check(os.stat(target).st_mode & 0o777 == 0o640 and os.path.getsize(target) > 1000,
               "a %s write over an old file keeps its permissions" % ext,
               oct(os.stat(target).st_mode))
+    # Where a new file would lose what the old one has, it is written in place
+    # (a review): a hard link keeps sharing it; a link loop is refused as
+    # before, not replaced by a file.
+    linked = out("hard.vtp")
+    mesh_ok(data("square_hole.poly"), "-o", linked)
+    os.link(linked, out("hard-too.vtp"))
+    mesh_ok(data("square_hole.poly"), "--min-angle", "20", "-o", linked)
+    check(os.stat(linked).st_nlink == 2 and
+          read_bytes(linked) == read_bytes(out("hard-too.vtp")),
+          "a file with another hard link is written in place, the link sharing the new mesh")
+    os.symlink("loop-b.vtp", out("loop-a.vtp"))
+    os.symlink("loop-a.vtp", out("loop-b.vtp"))
+    expect_error([data("square_hole.poly"), "-o", out("loop-a.vtp")], 1,
+                 ["Too many levels of symbolic links"], "an output through a link loop")
+    check(os.path.islink(out("loop-a.vtp")), "a link loop stays a link")
     interrupted_write()
     p = subprocess.run([ARGS.cli, data("square_hole.poly"), "-o", out("limited.vtp"), "--stats"],
                        capture_output=True, text=True, timeout=600, preexec_fn=small_files)
