@@ -1501,9 +1501,9 @@ std::optional<int> vtkOverlayStitchMesher::MeshRun::MeshPslg(bool interpolate)
 
   // Which cells the named segments are, and which seeds the named holes.
   const std::size_t propertySeeds = self->HolePoints.size() / 2;
+  const bool byCoordinates = this->Composite || this->Gather.Ranks > 1 ||
+    OverlayStitchCountsFromOne(this->Input->GetFieldData());
   auto explain = [&](const std::string& text) {
-    const bool byCoordinates = this->Composite || this->Gather.Ranks > 1 ||
-      OverlayStitchCountsFromOne(this->Input->GetFieldData());
     return ExplainHoles(ExplainSegments(ExplainPoints(text, this->Input), this->SegmentSources,
                           this->Input, byCoordinates),
       propertySeeds, this->Pslg.holes.size());

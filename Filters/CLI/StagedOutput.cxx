@@ -1,7 +1,5 @@
 #include "StagedOutput.h"
 
-#include "OutputFile.h" // linkTarget
-
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
@@ -77,6 +75,7 @@ int CopyInPlace(const std::string& from, const std::string& to)
 StagedOutput::StagedOutput(const std::string& path)
   : Path(path)
   , Target(osm::linkTarget(path).string())
+  , Before(path)
 {
   struct stat info;
   const bool exists = ::stat(this->Target.c_str(), &info) == 0;
@@ -124,23 +123,26 @@ int StagedOutput::Commit()
   {
     return 0;
   }
-  int error = std::rename(this->Temp.c_str(), this->Target.c_str()) == 0 ? 0 : errno;
+  const int error = std::rename(this->Temp.c_str(), this->Target.c_str()) == 0 ? 0 : errno;
   if (error == EPERM || error == EACCES)
   {
+    // Written in place after all: a failure leaves the target changed.
     this->Intact = false;
-    this->Copied = true;
-    error = CopyInPlace(this->Temp, this->Target);
+    const int copied = CopyInPlace(this->Temp, this->Target);
     this->Discard();
-    return error;
+    return copied;
   }
-  if (error != 0)
+  if (error == 0)
   {
-    this->Discard();
-    return error;
+    HavePending = 0;
+    this->Staged = false;
   }
-  HavePending = 0;
-  this->Staged = false;
-  return 0;
+  return error;
+}
+
+bool StagedOutput::RemoveWritten()
+{
+  return this->Staged ? this->Discard() : this->Before.removeIfWritten();
 }
 
 bool StagedOutput::Discard()

@@ -2,6 +2,8 @@
 #ifndef osm_StagedOutput_h
 #define osm_StagedOutput_h
 
+#include "OutputFile.h"
+
 #include <string>
 
 /// Where osm-mesh writes an output: a hidden temporary file beside the file
@@ -24,18 +26,15 @@ public:
 
   /// The file to write: the temporary one, or the path itself.
   const std::string& WritePath() const { return this->Staged ? this->Temp : this->Path; }
-  /// Whether the write goes to a temporary file.
-  bool IsStaged() const { return this->Staged; }
   /// Whether a file the path named before the write is still as it was: the
   /// write was staged, and Commit has not copied over it.
   bool OldFileIntact() const { return this->Existed && this->Intact; }
-  /// Whether Commit wrote over the target in place (a rename refused).
-  bool CopiedInPlace() const { return this->Copied; }
-  /// Renames the temporary file over the target; 0, or the errno of a failure
-  /// (the temporary file is then removed).
+  /// Renames the temporary file over the target; 0, or the errno of a failure.
   int Commit();
-  /// Removes the temporary file; whether there was one.
-  bool Discard();
+  /// After a failed write or Commit: removes what the write made, the
+  /// temporary file or a file it made or changed in place (a file it did not
+  /// touch, and a link's own entry, stay); whether it removed one.
+  bool RemoveWritten();
 
   /// Installs handlers for SIGINT, SIGTERM and SIGHUP that remove the
   /// temporary file being written, then end the process as the signal would;
@@ -43,13 +42,15 @@ public:
   static void HandleSignals();
 
 private:
+  bool Discard();
+
   std::string Path;
   std::string Target;
   std::string Temp;
   bool Staged = false;
   bool Existed = false;
   bool Intact = false;
-  bool Copied = false;
+  osm::OutputFile Before; ///< the target as it was, for a write in place
 };
 
 #endif

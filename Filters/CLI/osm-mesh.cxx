@@ -1118,12 +1118,13 @@ void WarnNotInNodeFiles(vtkPolyData* mesh, const osm::NodeData& data, OsmOutputW
 }
 
 /// How a failed write's message ends: what became of the partial file, and
-/// of a file it was to replace where it was written beside it.
-std::string Removed(bool removed, bool oldKept)
+/// of a file it was to replace where it was written beside it; more adds to
+/// the note.
+std::string Removed(bool removed, bool oldKept, const std::string& more = "")
 {
-  return !removed ? ""
-    : oldKept     ? " (the partial file is removed; the old one is kept)"
-                  : " (the partial file is removed)";
+  return removed ? " (the partial file is removed" +
+      std::string(oldKept ? "; the old one is kept" : "") + more + ")"
+                 : "";
 }
 
 void WriteMesh(const std::string& path, vtkPolyData* mesh, vtkPolyData* edges, vtkPointSet* input,
@@ -1152,7 +1153,6 @@ void WriteMesh(const std::string& path, vtkPolyData* mesh, vtkPolyData* edges, v
   // Written beside the file and renamed over it; where that cannot be, on a
   // failure only a file this write made or changed is removed.
   StagedOutput staged(path);
-  const osm::OutputFile before(path);
   const char* file = staged.WritePath().c_str();
   unsigned long code = vtkErrorCode::NoError;
   errno = 0;
@@ -1191,7 +1191,7 @@ void WriteMesh(const std::string& path, vtkPolyData* mesh, vtkPolyData* edges, v
     // file (a review: a full disk left one, with that report).
     const int error = errno;
     window->Reset();
-    const bool removed = staged.IsStaged() ? staged.Discard() : before.removeIfWritten();
+    const bool removed = staged.RemoveWritten();
     const bool oldKept = staged.OldFileIntact();
     const std::string why = code == vtkErrorCode::OutOfDiskSpaceError
       ? std::string("out of disk space, or over the file size limit")
@@ -1201,8 +1201,9 @@ void WriteMesh(const std::string& path, vtkPolyData* mesh, vtkPolyData* edges, v
   }
   if (const int error = staged.Commit())
   {
+    const bool removed = staged.RemoveWritten();
     Fail("cannot write '" + path + "': " + std::generic_category().message(error) +
-      Removed(!staged.CopiedInPlace(), staged.OldFileIntact()));
+      Removed(removed, staged.OldFileIntact()));
   }
 }
 
@@ -1346,7 +1347,6 @@ int Run(int argc, char* argv[], OsmOutputWindow* window)
     const std::string kept =
       args.output.empty() ? "" : "; the mesh is written to '" + args.output + "'";
     StagedOutput staged(args.svg);
-    const osm::OutputFile before(args.svg);
     errno = 0;
     std::ofstream svg(staged.WritePath(), std::ios::binary);
     if (svg)
@@ -1354,21 +1354,13 @@ int Run(int argc, char* argv[], OsmOutputWindow* window)
       osm::writeSvg(svg, ToResult(mesh, edges));
       svg.close();
     }
-    int error = svg ? 0 : errno;
-    const bool wasStaged = staged.IsStaged();
-    if (svg)
-    {
-      error = staged.Commit();
-    }
+    const int error = svg ? staged.Commit() : errno;
     if (!svg || error != 0)
     {
-      const bool oldKept = staged.OldFileIntact();
-      const bool removed =
-        wasStaged ? (staged.Discard(), !staged.CopiedInPlace()) : !svg && before.removeIfWritten();
-      const std::string said = Removed(removed, oldKept);
+      const bool removed = staged.RemoveWritten();
       Fail("cannot write '" + args.svg +
         "': " + (error != 0 ? std::generic_category().message(error) : std::string("failed")) +
-        (removed           ? said.substr(0, said.size() - 1) + kept + ")"
+        (removed           ? Removed(true, staged.OldFileIntact(), kept)
             : kept.empty() ? ""
                            : " (" + kept.substr(2) + ")"));
     }
