@@ -169,6 +169,7 @@ private:
   void addCrossing(int edge, int piece, const Point& A, const Point& B);
   void refuseCrossings(const Crossing& c);
   void markDuplicates(const Array<int>* rank);
+  bool overlapThrough(int a, int b) const;
   void addSegmentCrossing(int a, int b, const Point& p);
   void countSegmentCrossings();
   void refuseSegmentCrossings(std::size_t count);
@@ -192,11 +193,12 @@ private:
   std::size_t pointsMemoryHolds = 0;
   std::size_t maxSegmentCrossings = 0;
   std::size_t nextCount = 0;
-  int walking = -1;                       ///< the segment being walked
-  int segmentStart = -1;                  ///< first vertex of the segment being walked
-  double segmentLength = 0;               ///< its length (addCrossing's A to B)
-  Array<std::pair<int, int>> triPiece;    ///< (overlay triangle, piece) traversed
-  Array<std::pair<int, int>> steinerHits; ///< (Steiner vertex, segment) passing through it
+  int walking = -1;                    ///< the segment being walked
+  int segmentStart = -1;               ///< first vertex of the segment being walked
+  double segmentLength = 0;            ///< its length (addCrossing's A to B)
+  Array<std::pair<int, int>> triPiece; ///< (overlay triangle, piece) traversed
+  /// (Steiner vertex, segment, piece ending there) passing through it
+  Array<std::array<int, 3>> steinerHits;
 };
 
 /// x lies strictly further along the segment than from, and not beyond B. The
@@ -416,7 +418,7 @@ void Walker::walk(int segment, int a, int b)
       dangling.passesThrough(next, segment);
     }
     else if (next != b)
-      steinerHits.push_back({ next, segment });
+      steinerHits.push_back({ next, segment, piece });
     cur = next;
   }
 }
@@ -521,6 +523,18 @@ void Walker::refuseSegmentCrossings(std::size_t count)
   throw stop;
 }
 
+/// The walks whose pieces a and b end at the same Steiner vertex (each then
+/// goes on with the next piece) reach it from, and leave it towards, the same
+/// two vertices.
+bool Walker::overlapThrough(int a, int b) const
+{
+  const auto around = [&](int piece) {
+    const int before = out.pieces[piece].v0, after = out.pieces[piece + 1].v1;
+    return std::make_pair(std::min(before, after), std::max(before, after));
+  };
+  return around(a) == around(b);
+}
+
 void Walker::findSegmentCrossings(const Array<int>* rank)
 {
   markDuplicates(rank);
@@ -581,13 +595,17 @@ void Walker::findSegmentCrossings(const Array<int>* rank)
         record(c.piece, std::prev(after)->second, c.p);
     }
   });
-  // ...or both pass exactly through the same Steiner vertex.
+  // ...or both pass exactly through the same Steiner vertex, unless they
+  // overlap there: collinear segments along the same pieces on both sides
+  // (a review: a hull edge along a longer segment, each through one Steiner
+  // point, was split as a crossing).
   std::sort(steinerHits.begin(), steinerHits.end());
   for (std::size_t k = 1; k < steinerHits.size(); ++k)
   {
-    const auto [v, s] = steinerHits[k];
-    if (v == steinerHits[k - 1].first && s != steinerHits[k - 1].second)
-      addSegmentCrossing(s, steinerHits[k - 1].second, P[v]);
+    const auto [v, s, piece] = steinerHits[k];
+    const auto [u, t, other] = steinerHits[k - 1];
+    if (v == u && s != t && !overlapThrough(piece, other))
+      addSegmentCrossing(s, t, P[v]);
   }
   keepFirstOfEachPair(out.segmentCrossings);
   // Where two segments properly cross, their crossing is taken from their own

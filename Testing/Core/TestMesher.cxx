@@ -907,6 +907,34 @@ TEST(Mesher, OverlappingSegmentsAreMeshedOnceAndSaidSo)
   }
 }
 
+TEST(Mesher, CollinearSegmentsThroughOneSteinerPointOverlapAndDoNotCross)
+{
+  // Found by a core review: a segment along x = 0.99 through four input
+  // points, and the convex hull's edges between them, passed through the same
+  // Steiner point of the overlay. Two walks through one Steiner point were
+  // taken for a crossing: "split 1 crossing(s) ... input segment 0 and an
+  // edge of the convex hull cross". They run along the same pieces there.
+  Pslg p;
+  p.points = { { 0.98999999999999999, 0.3368312837179519 },
+    { 0.98999999999999999, 0.22765715970590833 }, { 0.98999999999999999, 0.19625049783040424 },
+    { 0.98999999999999999, 0.064384696010171841 }, { 0.98999999999999999, 0.055869352672369546 },
+    { 0.98999999999999999, 0.75385554486306838 }, { 0.12, 0.13690061797364186 } };
+  p.segments = { { 4, 5 } };
+  // The same line, as two input segments over each other.
+  Pslg two = p;
+  two.segments.push_back({ 3, 0 });
+  for (const Pslg& input : { p, two })
+    for (Domain d : { Domain::Auto, Domain::Hull, Domain::Box })
+    {
+      Options o;
+      o.domain = d;
+      const Result r = meshAndValidate(input, "collinear through a Steiner point", o);
+      ASSERT_TRUE(r.ok) << r.error;
+      EXPECT_EQ(r.stats.crossingsSplit, 0u) << static_cast<int>(d);
+      EXPECT_FALSE(mentions(r.warnings, "cross")) << static_cast<int>(d);
+    }
+}
+
 TEST(Mesher, AnOverlapCarriesTheFirstInputSegment)
 {
   // Found by a Triangle user's review: where segments overlap, the piece met
