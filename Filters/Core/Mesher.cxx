@@ -343,7 +343,9 @@ void Mesher::warnAboutDroppedSegments(const Work& w, const PlanarGraph& g,
   // hole: their ends may be in the mesh while they are not (a review).
   if (dropped.empty())
     return;
-  const std::size_t firstStitch = g.points.size() - g.stitchSegment.size();
+  // Splitting long edges appended points past the stitch vertices (a review:
+  // with a size bound, a segment in a hole went unreported).
+  const std::size_t firstStitch = g.firstStitch;
   // The plain pieces by their ends, smaller first, found by binary search.
   std::vector<std::array<int, 3>> byEnds(plainPieces.begin(), plainPieces.end());
   for (auto& [v0, v1, s] : byEnds)
@@ -352,7 +354,8 @@ void Mesher::warnAboutDroppedSegments(const Work& w, const PlanarGraph& g,
   std::sort(byEnds.begin(), byEnds.end());
   auto segmentOf = [&](const Segment& e) {
     for (int v : e)
-      if (static_cast<std::size_t>(v) >= firstStitch)
+      if (static_cast<std::size_t>(v) >= firstStitch &&
+        static_cast<std::size_t>(v) - firstStitch < g.stitchSegment.size())
         return g.stitchSegment[v - firstStitch];
     const std::array<int, 3> key{ std::min(e[0], e[1]), std::max(e[0], e[1]), -1 };
     const auto it = std::lower_bound(byEnds.begin(), byEnds.end(), key);
@@ -396,9 +399,8 @@ void Mesher::findGraphSegments(const Walk& walk, const PlanarGraph& g, const Wor
       for (int v : { p.v0, p.v1 })
         if (graphSegment[v] < 0)
           graphSegment[v] = inputSegment(p.segment);
-  const std::size_t first = g.points.size() - g.stitchSegment.size();
   for (std::size_t k = 0; k < g.stitchSegment.size(); ++k)
-    graphSegment[first + k] = inputSegment(g.stitchSegment[k]);
+    graphSegment[g.firstStitch + k] = inputSegment(g.stitchSegment[k]);
 }
 
 Result Mesher::execute()

@@ -819,6 +819,7 @@ PlanarGraph stitch(OverlayEdges ov, Array<Point> points, const Array<char>& isIn
   g.origin.reserve(overlayVertices + nc);
   g.origin.resize(overlayVertices);
   g.stitchSegment.reserve(nc);
+  g.firstStitch = overlayVertices;
   const std::size_t edgeBound = ne / 2 + 2 * nc + walk.pieces.size();
   g.edges.reserve(edgeBound);
   g.constrained.reserve(edgeBound);

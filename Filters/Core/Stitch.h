@@ -205,9 +205,11 @@ struct PlanarGraph
 {
   Array<Point> points;
   Array<VertexOrigin> origin;
-  /// Per stitch vertex (the points after the overlay's): the segment (index
-  /// in the walked segments) whose crossing it is.
+  /// Per stitch vertex (the points after the overlay's, from firstStitch on;
+  /// splitting long edges appends more): the segment (index in the walked
+  /// segments) whose crossing it is.
   Array<int> stitchSegment;
+  std::size_t firstStitch = 0;
   Array<Triangle> intact;         ///< overlay triangles that no segment crosses
   KnownAdjacency intactAdjacency; ///< their neighbours among them, for carveDomain
   Array<Segment> edges;

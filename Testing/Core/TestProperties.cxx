@@ -638,6 +638,56 @@ TEST(Properties, MaximumEdgeLengthHoldsOnEveryEdge)
   std::printf("%zu long edges split in %zu meshes\n", split, meshes);
 }
 
+TEST(Properties, SegmentsInAHoleAreCountedWhateverTheSizeBound)
+{
+  // Found by a review: with a size bound, splitting long completed edges
+  // appends points after the stitch vertices, and the dropped pieces' stitch
+  // vertices were looked up past them: 43 of these 540 meshes named the wrong
+  // segments (a hole's side, a hull edge) or none, so that a dropped segment
+  // went unreported. Cracks inside a square hole: each is dropped.
+  std::size_t split = 0;
+  for (int seed = 0; seed < kSeeds / 5; ++seed)
+  {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> U(3.2, 6.8);
+    Pslg p;
+    p.points = { { 0, 0 }, { 10, 0 }, { 10, 10 }, { 0, 10 }, { 3, 3 }, { 7, 3 }, { 7, 7 },
+      { 3, 7 } };
+    p.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 }, { 4, 5 }, { 5, 6 }, { 6, 7 }, { 7, 4 } };
+    const int cracks = 1 + seed % 3;
+    for (int i = 0; i < cracks; ++i)
+    {
+      const int a = static_cast<int>(p.points.size());
+      p.points.push_back({ U(rng), U(rng) });
+      p.points.push_back({ U(rng), U(rng) });
+      p.segments.push_back({ a, a + 1 });
+    }
+    p.holes = { { 3.1, 3.1 } };
+    for (double h : { 0.9, 0.5, 0.3 })
+      for (double angle : { 14.7, 20.7, 25.0 })
+      {
+        Options o;
+        o.maxEdgeLength = h;
+        o.minAngleDeg = angle;
+        const std::string name =
+          "cracks in a hole, seed " + std::to_string(seed) + " h " + std::to_string(h);
+        const Result r = meshAndValidate(p, name, o);
+        ASSERT_TRUE(r.ok) << name << ": " << r.error;
+        split += r.stats.longEdgesSplit;
+        // Every crack counted, and one of them (8 on) named.
+        const std::string said = std::to_string(cracks) +
+          " input segment(s) lie outside the meshed domain (outside every enclosed region or in a "
+          "hole), wholly or in part, and are not in the mesh there, e.g. input segment ";
+        EXPECT_TRUE(std::any_of(r.warnings.begin(), r.warnings.end(),
+          [&](const std::string& w) {
+            return w.rfind(said, 0) == 0 && std::atoi(w.c_str() + said.size()) >= 8;
+          }))
+          << name << ": " << (r.warnings.empty() ? "" : r.warnings.back());
+      }
+  }
+  EXPECT_GT(split, 0u); // the case the review found is exercised
+}
+
 /// A rotated unit square holding up to 9 rectangles (one per cell of a 3 x 3
 /// grid), some holding a smaller one: nested and side-by-side regions. Each
 /// region gets a seed with no area limit or one of 1e-3 and 2e-4.
