@@ -111,6 +111,10 @@ public:
     // A UTF-8 byte order mark written by some editors is not part of the data.
     if (text_.substr(0, 3) == "\xEF\xBB\xBF")
       text_.remove_prefix(3);
+    // Classic Mac OS ended lines with CR alone (a review: such a file read as
+    // one line, "4 vertices announced, but only 0 lines follow").
+    if (text_.find('\n') == std::string_view::npos && text_.find('\r') != std::string_view::npos)
+      end_ = '\r';
   }
 
   /// Advances to the next line holding data; false at the end of the text.
@@ -118,7 +122,7 @@ public:
   {
     while (pos_ < text_.size())
     {
-      const std::size_t end = std::min(text_.find('\n', pos_), text_.size());
+      const std::size_t end = std::min(text_.find(end_, pos_), text_.size());
       ++line_;
       split(text_.substr(pos_, end - pos_));
       pos_ = end + 1;
@@ -141,8 +145,8 @@ public:
     if (pos_ >= text_.size())
       return 0;
     const std::string_view rest = text_.substr(pos_);
-    const auto newlines = static_cast<std::size_t>(std::count(rest.begin(), rest.end(), '\n'));
-    return rest.back() == '\n' ? newlines : newlines + 1;
+    const auto newlines = static_cast<std::size_t>(std::count(rest.begin(), rest.end(), end_));
+    return rest.back() == end_ ? newlines : newlines + 1;
   }
 
   std::size_t bytesLeft() const { return pos_ >= text_.size() ? 0 : text_.size() - pos_; }
@@ -167,6 +171,7 @@ private:
   }
 
   std::string_view text_;
+  char end_ = '\n'; ///< what ends a line
   std::size_t pos_ = 0;
   std::size_t line_ = 0;
   Tokens tokens_;

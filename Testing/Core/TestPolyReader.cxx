@@ -109,6 +109,23 @@ TEST(PolyReader, CommentsBlankLinesAndWhitespace)
   EXPECT_EQ(f.pslg.segments.size(), 3u);
 }
 
+TEST(PolyReader, ClassicMacLineEndsAreLineEnds)
+{
+  // Found by a review: a file whose lines end with CR alone (classic Mac OS)
+  // read as one line, "4 vertices announced, but only 0 lines follow".
+  const PolyFile f = poly("# square\r4 2 0 0\r1 0 0\r2 1 0\r3 1 1\r4 0 1\r\r4 0\r1 1 2\r2 2 3\r"
+                          "3 3 4\r4 4 1\r0\r");
+  ASSERT_TRUE(f.ok) << f.error;
+  ASSERT_EQ(f.pslg.points.size(), 4u);
+  EXPECT_EQ(f.pslg.points[2], (Point{ 1, 1 }));
+  ASSERT_EQ(f.pslg.segments.size(), 4u);
+  EXPECT_EQ(f.pslg.segments[3], (Segment{ 3, 0 }));
+  // Errors count those lines.
+  const PolyFile bad = poly("4 2 0 0\r1 0 0\r2 1 x\r3 1 1\r4 0 1\r0 0\r");
+  ASSERT_FALSE(bad.ok);
+  EXPECT_EQ(bad.error.rfind("t.poly:3: ", 0), 0u) << bad.error;
+}
+
 TEST(PolyReader, ZeroBasedNumbering)
 {
   const PolyFile f = poly("3 2 0 0\n0 5 6\n1 7 8\n2 9 10\n2 0\n0 0 2\n1 2 1\n0\n");
