@@ -99,7 +99,8 @@ INPUT                  Triangle .poly (holes honoured) or .node file, or
   --domain MODE        auto (default: enclosed if segments enclose a region
                        with an input point on its boundary, else hull;
                        where they cross, specks do not count), enclosed,
-                       hull or box
+                       hull or box (a square 4 times the input's larger
+                       extent on a side, centred on it)
   --min-angle DEG      theta1, the overlay's smallest angle: 1 to 35 (default 30;
                        above 30 no guarantee: the mesh grows fast, and from
                        about 32.5 (31.7 with --gap-ratio) the refinement may
