@@ -93,9 +93,12 @@ INPUT                  Triangle .poly (holes honoured) or .node file, or
                        volumes and Bezier cells ignored)
   -o, --output FILE    write the mesh, in the format of FILE's extension:
                        .vtp, .vtu (VTK XML, zlib level 1), .vtk (legacy VTK),
-                       or .node (Triangle: FILE.node, .ele and .edge side by
-                       side, numbered as Triangle does: node i is input point
-                       i, from the input file's first index)
+                       or .node (Triangle: FILE.node, .ele, .edge and .poly
+                       side by side, numbered as Triangle does: node i is
+                       input point i, from the input file's first index; the
+                       .poly, as Triangle's -p writes it, lists the mesh's
+                       input subsegments and boundary edges, and the holes
+                       and regions, unless it is the input file)
   --domain MODE        auto (default: enclosed if segments enclose a region
                        with an input point on its boundary, else hull;
                        where they cross, specks do not count), enclosed,
@@ -317,6 +320,8 @@ struct Arguments
   double mergeTolerance = 0.0;
   long long maxSteiner = 0;
   bool stats = false;
+  /// A .node output's .poly is the input file, which it must not replace.
+  bool polyIsInput = false;
 };
 
 std::string Lower(std::string s)
@@ -692,6 +697,18 @@ bool ParseArguments(int argc, char* argv[], Arguments& args, OsmOutputWindow* wi
   else if (!args.output.empty())
   {
     written = { args.output };
+  }
+  if (Extension(args.output) == ".node")
+  {
+    // Beside them the mesh's segments (Triangle's -p), unless that file is
+    // the input: "osm-mesh square.poly -o square.node" keeps square.poly.
+    const std::string poly = args.output.substr(0, args.output.size() - 5) + ".poly";
+    std::error_code ec;
+    args.polyIsInput = std::filesystem::equivalent(poly, args.input, ec) && !ec;
+    if (!args.polyIsInput)
+    {
+      written.push_back(poly);
+    }
   }
   if (!args.svg.empty())
   {
@@ -1128,8 +1145,33 @@ std::string Removed(bool removed, bool oldKept, const std::string& more = "")
                  : "";
 }
 
+/// The input's hole and region seeds (its HolePoints and RegionAttributes
+/// field data, as the .poly reader makes them), for the output .poly.
+void SeedsOf(vtkPointSet* input, osm::NodeData& data)
+{
+  vtkFieldData* field = input ? input->GetFieldData() : nullptr;
+  vtkDataArray* holes = field ? field->GetArray("HolePoints") : nullptr;
+  if (holes && holes->GetNumberOfComponents() >= 2)
+  {
+    for (vtkIdType i = 0; i < holes->GetNumberOfTuples(); ++i)
+    {
+      data.holes.push_back({ holes->GetComponent(i, 0), holes->GetComponent(i, 1) });
+    }
+  }
+  vtkDataArray* regions = field ? field->GetArray("RegionAttributes") : nullptr;
+  const int components = regions ? regions->GetNumberOfComponents() : 0;
+  if (components == 3 || components == 4)
+  {
+    for (vtkIdType i = 0; i < regions->GetNumberOfTuples(); ++i)
+    {
+      data.regions.push_back({ { regions->GetComponent(i, 0), regions->GetComponent(i, 1) },
+        regions->GetComponent(i, 2), components == 4 ? regions->GetComponent(i, 3) : -1.0 });
+    }
+  }
+}
+
 void WriteMesh(const std::string& path, vtkPolyData* mesh, vtkPolyData* edges, vtkPointSet* input,
-  OsmOutputWindow* window)
+  bool polyIsInput, OsmOutputWindow* window)
 {
   const std::string ext = Extension(path);
   int ok = 1;
@@ -1143,6 +1185,16 @@ void WriteMesh(const std::string& path, vtkPolyData* mesh, vtkPolyData* edges, v
       ToTriangleNumbering(result, data, mesh, input);
     }
     WarnNotInNodeFiles(mesh, data, window);
+    SeedsOf(input, data);
+    data.writePoly = !polyIsInput;
+    if (polyIsInput)
+    {
+      window->DisplayWarningText(("the mesh's segments are not written to " + base +
+        ".poly, which is the input: name the output otherwise to have them (as Triangle "
+        "numbers its outputs: -o " +
+        base + ".1.node)")
+                                   .c_str());
+    }
     const std::string error = osm::writeTriangleFiles(base, result, data);
     if (!error.empty())
     {
@@ -1338,8 +1390,8 @@ int Run(int argc, char* argv[], OsmOutputWindow* window)
 
   if (!args.output.empty())
   {
-    WriteMesh(
-      args.output, mesh, edges, vtkPointSet::SafeDownCast(reader->GetOutputDataObject(0)), window);
+    WriteMesh(args.output, mesh, edges, vtkPointSet::SafeDownCast(reader->GetOutputDataObject(0)),
+      args.polyIsInput, window);
   }
   if (!args.svg.empty())
   {

@@ -18,11 +18,9 @@ namespace osm
 namespace
 {
 
-/// Per mesh edge (of edges), the marker of the input subsegment on it: its
-/// entry of markers (per Result::edges entry), or inputMarker when none are
-/// given; 0 for the others.
-std::vector<int> inputMarkers(
-  const Result& r, const MeshEdges& edges, const std::vector<int>& markers, int inputMarker)
+/// Per mesh edge (of edges), the entry of Result::edges that is the input
+/// subsegment on it, -1 for none.
+std::vector<int> inputSubsegments(const Result& r, const MeshEdges& edges)
 {
   // Input subsegments are recorded against the edge vertices: map by
   // coordinates, to vertices of triangles (an unused one may share them).
@@ -40,7 +38,7 @@ std::vector<int> inputMarkers(
       byPoint.begin(), byPoint.end(), p, [](const auto& a, const Point& q) { return a.first < q; });
     return it != byPoint.end() && it->first == p ? it->second : -1;
   };
-  std::vector<int> marker(edges.size(), 0);
+  std::vector<int> subsegment(edges.size(), -1);
   for (std::size_t i = 0; i < r.edges.size(); ++i)
   {
     const Edge& e = r.edges[i];
@@ -48,9 +46,48 @@ std::vector<int> inputMarkers(
       continue;
     const std::size_t k = edges.find(find(r.edgeVertices[e.a]), find(r.edgeVertices[e.b]));
     if (k < edges.size())
-      marker[k] = markers.empty() ? inputMarker : markers[i];
+      subsegment[k] = static_cast<int>(i);
   }
-  return marker;
+  return subsegment;
+}
+
+/// Base.poly's text: no vertices (base.node's), the segments (with their
+/// markers), holes and regions.
+void writePolyFile(std::ostream& poly, const MeshEdges& edges, const std::vector<int>& subsegment,
+  const std::vector<int>& marker, const NodeData& data)
+{
+  const std::size_t first = data.firstIndex == 0 ? 0 : 1;
+  std::vector<std::size_t> segments;
+  for (std::size_t e = 0; e < edges.size(); ++e)
+    if (subsegment[e] >= 0 || edges.onBoundary(e))
+      segments.push_back(e);
+  char buf[160];
+  poly << "# the mesh's input subsegments and boundary edges; its vertices are in the .node\n"
+       << "0 2 0 1\n"
+       << segments.size() << " 1\n";
+  for (std::size_t k = 0; k < segments.size(); ++k)
+  {
+    const std::size_t e = segments[k];
+    poly << k + first << ' ' << edges.lower(e) + first << ' ' << edges.higher(e) + first << ' '
+         << marker[e] << '\n';
+  }
+  poly << data.holes.size() << '\n';
+  for (std::size_t h = 0; h < data.holes.size(); ++h)
+  {
+    std::snprintf(
+      buf, sizeof buf, "%zu %.17g %.17g\n", h + first, data.holes[h].x, data.holes[h].y);
+    poly << buf;
+  }
+  if (data.regions.empty())
+    return;
+  poly << data.regions.size() << '\n';
+  for (std::size_t i = 0; i < data.regions.size(); ++i)
+  {
+    const RegionAttribute& region = data.regions[i];
+    std::snprintf(buf, sizeof buf, "%zu %.17g %.17g %.17g %.17g\n", i + first, region.seed.x,
+      region.seed.y, region.attribute, region.maxArea);
+    poly << buf;
+  }
 }
 
 } // namespace
@@ -67,20 +104,22 @@ std::string writeTriangleFiles(const std::string& base, const Result& r, const N
   // the write made or changed is then removed (a user review: empty files
   // were left), through a symbolic link the file it names, not the link (a
   // second review: links were removed, their files left rewritten).
-  const std::string names[3] = { base + ".node", base + ".ele", base + ".edge" };
-  const OutputFile before[3] = { OutputFile(names[0]), OutputFile(names[1]), OutputFile(names[2]) };
-  std::ofstream files[3];
+  const int count = data.writePoly ? 4 : 3;
+  const std::string names[4] = { base + ".node", base + ".ele", base + ".edge", base + ".poly" };
+  const OutputFile before[4] = { OutputFile(names[0]), OutputFile(names[1]), OutputFile(names[2]),
+    OutputFile(names[3]) };
+  std::ofstream files[4];
   const auto failed = [&](int k, int error) {
     for (std::ofstream& file : files)
       file.close();
     bool removed = false;
-    for (const OutputFile& file : before)
-      removed = file.removeIfWritten() || removed;
+    for (int j = 0; j < count; ++j) // base.poly only when written (it may be the input)
+      removed = before[j].removeIfWritten() || removed;
     return "cannot write " + names[k] + ": " +
       (error != 0 ? std::generic_category().message(error) : std::string("failed")) +
       (removed ? " (the partial files are removed)" : "");
   };
-  for (int k = 0; k < 3; ++k)
+  for (int k = 0; k < count; ++k)
   {
     errno = 0;
     files[k].open(names[k]);
@@ -89,7 +128,13 @@ std::string writeTriangleFiles(const std::string& base, const Result& r, const N
   }
   std::ofstream &node = files[0], &ele = files[1], &edge = files[2];
   const MeshEdges edges(r.mesh);
-  const std::vector<int> marker = inputMarkers(r, edges, data.edgeMarkers, 0);
+  const std::vector<int> subsegment = inputSubsegments(r, edges);
+  std::vector<int> marker(edges.size(), 0); // .edge's, Triangle's boundary markers
+  for (std::size_t e = 0; e < edges.size(); ++e)
+    marker[e] = boundaryMarker(subsegment[e] >= 0 && !data.edgeMarkers.empty()
+        ? data.edgeMarkers[static_cast<std::size_t>(subsegment[e])]
+        : 0,
+      edges.onBoundary(e));
   const std::size_t first = data.firstIndex == 0 ? 0 : 1;
   char buf[128];
   node << n << " 2 " << data.attributeCount << " 1\n";
@@ -128,8 +173,10 @@ std::string writeTriangleFiles(const std::string& base, const Result& r, const N
   edge << edges.size() << " 1\n";
   for (std::size_t e = 0; e < edges.size(); ++e)
     edge << e + first << ' ' << edges.lower(e) + first << ' ' << edges.higher(e) + first << ' '
-         << boundaryMarker(marker[e], edges.onBoundary(e)) << '\n';
-  for (int k = 0; k < 3; ++k)
+         << marker[e] << '\n';
+  if (data.writePoly)
+    writePolyFile(files[3], edges, subsegment, marker, data);
+  for (int k = 0; k < count; ++k)
   {
     // A full disk shows when a buffer is flushed, at the latest on closing.
     errno = 0;
@@ -173,9 +220,9 @@ void writeSvg(std::ostream& out, const Result& r)
   };
   out << "<g id=\"mesh\">\n";
   const MeshEdges edges(r.mesh);
-  const std::vector<int> input = inputMarkers(r, edges, {}, 1);
+  const std::vector<int> input = inputSubsegments(r, edges);
   for (std::size_t e = 0; e < edges.size(); ++e)
-    if (!input[e]) // drawn bold below
+    if (input[e] < 0) // drawn bold below
       line(r.mesh.vertices[edges.lower(e)], r.mesh.vertices[edges.higher(e)],
         "stroke=\"#4a6fa5\" stroke-width=\"0.4\"");
   out << "</g>\n<g id=\"discarded\">\n";

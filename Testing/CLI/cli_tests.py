@@ -139,7 +139,38 @@ def read_triangle_files(base):
             mesh_edges.add((min(u, v), max(u, v)))
     check(mesh_edges == set((min(a, b), max(a, b)) for a, b, _ in edges),
           "%s.edge: exactly the edges of the triangles" % os.path.basename(base))
+    # (Not where base.poly is the input, which osm-mesh leaves as it is.)
+    if os.path.exists(base + ".poly") and open(base + ".poly").readline().startswith(
+            "# the mesh's input subsegments"):
+        poly_segments_ok(base, first, triangles, edges)
     return vertices, triangles, edges
+
+
+def poly_segments_ok(base, first, triangles, edges):
+    """base.poly as Triangle's -p writes it: no vertices (base.node's), then
+    the mesh's input subsegments and boundary edges with .edge's markers."""
+    name = os.path.basename(base)
+    with open(base + ".poly") as f:
+        rows = [l.split() for l in f if l.strip() and not l.lstrip().startswith("#")]
+    check(rows[0] == ["0", "2", "0", "1"], "%s.poly: header '0 2 0 1' (vertices in the .node)" % name)
+    s = int(rows[1][0])
+    segments = [(int(r[1]) + 1 - first, int(r[2]) + 1 - first, int(r[3])) for r in rows[2:2 + s]]
+    check([int(r[0]) for r in rows[2:2 + s]] == list(range(first, s + first)),
+          "%s.poly: segments numbered %d..%d" % (name, first, s + first - 1))
+    marker = {(min(a, b), max(a, b)): m for a, b, m in edges}
+    count = {}
+    for tri in triangles:
+        for u, v in ((tri[0], tri[1]), (tri[1], tri[2]), (tri[2], tri[0])):
+            key = (min(u, v), max(u, v))
+            count[key] = count.get(key, 0) + 1
+    listed = set((min(a, b), max(a, b)) for a, b, _ in segments)
+    check(all(marker.get((min(a, b), max(a, b))) == m for a, b, m in segments),
+          "%s.poly: every segment is a mesh edge, with its .edge marker" % name)
+    check(all(k in listed for k, c in count.items() if c == 1),
+          "%s.poly: every boundary edge is a segment" % name)
+    holes = int(rows[2 + s][0])
+    check(len(rows) >= 3 + s + holes, "%s.poly: %d hole lines" % (name, holes))
+    return segments
 
 
 def array_names(path, section):
@@ -425,6 +456,24 @@ def group_formats():
           all(m in (0, 1, 2) for _, _, m in e),
           ".edge: the segments' markers on their subsegments, 40 long with 1, 8 with 2",
           (outer, hole))
+    # The .poly beside them (Triangle's -p; a Triangle user's review: an
+    # interior segment's edges could not be told from the others): the 48
+    # long of segments with their markers, and the file's hole.
+    with open(out("square.poly")) as f:
+        rows = [l.split() for l in f if l.strip() and not l.startswith("#")]
+    segments = [(int(r[1]), int(r[2]), int(r[3])) for r in rows[2:2 + int(rows[1][0])]]
+    lengths = {m: sum(math.dist(v[a - 1], v[b - 1]) for a, b, k in segments if k == m) for m in (1, 2)}
+    check(abs(lengths[1] - 40.0) < 1e-9 and abs(lengths[2] - 8.0) < 1e-9 and
+          len(segments) == sum(1 for _, _, m in e if m) and
+          rows[2 + len(segments)] == ["1"] and rows[3 + len(segments)][1:] == ["5", "5"],
+          ".poly: the segments' subsegments, 40 long with 1, 8 with 2, and the hole at (5, 5)",
+          str(lengths))
+    # It is not written over the input ("osm-mesh square.poly -o square.node").
+    shutil.copy(square, out("self.poly"))
+    p = mesh_ok(out("self.poly"), "-o", out("self.node"))
+    check(read_bytes(out("self.poly")) == read_bytes(square) and
+          "segments are not written to %s, which is the input" % out("self.poly") in p.stderr,
+          "a .node output beside its input .poly keeps it, and says so", p.stderr[-300:])
     _, _, bare_edges = read_triangle_files(out("bare"))
     check(abs(sum(math.dist(v[a - 1], v[b - 1]) for a, b, m in bare_edges if m == 1) - 48.0) < 1e-9,
           "--no-point-data: .edge marks every input subsegment 1 (40 + 8 long)")

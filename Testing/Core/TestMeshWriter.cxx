@@ -161,6 +161,88 @@ TEST(MeshWriter, TriangleBoundaryMarkersWithoutData)
   fs::remove_all(dir);
 }
 
+TEST(MeshWriter, PolyFileListsTheSegmentsToMeshAgain)
+{
+  // Found by a Triangle user's review: without a .poly (Triangle's -p writes
+  // one) an interior segment's edges were marked 0 in .edge like any other,
+  // and could not be told apart or refined again. The box domain: the slit
+  // is inside, the boundary is the box.
+  Pslg p;
+  p.points = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 }, { 0.2, 0.3 }, { 0.7, 0.35 } };
+  p.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 }, { 4, 5 } };
+  Options o;
+  o.domain = Domain::Box;
+  o.keepEdges = true;
+  const Result r = mesh(p, o);
+  ASSERT_TRUE(r.ok) << r.error;
+  const fs::path dir = fs::temp_directory_path() / "osm-writer-poly-test";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string base = (dir / "out").string();
+  NodeData data;
+  data.firstIndex = 0;
+  data.holes = { { 0.1 / 3, -5 } };
+  data.regions = { { { 0.5, 0.5 }, 7.25, 1e-3 }, { { 2, 2 }, -1, -1 } };
+  ASSERT_EQ(writeTriangleFiles(base, r, data), "");
+  const PolyFile poly = readPolyFile(base + ".poly"); // its vertices from out.node
+  ASSERT_TRUE(poly.ok) << poly.error;
+  EXPECT_EQ(poly.firstIndex, 0);
+  ASSERT_EQ(poly.pslg.points.size(), r.mesh.vertices.size());
+  // Its segments: exactly the mesh edges on the input or the boundary.
+  std::map<std::pair<int, int>, int> triangles;
+  for (const Triangle& t : r.mesh.triangles)
+    for (int i = 0; i < 3; ++i)
+      ++triangles[{ std::min(t[i], t[(i + 1) % 3]), std::max(t[i], t[(i + 1) % 3]) }];
+  const Point s0{ 0.2, 0.3 }, s1{ 0.7, 0.35 };
+  auto onInput = [&](const Point& a, const Point& b) {
+    auto side = [](double u, double v) { return u == v && (u == 0 || u == 1); };
+    auto in = [](double u) { return u >= 0 && u <= 1; };
+    return (side(a.x, b.x) && in(a.y) && in(b.y)) || (side(a.y, b.y) && in(a.x) && in(b.x)) ||
+      (orient2d(s0, s1, a) == 0 && orient2d(s0, s1, b) == 0 && std::min(a.x, b.x) >= 0.2 &&
+        std::max(a.x, b.x) <= 0.7);
+  };
+  std::size_t expected = 0;
+  for (const auto& [edge, count] : triangles)
+    expected += count == 1 || onInput(r.mesh.vertices[edge.first], r.mesh.vertices[edge.second]);
+  ASSERT_EQ(poly.pslg.segments.size(), expected);
+  ASSERT_EQ(poly.segmentMarkers.size(), expected);
+  double slit = 0;
+  for (std::size_t k = 0; k < expected; ++k)
+  {
+    const Segment& sg = poly.pslg.segments[k];
+    const auto key = std::make_pair(std::min(sg[0], sg[1]), std::max(sg[0], sg[1]));
+    ASSERT_EQ(triangles.count(key), 1u) << "segment " << k << " is no mesh edge";
+    const bool boundary = triangles[key] == 1;
+    EXPECT_EQ(poly.segmentMarkers[k], boundary ? 1 : 0) << "segment " << k;
+    const Point &a = r.mesh.vertices[key.first], &b = r.mesh.vertices[key.second];
+    if (!boundary && orient2d(s0, s1, a) == 0 && orient2d(s0, s1, b) == 0)
+      slit += std::hypot(b.x - a.x, b.y - a.y);
+  }
+  EXPECT_NEAR(slit, std::hypot(0.5, 0.05), 1e-12); // the slit, whole
+  ASSERT_EQ(poly.pslg.holes.size(), 1u);
+  EXPECT_EQ(poly.pslg.holes[0], data.holes[0]);
+  ASSERT_EQ(poly.pslg.regions.size(), 2u);
+  EXPECT_EQ(poly.pslg.regions[0].seed, data.regions[0].seed);
+  EXPECT_EQ(poly.pslg.regions[0].attribute, 7.25);
+  EXPECT_EQ(poly.pslg.regions[0].maxArea, 1e-3);
+  EXPECT_EQ(poly.pslg.regions[1].maxArea, -1);
+  // Without regions the section is left out, as Triangle does; without
+  // writePoly an old .poly stays as it was.
+  data.regions.clear();
+  ASSERT_EQ(writeTriangleFiles(base, r, data), "");
+  EXPECT_TRUE(readPolyFile(base + ".poly").pslg.regions.empty());
+  {
+    std::ofstream(base + ".poly") << "the input\n";
+  }
+  data.writePoly = false;
+  ASSERT_EQ(writeTriangleFiles(base, r, data), "");
+  std::ifstream kept(base + ".poly");
+  std::string line;
+  std::getline(kept, line);
+  EXPECT_EQ(line, "the input");
+  fs::remove_all(dir);
+}
+
 TEST(MeshWriter, UnwritablePathGivesAReason)
 {
   EXPECT_EQ(writeTriangleFiles("/nonexistent-dir/x", squareWithSlit()),
