@@ -77,7 +77,8 @@ const char* const Usage =
   R"(Usage: osm-mesh INPUT [-o OUTPUT] [--domain auto|enclosed|hull|box]
                 [--min-angle DEG | --gamma G] [--max-edge H] [--no-resolve]
                 [--merge-tolerance D] [--max-steiner N] [--project-xy]
-                [--region-areas] [--gap-ratio] [--no-point-data] [--stats]
+                [--region-areas] [--no-holes] [--gap-ratio] [--no-point-data]
+                [--stats]
                 [--svg FILE]
                 [--help] [--version]
 
@@ -129,6 +130,8 @@ INPUT                  Triangle .poly (holes honoured) or .node file, or
   --region-areas       apply the maximum areas of a .poly's region lines to
                        their regions, as Triangle's -a (default: ignored,
                        with a warning)
+  --no-holes           ignore the input's hole points, as Triangle's -O
+                       (default: every region holding one is removed)
   --gap-ratio          refine the overlay to the paper's gap-ratio quality,
                        the premise of its proof of the bound, at once (up to
                        12.5 times the triangles on real inputs; default: the
@@ -315,6 +318,7 @@ struct Arguments
   bool resolve = true;
   bool projectXY = false;
   bool regionAreas = false;
+  bool holes = true;
   bool gapRatio = false;
   bool pointData = true;
   double mergeTolerance = 0.0;
@@ -607,6 +611,11 @@ bool ParseArguments(int argc, char* argv[], Arguments& args, OsmOutputWindow* wi
     {
       noValue();
       args.regionAreas = true;
+    }
+    else if (arg == "--no-holes")
+    {
+      noValue();
+      args.holes = false;
     }
     else if (arg == "--gap-ratio")
     {
@@ -1350,6 +1359,7 @@ int Run(int argc, char* argv[], OsmOutputWindow* window)
   mesher->SetProjectToXYPlane(args.projectXY);
   mesher->SetApplyRegionAreas(args.regionAreas);
   mesher->SetGapRatioOverlay(args.gapRatio);
+  mesher->SetUseInputHolePoints(args.holes);
   mesher->SetInterpolatePointData(args.pointData);
   mesher->SetPassCellData(args.pointData); // polygons' data, .edge markers
   mesher->SetMaximumSteinerPoints(static_cast<vtkIdType>(args.maxSteiner));

@@ -444,6 +444,10 @@ def group_formats():
           "--no-point-data: no vertex attribute, marker 1 on the boundary's vertices, 0 inside",
           str((rows[0], wrong[:3])))
     check(abs(total_area(v, t) - 96.0) < 1e-9, ".node/.ele: area 96 (the hole is left out)")
+    # --no-holes, Triangle's -O (a Triangle user's review: no way to ignore them).
+    mesh_ok(square, "-o", out("noholes.node"), "--no-holes")
+    nv, nt, _ = read_triangle_files(out("noholes"))
+    check(abs(total_area(nv, nt) - 100.0) < 1e-9, "--no-holes: area 100, the hole filled")
     check(all(area(v, tri) > 0 for tri in t), ".ele: every triangle counter-clockwise")
     inside_hole = [tri for tri in t if
                    4 < sum(v[i - 1][0] for i in tri) / 3 < 6 and 4 < sum(v[i - 1][1] for i in tri) / 3 < 6]
