@@ -82,7 +82,19 @@ Conversion toInteger(std::string_view token, long long& value)
   const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
   if (ec == std::errc::result_out_of_range)
     return Conversion::OutOfRange;
-  return ec == std::errc() && end == t.data() + t.size() ? Conversion::Ok : Conversion::NotNumber;
+  if (ec == std::errc() && end == t.data() + t.size())
+    return Conversion::Ok;
+  // A whole number written as a real ("1.0", "2.000000000000000000e+00", as
+  // numpy's savetxt writes every column): Triangle's strtol reads its integer
+  // part (a review: such files meshed in Triangle and were refused here).
+  double real = 0;
+  const auto [realEnd, realEc] = std::from_chars(t.data(), t.data() + t.size(), real);
+  if (realEc != std::errc() || realEnd != t.data() + t.size() || real != std::floor(real))
+    return Conversion::NotNumber;
+  if (!(std::fabs(real) < 9.2e18))
+    return Conversion::OutOfRange;
+  value = static_cast<long long>(real);
+  return Conversion::Ok;
 }
 
 Conversion toReal(std::string_view token, double& value)

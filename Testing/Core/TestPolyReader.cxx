@@ -126,6 +126,19 @@ TEST(PolyReader, ClassicMacLineEndsAreLineEnds)
   EXPECT_EQ(bad.error.rfind("t.poly:3: ", 0), 0u) << bad.error;
 }
 
+TEST(PolyReader, WholeNumbersWrittenAsRealsAreIntegers)
+{
+  // Found by a Triangle user's review: numpy's savetxt writes every column
+  // as a real ("1.000000000000000000e+00"); Triangle reads such indices and
+  // counts, and they were refused here.
+  const PolyFile f = poly("3.0 2 0 0\n1.0 0 0\n2.000000000000000000e+00 1 0\n3 0 1\n"
+                          "1 0.0\n1.000000000000000000e+00 1.0 3e0\n0.0\n");
+  ASSERT_TRUE(f.ok) << f.error;
+  ASSERT_EQ(f.pslg.points.size(), 3u);
+  ASSERT_EQ(f.pslg.segments.size(), 1u);
+  EXPECT_EQ(f.pslg.segments[0], (Segment{ 0, 2 }));
+}
+
 TEST(PolyReader, ZeroBasedNumbering)
 {
   const PolyFile f = poly("3 2 0 0\n0 5 6\n1 7 8\n2 9 10\n2 0\n0 0 2\n1 2 1\n0\n");
@@ -522,8 +535,12 @@ TEST(PolyReaderErrors, TextWhereANumberBelongsIsQuoted)
   EXPECT_TRUE(failsAt(poly("3 2 0 0\n1 0 0\n2 1,5 0\n3 0 1\n"), "t.poly:3", "'1,5'"));
   EXPECT_TRUE(failsAt(poly("3 2 0 0\n1 0 0\nx2 1 0\n3 0 1\n"), "t.poly:3",
     "expected an integer for the vertex index, found 'x2'"));
-  EXPECT_TRUE(failsAt(poly("3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n1 0\n1 2.0 3\n"), "t.poly:6",
-    "expected an integer for the first endpoint of segment 1, found '2.0'"));
+  EXPECT_TRUE(failsAt(poly("3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n1 0\n1 2.5 3\n"), "t.poly:6",
+    "expected an integer for the first endpoint of segment 1, found '2.5'"));
+  EXPECT_TRUE(failsAt(poly("3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n1 0\n1 nan 3\n"), "t.poly:6",
+    "expected an integer for the first endpoint of segment 1, found 'nan'"));
+  EXPECT_TRUE(failsAt(poly("3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n1 0\n1 1e300 3\n"), "t.poly:6",
+    "first endpoint of segment 1 is out of range: '1e300'"));
   EXPECT_TRUE(failsAt(poly("3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n1 0\n1 0x1 3\n"), "t.poly:6", "'0x1'"));
   EXPECT_TRUE(failsAt(poly("2 2 0 1\n1 0 0 a\n2 1 0\n"), "t.poly:2",
     "expected an integer for the boundary marker of vertex 1, found 'a'"));
