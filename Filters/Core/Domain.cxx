@@ -376,6 +376,24 @@ int seedSide(const Array<Point>& P, const Array<Triangle>& tris, const KnownAdja
   return -1;
 }
 
+/// Whether q, found in the closure of triangle t, lies within rounding on a
+/// side of t on the domain's boundary: no remaining triangle beyond it.
+bool onBoundary(const Array<Point>& P, const Array<Triangle>& tris, const KnownAdjacency& a, int t,
+  const Point& q, const Array<int>& component, const Array<char>& removed)
+{
+  for (int i = 0; i < 3; ++i)
+  {
+    const int u = a.nbr[t][i];
+    if (u >= 0 && !removed[component[u]])
+      continue;
+    const Point &b = P[tris[t][(i + 1) % 3]], &c = P[tris[t][(i + 2) % 3]];
+    const double length = std::hypot(c.x - b.x, c.y - b.y);
+    if (onLineWithinRounding(orient2d(b, c, q), q, length, length))
+      return true;
+  }
+  return false;
+}
+
 } // namespace
 
 Carving carveDomain(const Array<Point>& P, const Array<Triangle>& tris,
@@ -425,11 +443,15 @@ Carving carveDomain(const Array<Point>& P, const Array<Triangle>& tris,
     {
       int t = locate(holes[h]);
       if (t >= 0)
+      {
         if (const int side = sideOf(t, holes[h]); side >= 0)
         {
           out.seedsOnSegments.push_back(static_cast<int>(h));
           t = side;
         }
+        else if (onBoundary(P, tris, a, t, holes[h], component, removed))
+          out.seedsOnBoundary.push_back(static_cast<int>(h));
+      }
       target[h] = t;
     }
     // A second seed in a region is one too many, as one outside the domain.

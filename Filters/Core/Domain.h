@@ -41,6 +41,9 @@ struct Carving
   /// Seeds on the domain's boundary or on a dangling segment are not listed:
   /// only one region is there to take.
   Array<int> seedsOnSegments;
+  /// Hole seeds on the domain's boundary (within rounding): they remove the
+  /// region inside, the only one there.
+  Array<int> seedsOnBoundary;
   /// Per region seed (carveDomain's regionSeeds): its region, or -1 if it lies
   /// outside the remaining triangles.
   Array<int> seedRegion;

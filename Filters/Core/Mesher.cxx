@@ -1122,6 +1122,14 @@ void Mesher::meshRounds(Work& w)
         formatPoint(input.holes[carve.seedsOnSegments.front()], options.pointFormat) +
         ": the region the direction +x from it enters (above, where a segment runs along +x) "
         "was removed; move the point into the hole to choose");
+    // (A review: a seed on the outer boundary emptied the mesh, and only a
+    // seed on a segment inside was said to be on one.)
+    if (!carve.seedsOnBoundary.empty())
+      res.warnings.push_back(std::to_string(carve.seedsOnBoundary.size()) +
+        " hole point(s) lie on the domain's boundary, e.g. hole " +
+        std::to_string(carve.seedsOnBoundary.front()) + " at " +
+        formatPoint(input.holes[carve.seedsOnBoundary.front()], options.pointFormat) +
+        ": the region inside it was removed; move the point out of the domain to keep it");
     if (options.domain == Domain::Auto && domain == Domain::Hull && st.crossingsSplit == 0)
       if (std::string open = openOutlineWarning(w, input, clean.pointOf, options.pointFormat);
           !open.empty())

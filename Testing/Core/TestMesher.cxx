@@ -1361,6 +1361,22 @@ TEST(Mesher, HoleSeedOnASegmentIsSaid)
   }
   p.holes = { { 0.5, 0.5 } };
   EXPECT_FALSE(mentions(meshAndValidate(p, "seed inside").warnings, "lie on a segment"));
+  EXPECT_FALSE(mentions(meshAndValidate(p, "seed inside").warnings, "boundary"));
+  // On the domain's boundary, where one region lies (a Triangle user's review:
+  // the mesh was emptied with no word of the seed's place): the inner square's
+  // removed too, with the frame's seed.
+  for (const Point& seed : { Point{ 0.5, 0 }, Point{ 1, 0.5 }, Point{ 0, 0 } })
+  {
+    p.holes = { seed, { 0.5, 0.5 } };
+    const Result r = mesh(p);
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_TRUE(r.mesh.triangles.empty()) << seed.x << " " << seed.y;
+    EXPECT_TRUE(mentions(r.warnings,
+      "1 hole point(s) lie on the domain's boundary, e.g. hole 0 at (" + formatNumber(seed.x) +
+        ", " + formatNumber(seed.y) + "): the region inside it was removed"))
+      << seed.x << " " << seed.y;
+    EXPECT_FALSE(mentions(r.warnings, "lie on a segment")) << seed.x << " " << seed.y;
+  }
   // Region seeds likewise (found by a review of region areas: no warning).
   p.holes.clear();
   for (const Point& seed : { Point{ 0.25, 0.5 }, Point{ 0.25, 0.25 }, Point{ 0.5, 0.25 } })
