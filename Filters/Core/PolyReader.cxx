@@ -85,8 +85,9 @@ Conversion toInteger(std::string_view token, long long& value)
   if (ec == std::errc() && end == t.data() + t.size())
     return Conversion::Ok;
   // A whole number written as a real ("1.0", "2.000000000000000000e+00", as
-  // numpy's savetxt writes every column): Triangle's strtol reads its integer
-  // part (a review: such files meshed in Triangle and were refused here).
+  // numpy's savetxt writes every column): its value (a review: such files
+  // meshed in Triangle and were refused here; Triangle's strtol reads the
+  // digits before the point, 1 for 1.0e+01, which no such file means).
   double real = 0;
   const auto [realEnd, realEc] = std::from_chars(t.data(), t.data() + t.size(), real);
   if (realEc != std::errc() || realEnd != t.data() + t.size() || real != std::floor(real))
@@ -123,10 +124,6 @@ public:
     // A UTF-8 byte order mark written by some editors is not part of the data.
     if (text_.substr(0, 3) == "\xEF\xBB\xBF")
       text_.remove_prefix(3);
-    // Classic Mac OS ended lines with CR alone (a review: such a file read as
-    // one line, "4 vertices announced, but only 0 lines follow").
-    if (text_.find('\n') == std::string_view::npos && text_.find('\r') != std::string_view::npos)
-      end_ = '\r';
   }
 
   /// Advances to the next line holding data; false at the end of the text.
@@ -134,10 +131,10 @@ public:
   {
     while (pos_ < text_.size())
     {
-      const std::size_t end = std::min(text_.find(end_, pos_), text_.size());
+      const std::size_t end = lineEnd(pos_);
       ++line_;
       split(text_.substr(pos_, end - pos_));
-      pos_ = end + 1;
+      pos_ = end + (text_.compare(end, 2, "\r\n") == 0 ? 2 : 1);
       if (!tokens_.empty())
         return true;
     }
@@ -156,14 +153,27 @@ public:
   {
     if (pos_ >= text_.size())
       return 0;
-    const std::string_view rest = text_.substr(pos_);
-    const auto newlines = static_cast<std::size_t>(std::count(rest.begin(), rest.end(), end_));
-    return rest.back() == end_ ? newlines : newlines + 1;
+    std::size_t lines = 0;
+    for (std::size_t at = pos_; at < text_.size(); ++lines)
+    {
+      const std::size_t end = lineEnd(at);
+      at = end + (text_.compare(end, 2, "\r\n") == 0 ? 2 : 1);
+    }
+    return lines;
   }
 
   std::size_t bytesLeft() const { return pos_ >= text_.size() ? 0 : text_.size() - pos_; }
 
 private:
+  /// Where the line from 'from' ends: at LF, CRLF or a CR alone (classic Mac
+  /// OS; a review: such a file read as one line, "4 vertices announced, but
+  /// only 0 lines follow", and one mixing CR with CRLF misread), else at the
+  /// end of the text.
+  std::size_t lineEnd(std::size_t from) const
+  {
+    return std::min(text_.find_first_of("\r\n", from), text_.size());
+  }
+
   void split(std::string_view s)
   {
     tokens_.clear();
@@ -183,7 +193,6 @@ private:
   }
 
   std::string_view text_;
-  char end_ = '\n'; ///< what ends a line
   std::size_t pos_ = 0;
   std::size_t line_ = 0;
   Tokens tokens_;

@@ -124,13 +124,27 @@ TEST(PolyReader, ClassicMacLineEndsAreLineEnds)
   const PolyFile bad = poly("4 2 0 0\r1 0 0\r2 1 x\r3 1 1\r4 0 1\r0 0\r");
   ASSERT_FALSE(bad.ok);
   EXPECT_EQ(bad.error.rfind("t.poly:3: ", 0), 0u) << bad.error;
+  // CR alone with a final LF, and CR mixed with CRLF and LF (a review: both
+  // refused, the second as "vertex index 4 is out of sequence").
+  for (const char* text :
+    { "4 2 0 0\r1 0 0\r2 1 0\r3 1 1\r4 0 1\r4 0\r1 1 2\r2 2 3\r3 3 4\r4 4 1\r0\n",
+      "4 2 0 0\r\n1 0 0\r2 1 0\n3 1 1\r\r\n4 0 1\r4 0\n1 1 2\r2 2 3\r\n3 3 4\r4 4 1\r\n0" })
+  {
+    const PolyFile mixed = poly(text);
+    ASSERT_TRUE(mixed.ok) << mixed.error;
+    EXPECT_EQ(mixed.pslg.points.size(), 4u);
+    EXPECT_EQ(mixed.pslg.segments.size(), 4u);
+  }
+  const PolyFile late = poly("4 2 0 0\r\n1 0 0\r2 1 0\n3 1 q\r\n4 0 1\n");
+  EXPECT_EQ(late.error.rfind("t.poly:4: ", 0), 0u) << late.error;
 }
 
 TEST(PolyReader, WholeNumbersWrittenAsRealsAreIntegers)
 {
   // Found by a Triangle user's review: numpy's savetxt writes every column
   // as a real ("1.000000000000000000e+00"); Triangle reads such indices and
-  // counts, and they were refused here.
+  // counts, and they were refused here. (Triangle's strtol reads the digits
+  // before the point: 1.0e+01 as 1; here its value, 10, as such files mean.)
   const PolyFile f = poly("3.0 2 0 0\n1.0 0 0\n2.000000000000000000e+00 1 0\n3 0 1\n"
                           "1 0.0\n1.000000000000000000e+00 1.0 3e0\n0.0\n");
   ASSERT_TRUE(f.ok) << f.error;
