@@ -38,6 +38,7 @@
 #include "Clean.h" // formatNumber
 #include "MeshWriter.h"
 #include "OutputFile.h"
+#include "OverlayStitchSeeds.h"
 #include "StagedOutput.h"
 
 #include <algorithm>
@@ -457,24 +458,52 @@ bool ListsNoVertices(const std::string& path)
   {
     return false;
   }
-  std::ifstream file(path);
-  std::string line;
-  for (bool first = true; std::getline(file, line); first = false)
+  // The first token outside comments, lines ended as the reader ends them
+  // (LF, CRLF or CR alone), read as the reader reads a count ("0", "0.0",
+  // ".0": a review found the last two, and CR-only files, missed here, and
+  // their .node overwritten).
+  std::ifstream file(path, std::ios::binary);
+  char mark[3] = {};
+  if (!file.read(mark, 3) || std::string(mark, 3) != "\xEF\xBB\xBF")
   {
-    if (first && line.compare(0, 3, "\xEF\xBB\xBF") == 0)
+    file.clear(); // a UTF-8 byte order mark, which the reader skips too
+    file.seekg(0);
+  }
+  std::string token;
+  bool comment = false;
+  for (char c; file.get(c);)
+  {
+    if (c == '\n' || c == '\r')
     {
-      line.erase(0, 3); // a UTF-8 byte order mark, which the reader skips too
+      comment = false;
     }
-    const std::size_t start = line.find_first_not_of(" \t\r");
-    if (start == std::string::npos || line[start] == '#')
+    if (comment ||
+      (token.empty() &&
+        (c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f')))
     {
       continue;
     }
-    char* end = nullptr;
-    const long long count = std::strtoll(line.c_str() + start, &end, 10);
-    return end != line.c_str() + start && count == 0;
+    if (c == '#')
+    {
+      comment = token.empty();
+      if (comment)
+      {
+        continue;
+      }
+    }
+    if (c == '#' || c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f')
+    {
+      break;
+    }
+    token += c;
   }
-  return false;
+  if (token.empty() || token.find_first_of("xX") != std::string::npos)
+  {
+    return false;
+  }
+  char* end = nullptr;
+  const double count = std::strtod(token.c_str(), &end);
+  return end == token.c_str() + token.size() && count == 0;
 }
 
 /// Reads the command line into args; false after --help or --version. Past
@@ -1155,12 +1184,19 @@ std::string Removed(bool removed, bool oldKept, const std::string& more = "")
 }
 
 /// The input's hole and region seeds (its HolePoints and RegionAttributes
-/// field data, as the .poly reader makes them), for the output .poly.
-void SeedsOf(vtkPointSet* input, osm::NodeData& data)
+/// field data, as the .poly reader makes them) as the filter takes them,
+/// moved with the points (SeedReferencePoints), for the output .poly; no
+/// holes when they were not used (a review: --no-holes, or a 4-component
+/// array the filter ignores, wrote holes that meshing the .poly again used).
+void SeedsOf(vtkPointSet* input, bool useHoles, osm::NodeData& data)
 {
-  vtkFieldData* field = input ? input->GetFieldData() : nullptr;
-  vtkDataArray* holes = field ? field->GetArray("HolePoints") : nullptr;
-  if (holes && holes->GetNumberOfComponents() >= 2)
+  std::string note;
+  vtkSmartPointer<vtkDataObject> moved =
+    input ? OverlayStitchSeedsFollowingPoints(input, note) : nullptr;
+  vtkDataObject* seeds = moved ? moved.GetPointer() : input;
+  vtkFieldData* field = seeds ? seeds->GetFieldData() : nullptr;
+  vtkDataArray* holes = field && useHoles ? field->GetArray("HolePoints") : nullptr;
+  if (holes && (holes->GetNumberOfComponents() == 2 || holes->GetNumberOfComponents() == 3))
   {
     for (vtkIdType i = 0; i < holes->GetNumberOfTuples(); ++i)
     {
@@ -1180,7 +1216,7 @@ void SeedsOf(vtkPointSet* input, osm::NodeData& data)
 }
 
 void WriteMesh(const std::string& path, vtkPolyData* mesh, vtkPolyData* edges, vtkPointSet* input,
-  bool polyIsInput, OsmOutputWindow* window)
+  const Arguments& args, OsmOutputWindow* window)
 {
   const std::string ext = Extension(path);
   int ok = 1;
@@ -1194,9 +1230,9 @@ void WriteMesh(const std::string& path, vtkPolyData* mesh, vtkPolyData* edges, v
       ToTriangleNumbering(result, data, mesh, input);
     }
     WarnNotInNodeFiles(mesh, data, window);
-    SeedsOf(input, data);
-    data.writePoly = !polyIsInput;
-    if (polyIsInput)
+    SeedsOf(input, args.holes, data);
+    data.writePoly = !args.polyIsInput;
+    if (args.polyIsInput)
     {
       window->DisplayWarningText(("the mesh's segments are not written to " + base +
         ".poly, which is the input: name the output otherwise to have them (as Triangle "
@@ -1401,7 +1437,7 @@ int Run(int argc, char* argv[], OsmOutputWindow* window)
   if (!args.output.empty())
   {
     WriteMesh(args.output, mesh, edges, vtkPointSet::SafeDownCast(reader->GetOutputDataObject(0)),
-      args.polyIsInput, window);
+      args, window);
   }
   if (!args.svg.empty())
   {
