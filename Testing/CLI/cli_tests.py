@@ -448,6 +448,10 @@ def group_formats():
     mesh_ok(square, "-o", out("noholes.node"), "--no-holes")
     nv, nt, _ = read_triangle_files(out("noholes"))
     check(abs(total_area(nv, nt) - 100.0) < 1e-9, "--no-holes: area 100, the hole filled")
+    with open(out("noholes.poly")) as f:
+        rows = [l.split() for l in f if l.strip() and not l.startswith("#")]
+    check(rows[2 + int(rows[1][0])] == ["0"],
+          "--no-holes: the .poly lists no hole, so meshing it again fills it too (a review)")
     check(all(area(v, tri) > 0 for tri in t), ".ele: every triangle counter-clockwise")
     inside_hole = [tri for tri in t if
                    4 < sum(v[i - 1][0] for i in tri) / 3 < 6 and 4 < sum(v[i - 1][1] for i in tri) / 3 < 6]
@@ -1166,6 +1170,19 @@ def group_errors():
     expect_error([poly, "-o", points], 2, ["points.node", "the .node file the input reads its vertices from"],
                  "-o naming the .node file beside a .poly input")
     check(read_bytes(points) == before, "the .node file beside the input is left as it was")
+    # Its zero written as the reader reads it, with CR line ends too (a review:
+    # '.0' and a CR-only file had their .node overwritten).
+    with open(data("split_pslg.poly"), "rb") as f:
+        body = f.read()
+    for name, text in (("dot-zero", re.sub(rb"(?m)^0 ", b".0 ", body, count=1)),
+                       ("cr-only", body.replace(b"\r\n", b"\n").replace(b"\n", b"\r"))):
+        shutil.copy(points, out(name + ".node"))
+        with open(out(name + ".poly"), "wb") as f:
+            f.write(text)
+        expect_error([out(name + ".poly"), "-o", out(name + ".node")], 2,
+                     ["the .node file the input reads its vertices from"],
+                     "-o naming the .node beside a %s .poly" % name)
+        check(read_bytes(out(name + ".node")) == before, "the %s .poly's .node is kept" % name)
     # A .poly that lists its vertices, after a UTF-8 byte order mark, reads
     # no .node: one of the same name is an output like any other (a user
     # review: it was refused as the input's vertices).
