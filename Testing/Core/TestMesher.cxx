@@ -1377,6 +1377,33 @@ TEST(Mesher, HoleSeedOnASegmentIsSaid)
       << seed.x << " " << seed.y;
     EXPECT_FALSE(mentions(r.warnings, "lie on a segment")) << seed.x << " " << seed.y;
   }
+  // At a corner of the boundary whose triangle found there touches the
+  // boundary only at that corner (a review: no warning), in a pentagon with
+  // points inside near its bottom.
+  Pslg fan;
+  fan.points = { { 0, 0 }, { 5, 0 }, { 10, 0 }, { 10, 10 }, { 0, 10 }, { 4.5, 0.3 }, { 5, 0.3 },
+    { 5.5, 0.3 }, { 5, 0.1 } };
+  fan.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 4 }, { 4, 0 } };
+  for (const Point& seed : { Point{ 5, 0 }, Point{ 0, 10 }, Point{ 10, 0 } })
+    for (const std::size_t points : { std::size_t(5), fan.points.size() })
+    {
+      Pslg q = fan;
+      q.points.resize(points);
+      q.holes = { seed };
+      const Result r = mesh(q);
+      ASSERT_TRUE(r.ok) << r.error;
+      EXPECT_TRUE(mentions(r.warnings, "1 hole point(s) lie on the domain's boundary"))
+        << seed.x << " " << seed.y << ", " << points << " points";
+    }
+  // One too many is said to be so, not also to have removed its region.
+  Pslg two = square();
+  two.holes = { { 0.5, 0.5 }, { 0, 0.5 } };
+  const Result r = mesh(two);
+  ASSERT_TRUE(r.ok) << r.error;
+  EXPECT_TRUE(mentions(r.warnings,
+    "1 hole point(s) lie outside the meshed domain or in a region "
+    "already removed, e.g. hole 1"));
+  EXPECT_FALSE(mentions(r.warnings, "boundary"));
   // Region seeds likewise (found by a review of region areas: no warning).
   p.holes.clear();
   for (const Point& seed : { Point{ 0.25, 0.5 }, Point{ 0.25, 0.25 }, Point{ 0.5, 0.25 } })
