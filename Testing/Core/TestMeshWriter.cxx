@@ -22,6 +22,29 @@ Result squareWithSlit()
   p.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 }, { 4, 5 } };
   return mesh(p);
 }
+
+/// The same in the box domain, with its edges: the mesh's boundary is the
+/// padded box, and the square's sides and the slit lie inside.
+Result squareWithSlitInABox()
+{
+  Pslg p;
+  p.points = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 }, { 0.2, 0.3 }, { 0.7, 0.35 } };
+  p.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 }, { 4, 5 } };
+  Options o;
+  o.domain = Domain::Box;
+  o.keepEdges = true;
+  return mesh(p, o);
+}
+
+/// Per edge of the mesh (lower vertex, higher), how many triangles have it.
+std::map<std::pair<int, int>, int> trianglesPerEdge(const Result& r)
+{
+  std::map<std::pair<int, int>, int> triangles;
+  for (const Triangle& t : r.mesh.triangles)
+    for (int i = 0; i < 3; ++i)
+      ++triangles[{ std::min(t[i], t[(i + 1) % 3]), std::max(t[i], t[(i + 1) % 3]) }];
+  return triangles;
+}
 } // namespace
 
 TEST(MeshWriter, TriangleFilesReadBackExactly)
@@ -99,23 +122,14 @@ TEST(MeshWriter, VertexAttributesAndMarkersReadBackExactly)
 TEST(MeshWriter, TriangleBoundaryMarkersWithoutData)
 {
   // The box domain: the mesh's boundary is the padded box, not a segment.
-  Pslg p;
-  p.points = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 }, { 0.2, 0.3 }, { 0.7, 0.35 } };
-  p.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 }, { 4, 5 } };
-  Options o;
-  o.domain = Domain::Box;
-  o.keepEdges = true;
-  const Result r = mesh(p, o);
+  const Result r = squareWithSlitInABox();
   ASSERT_TRUE(r.ok) << r.error;
   const fs::path dir = fs::temp_directory_path() / "osm-writer-markers-test";
   fs::create_directories(dir);
   const std::string base = (dir / "out").string();
   ASSERT_EQ(writeTriangleFiles(base, r), "");
   // The boundary, independently: edges of one triangle.
-  std::map<std::pair<int, int>, int> triangles;
-  for (const Triangle& t : r.mesh.triangles)
-    for (int i = 0; i < 3; ++i)
-      ++triangles[{ std::min(t[i], t[(i + 1) % 3]), std::max(t[i], t[(i + 1) % 3]) }];
+  std::map<std::pair<int, int>, int> triangles = trianglesPerEdge(r);
   std::vector<int> boundaryVertex(r.mesh.vertices.size(), 0);
   for (const auto& [edge, count] : triangles)
     if (count == 1)
@@ -167,13 +181,7 @@ TEST(MeshWriter, PolyFileListsTheSegmentsToMeshAgain)
   // one) an interior segment's edges were marked 0 in .edge like any other,
   // and could not be told apart or refined again. The box domain: the slit
   // is inside, the boundary is the box.
-  Pslg p;
-  p.points = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 }, { 0.2, 0.3 }, { 0.7, 0.35 } };
-  p.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 }, { 4, 5 } };
-  Options o;
-  o.domain = Domain::Box;
-  o.keepEdges = true;
-  const Result r = mesh(p, o);
+  const Result r = squareWithSlitInABox();
   ASSERT_TRUE(r.ok) << r.error;
   const fs::path dir = fs::temp_directory_path() / "osm-writer-poly-test";
   fs::remove_all(dir);
@@ -189,10 +197,7 @@ TEST(MeshWriter, PolyFileListsTheSegmentsToMeshAgain)
   EXPECT_EQ(poly.firstIndex, 0);
   ASSERT_EQ(poly.pslg.points.size(), r.mesh.vertices.size());
   // Its segments: exactly the mesh edges on the input or the boundary.
-  std::map<std::pair<int, int>, int> triangles;
-  for (const Triangle& t : r.mesh.triangles)
-    for (int i = 0; i < 3; ++i)
-      ++triangles[{ std::min(t[i], t[(i + 1) % 3]), std::max(t[i], t[(i + 1) % 3]) }];
+  std::map<std::pair<int, int>, int> triangles = trianglesPerEdge(r);
   const Point s0{ 0.2, 0.3 }, s1{ 0.7, 0.35 };
   auto onInput = [&](const Point& a, const Point& b) {
     auto side = [](double u, double v) { return u == v && (u == 0 || u == 1); };
