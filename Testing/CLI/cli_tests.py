@@ -452,6 +452,22 @@ def group_formats():
         rows = [l.split() for l in f if l.strip() and not l.startswith("#")]
     check(rows[2 + int(rows[1][0])] == ["0"],
           "--no-holes: the .poly lists no hole, so meshing it again fills it too (a review)")
+    # Seeds moved with the points (SeedReferencePoints: square_hole scaled by
+    # 2 after reading) are written where the filter used them (a review: the
+    # .poly kept (5, 5), and meshing it again removed the ring).
+    with open(out("moved.vtk"), "w") as f:
+        f.write("# vtk DataFile Version 3.0\nscaled\nASCII\nDATASET POLYDATA\n"
+                "FIELD FieldData 2\nHolePoints 2 1 double\n5 5\n"
+                "SeedReferencePoints 4 5 double\n0 0 0 0\n1 10 0 0\n2 10 10 0\n4 4 4 0\n8 0 0 0\n"
+                "POINTS 8 double\n0 0 0  20 0 0  20 20 0  0 20 0\n8 8 0  12 8 0  12 12 0  8 12 0\n"
+                "LINES 8 24\n2 0 1\n2 1 2\n2 2 3\n2 3 0\n2 4 5\n2 5 6\n2 6 7\n2 7 4\n")
+    mesh_ok(out("moved.vtk"), "-o", out("moved.node"))
+    mesh_ok(out("moved.poly"), "-o", out("moved-again.node"))
+    mv, mt, _ = read_triangle_files(out("moved"))
+    av, at, _ = read_triangle_files(out("moved-again"))
+    check(abs(total_area(mv, mt) - 384.0) < 1e-9 and abs(total_area(av, at) - 384.0) < 1e-9,
+          "seeds moved with the points: the written .poly meshes the same 384 again",
+          "%g, %g" % (total_area(mv, mt), total_area(av, at)))
     check(all(area(v, tri) > 0 for tri in t), ".ele: every triangle counter-clockwise")
     inside_hole = [tri for tri in t if
                    4 < sum(v[i - 1][0] for i in tri) / 3 < 6 and 4 < sum(v[i - 1][1] for i in tri) / 3 < 6]
