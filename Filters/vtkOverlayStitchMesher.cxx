@@ -576,6 +576,12 @@ std::string ReadRegionAttributes(vtkPolyData* input, const osm::PlaneMap& map, o
     return "The input's field data array RegionAttributes has " + std::to_string(components) +
       " components (4 expected: x, y, attribute, maximum area): ignored.";
   }
+  if (!map.seedXYDefined())
+  {
+    return "The input's points lie in a plane that contains the z direction, where the (x, y) "
+           "seeds of its field data RegionAttributes name no single point: they are ignored "
+           "(no region attribute or maximum area is applied).";
+  }
   for (vtkIdType i = 0; i < regions->GetNumberOfTuples(); ++i)
   {
     double tuple[4] = { 0.0, 0.0, 0.0, -1.0 };
@@ -1387,9 +1393,11 @@ std::optional<int> vtkOverlayStitchMesher::MeshRun::ReadHoleSeeds()
   vtkFieldData* field = this->Input->GetFieldData();
   vtkDataArray* fieldHoles =
     self->GetUseInputHolePoints() ? field->GetArray("HolePoints") : nullptr;
+  // (Region seeds there are left out with a warning (ReadRegionAttributes):
+  // they label and size regions, and a .poly's region line refused every
+  // mesh of its file turned upright, a review.)
   const char* xySeeds = !self->HolePoints.empty()            ? "the HolePoints property"
     : fieldHoles && fieldHoles->GetNumberOfComponents() == 2 ? "the input's 2-component HolePoints"
-    : field->GetArray("RegionAttributes")                    ? "the input's RegionAttributes"
                                                              : nullptr;
   if (xySeeds && !this->Map.seedXYDefined())
   {

@@ -720,6 +720,15 @@ void CheckSeedsInAVerticalPlane(Harness& h)
   const double area = osmtest::TotalArea(mesh);
   Check(h.NoError() && std::fabs(area - 96.0) < 1e-9,
     "vertical plane: an (x, y, z) field data seed cuts its hole (area " + Num(area) + ", 96)");
+  // Region seeds, (x, y) only, are left out with a warning; the mesh is made
+  // (a review: a .poly with a region line turned upright was refused).
+  AddFieldRegions(xz, 4, { 5, 0.3, 7, 0.5 });
+  mesh = h.Run(xz, "RegionAttributes, input in the plane y = 0.3");
+  const double withRegions = osmtest::TotalArea(mesh);
+  Check(h.NoError() && std::fabs(withRegions - 96.0) < 1e-9 &&
+      h.Messages->HasWarning({ "RegionAttributes name no single point", "ignored" }),
+    "vertical plane: (x, y) region seeds are ignored with a warning, the mesh made (area " +
+      Num(withRegions) + ", 96)");
 }
 
 int TestNumbering()
