@@ -9,6 +9,7 @@
 #include "vtkNew.h"
 #include "vtkPolyData.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -178,6 +179,35 @@ void OverlayStitchAddSeedReference(vtkPolyData* output)
   output->GetFieldData()->AddArray(reference);
 }
 
+/// Whether every recorded reference point is still a point of data, under
+/// any id: the points were renumbered, merged, clipped or added to, but the
+/// seeds lie where they were written.
+bool RecordedPointsStillThere(vtkDataSet* data, vtkDataArray* reference)
+{
+  std::array<bool, kReferencePoints> found{};
+  Xyz p;
+  for (vtkIdType i = 0; i < data->GetNumberOfPoints(); ++i)
+  {
+    data->GetPoint(i, p.data());
+    for (int k = 0; k < kReferencePoints; ++k)
+    {
+      found[k] = found[k] ||
+        p ==
+          Xyz{ reference->GetComponent(k, 1), reference->GetComponent(k, 2),
+            reference->GetComponent(k, 3) };
+    }
+  }
+  return std::all_of(found.begin(), found.end(), [](bool f) { return f; });
+}
+
+/// What the seeds do when the points were renumbered (their number changed,
+/// or the recorded ids name other points) and the recorded points are gone.
+const char* const kRenumberedAndMoved =
+  "the points have been renumbered, merged or added to (a Clean, an Append) and moved (a "
+  "Transform) since the hole and region seeds of its field data were written, so that the seeds "
+  "cannot follow them: they are used as they were written; apply the Transform after such "
+  "filters, or give the seeds again";
+
 //------------------------------------------------------------------------------
 vtkSmartPointer<vtkDataObject> OverlayStitchSeedsFollowingPoints(
   vtkDataObject* input, std::string& note)
@@ -189,9 +219,18 @@ vtkSmartPointer<vtkDataObject> OverlayStitchSeedsFollowingPoints(
   vtkDataArray* regions = field ? field->GetArray("RegionAttributes") : nullptr;
   const vtkIdType n = data ? data->GetNumberOfPoints() : 0;
   if (!reference || reference->GetNumberOfComponents() != 4 ||
-    reference->GetNumberOfTuples() != kReferencePoints + 1 || (!holes && !regions) ||
-    reference->GetComponent(kReferencePoints, 0) != static_cast<double>(n))
+    reference->GetNumberOfTuples() != kReferencePoints + 1 || (!holes && !regions))
   {
+    return nullptr;
+  }
+  // Another number of points: the ids may name others (a review: seeds left
+  // behind by a Transform before a Clean or an Append, with no word).
+  if (reference->GetComponent(kReferencePoints, 0) != static_cast<double>(n))
+  {
+    if (!RecordedPointsStillThere(data, reference))
+    {
+      note = kRenumberedAndMoved;
+    }
     return nullptr;
   }
   std::array<Xyz, kReferencePoints> from, to;
@@ -221,9 +260,15 @@ vtkSmartPointer<vtkDataObject> OverlayStitchSeedsFollowingPoints(
   if (!map.Defined() ||
     !(std::sqrt(vtkMath::Distance2BetweenPoints(fourth.data(), to[3].data())) <= 1e-6 * size))
   {
+    // Renumbered in place (a Clean that merged none): the seeds still fit.
+    if (RecordedPointsStillThere(data, reference))
+    {
+      return nullptr;
+    }
     note = "the points have moved since the hole and region seeds of its field data were "
-           "written, by no map of a plane onto a plane (a Warp By Scalar, for instance): the "
-           "seeds are used as they were written";
+           "written, by no map of a plane onto a plane (a Warp By Scalar, for instance), or were "
+           "renumbered and moved (a Clean after a Transform): the seeds are used as they were "
+           "written";
     return nullptr;
   }
   vtkNew<vtkFieldData> moves;
