@@ -73,6 +73,10 @@ static_assert(osm::kMinAngleDegLowest == 1.0 && osm::kMinAngleDegHighest == 35.0
 namespace
 {
 
+/// What an abort says: the outputs are emptied, and the filter does not fail.
+constexpr const char* kAborted =
+  "Meshing aborted by the user: the outputs are empty (clear AbortExecute to mesh again)";
+
 /// Whether the run must stop, by VTK's convention: the filter's AbortExecute
 /// (or, through CheckAbort, an upstream filter's) is set. CheckAbort also marks
 /// the outputs ABORTED, so that the run after the caller clears the flag meshes
@@ -1376,7 +1380,7 @@ std::optional<int> vtkOverlayStitchMesher::MeshRun::ReadPslg()
   }
   if (AbortRequested(self))
   {
-    vtkErrorWithObjectMacro(self, "Meshing failed: aborted by the user");
+    vtkErrorWithObjectMacro(self, << kAborted);
     return 1;
   }
   self->UpdateProgress(0.05);
@@ -1522,10 +1526,16 @@ std::optional<int> vtkOverlayStitchMesher::MeshRun::MeshPslg(bool interpolate)
   }
   if (!this->Result.ok)
   {
+    // An abort is no failure of the filter's, as for VTK's own (a review),
+    // nor said to be one (a second review).
+    if (this->Result.error == osm::kAbortedByTheUser)
+    {
+      vtkErrorWithObjectMacro(self, << kAborted);
+      return 1;
+    }
     vtkErrorWithObjectMacro(
       self, "Meshing failed: " << Numbered(explain(this->Result.error), this->Numbering));
-    // An abort is no failure of the filter's, as for VTK's own (a review).
-    return this->Result.error == osm::kAbortedByTheUser ? 1 : Failure(self);
+    return Failure(self);
   }
   return std::nullopt;
 }
@@ -1538,7 +1548,7 @@ bool vtkOverlayStitchMesher::MeshRun::Aborted()
     return false;
   }
   ClearOutputs({ this->Mesh, this->Edges, this->Overlay });
-  vtkErrorWithObjectMacro(this->Self, "Meshing failed: aborted by the user");
+  vtkErrorWithObjectMacro(this->Self, << kAborted);
   return true;
 }
 
