@@ -39,6 +39,7 @@
 #include "MeshWriter.h"
 #include "OutputFile.h"
 #include "OverlayStitchSeeds.h"
+#include "PolyReader.h"
 #include "StagedOutput.h"
 
 #include <algorithm>
@@ -458,52 +459,10 @@ bool ListsNoVertices(const std::string& path)
   {
     return false;
   }
-  // The first token outside comments, lines ended as the reader ends them
-  // (LF, CRLF or CR alone), read as the reader reads a count ("0", "0.0",
-  // ".0": a review found the last two, and CR-only files, missed here, and
-  // their .node overwritten).
+  // Read as the reader reads it (a review: '.0' and CR-only files were
+  // missed by a check of its own here, and their .node overwritten).
   std::ifstream file(path, std::ios::binary);
-  char mark[3] = {};
-  if (!file.read(mark, 3) || std::string(mark, 3) != "\xEF\xBB\xBF")
-  {
-    file.clear(); // a UTF-8 byte order mark, which the reader skips too
-    file.seekg(0);
-  }
-  std::string token;
-  bool comment = false;
-  for (char c; file.get(c);)
-  {
-    if (c == '\n' || c == '\r')
-    {
-      comment = false;
-    }
-    if (comment ||
-      (token.empty() &&
-        (c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f')))
-    {
-      continue;
-    }
-    if (c == '#')
-    {
-      comment = token.empty();
-      if (comment)
-      {
-        continue;
-      }
-    }
-    if (c == '#' || c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f')
-    {
-      break;
-    }
-    token += c;
-  }
-  if (token.empty() || token.find_first_of("xX") != std::string::npos)
-  {
-    return false;
-  }
-  char* end = nullptr;
-  const double count = std::strtod(token.c_str(), &end);
-  return end == token.c_str() + token.size() && count == 0;
+  return osm::polyListsNoVertices(file);
 }
 
 /// Reads the command line into args; false after --help or --version. Past

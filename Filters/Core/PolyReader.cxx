@@ -724,6 +724,16 @@ PolyFile parsePoly(std::istream& in, const std::string& name, std::istream* node
   });
 }
 
+bool polyListsNoVertices(std::istream& in)
+{
+  std::string text;
+  if (!readAll(in, text))
+    return false;
+  LineReader lines(text);
+  long long count = -1;
+  return lines.next() && toInteger(lines.tokens()[0], count) == Conversion::Ok && count == 0;
+}
+
 PolyFile readPolyFile(const std::string& path)
 {
   return guarded(path, [&] {

@@ -37,6 +37,11 @@ PolyFile parsePoly(std::istream& in, const std::string& name, std::istream* node
 /// Parse .node text (points, attributes, markers).
 PolyFile parseNode(std::istream& in, const std::string& name);
 
+/// Whether .poly text lists zero vertices (and so reads them from the .node
+/// beside it), its first data line read as parsePoly reads it: comments, a
+/// byte order mark, any line ends, a count written "0", "0.0" or ".0".
+bool polyListsNoVertices(std::istream& in);
+
 } // namespace osm
 
 #endif

@@ -153,6 +153,25 @@ TEST(PolyReader, WholeNumbersWrittenAsRealsAreIntegers)
   EXPECT_EQ(f.pslg.segments[0], (Segment{ 0, 2 }));
 }
 
+TEST(PolyReader, ListsNoVerticesAsTheReaderReadsIt)
+{
+  // The check osm-mesh makes before choosing its outputs, so that it never
+  // writes over the .node a .poly reads its vertices from (a review: its
+  // own check missed ".0" and CR-only files).
+  for (const char* text : { "0 2 0 0\n", ".0 2 0 0\n", "# a\r0.0 2 0 0\r3 0\r",
+         "\xEF\xBB\xBF# a\r\n\r\n  0e0 2 0 0", "+0\t2 0 0" })
+  {
+    std::istringstream in(text);
+    EXPECT_TRUE(polyListsNoVertices(in)) << text;
+  }
+  for (const char* text :
+    { "4 2 0 0\n", "", "# only a comment\n", "0x0 2 0 0\n", "0.5 2\n", "zero 2 0 0\n" })
+  {
+    std::istringstream in(text);
+    EXPECT_FALSE(polyListsNoVertices(in)) << text;
+  }
+}
+
 TEST(PolyReader, ZeroBasedNumbering)
 {
   const PolyFile f = poly("3 2 0 0\n0 5 6\n1 7 8\n2 9 10\n2 0\n0 0 2\n1 2 1\n0\n");
