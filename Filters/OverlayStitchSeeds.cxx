@@ -182,7 +182,7 @@ void OverlayStitchAddSeedReference(vtkPolyData* output)
 /// Whether every recorded reference point is still a point of data, under
 /// any id: the points were renumbered, merged, clipped or added to, but the
 /// seeds lie where they were written.
-bool RecordedPointsStillThere(vtkDataSet* data, vtkDataArray* reference)
+bool RecordedPointsStillThere(vtkDataSet* data, const std::array<Xyz, kReferencePoints>& recorded)
 {
   std::array<bool, kReferencePoints> found{};
   Xyz p;
@@ -191,10 +191,7 @@ bool RecordedPointsStillThere(vtkDataSet* data, vtkDataArray* reference)
     data->GetPoint(i, p.data());
     for (int k = 0; k < kReferencePoints; ++k)
     {
-      found[k] = found[k] ||
-        p ==
-          Xyz{ reference->GetComponent(k, 1), reference->GetComponent(k, 2),
-            reference->GetComponent(k, 3) };
+      found[k] = found[k] || p == recorded[k];
     }
   }
   return std::all_of(found.begin(), found.end(), [](bool f) { return f; });
@@ -223,17 +220,22 @@ vtkSmartPointer<vtkDataObject> OverlayStitchSeedsFollowingPoints(
   {
     return nullptr;
   }
+  std::array<Xyz, kReferencePoints> from, to;
+  for (int k = 0; k < kReferencePoints; ++k)
+  {
+    from[k] = { reference->GetComponent(k, 1), reference->GetComponent(k, 2),
+      reference->GetComponent(k, 3) };
+  }
   // Another number of points: the ids may name others (a review: seeds left
   // behind by a Transform before a Clean or an Append, with no word).
   if (reference->GetComponent(kReferencePoints, 0) != static_cast<double>(n))
   {
-    if (!RecordedPointsStillThere(data, reference))
+    if (!RecordedPointsStillThere(data, from))
     {
       note = kRenumberedAndMoved;
     }
     return nullptr;
   }
-  std::array<Xyz, kReferencePoints> from, to;
   bool moved = false;
   for (int k = 0; k < kReferencePoints; ++k)
   {
@@ -242,8 +244,6 @@ vtkSmartPointer<vtkDataObject> OverlayStitchSeedsFollowingPoints(
     {
       return nullptr;
     }
-    from[k] = { reference->GetComponent(k, 1), reference->GetComponent(k, 2),
-      reference->GetComponent(k, 3) };
     data->GetPoint(static_cast<vtkIdType>(id), to[k].data());
     moved = moved || from[k] != to[k];
   }
@@ -261,7 +261,7 @@ vtkSmartPointer<vtkDataObject> OverlayStitchSeedsFollowingPoints(
     !(std::sqrt(vtkMath::Distance2BetweenPoints(fourth.data(), to[3].data())) <= 1e-6 * size))
   {
     // Renumbered in place (a Clean that merged none): the seeds still fit.
-    if (RecordedPointsStillThere(data, reference))
+    if (RecordedPointsStillThere(data, from))
     {
       return nullptr;
     }
