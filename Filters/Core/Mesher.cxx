@@ -376,13 +376,20 @@ void Mesher::warnAboutDroppedSegments(const Work& w, const PlanarGraph& g,
   inputs.erase(std::unique(inputs.begin(), inputs.end()), inputs.end());
   if (example < 0)
     return;
-  const Segment& e = dropped[example];
+  // Named in the input segment's direction (a review: "segment 0 from (10, 0)
+  // to (0, 0)" beside "cell 0 from point 0 to point 1"): pieces come either way.
+  Segment e = dropped[example];
+  const int origin = w.segmentOrigin[segmentOf(e)];
+  const Point& a = input.points[input.segments[origin][0]];
+  const Point& b = input.points[input.segments[origin][1]];
+  const Point &p = g.points[e[0]], &q = g.points[e[1]];
+  if ((q.x - p.x) * (b.x - a.x) + (q.y - p.y) * (b.y - a.y) < 0)
+    std::swap(e[0], e[1]);
   res.warnings.push_back(std::to_string(inputs.size()) +
     " input segment(s) lie outside the meshed domain (outside every enclosed region or in a "
     "hole), wholly or in part, and are not in the mesh there, e.g. input segment " +
-    std::to_string(w.segmentOrigin[segmentOf(e)]) + " from " +
-    formatPoint(unscale(g.points[e[0]]), options.pointFormat) + " to " +
-    formatPoint(unscale(g.points[e[1]]), options.pointFormat) +
+    std::to_string(origin) + " from " + formatPoint(unscale(g.points[e[0]]), options.pointFormat) +
+    " to " + formatPoint(unscale(g.points[e[1]]), options.pointFormat) +
     (domain == Domain::Enclosed ? "; the hull or box domain keeps those outside every region"
                                 : ""));
 }

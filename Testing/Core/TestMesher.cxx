@@ -3052,6 +3052,25 @@ TEST(Mesher, SegmentsTheDomainLeavesOutAreSaidToBe)
   // Segments on the domain's boundary or inside it are not in that count.
   q.segments.resize(8);
   EXPECT_EQ(warned(mesh(q)), "");
+  // The example runs in its segment's direction, whichever way the piece
+  // came (a review: "segment 0 from (10, 0) to (0, 0)" for segment 0 -> 1).
+  for (const bool reversed : { false, true })
+  {
+    Pslg s = p;
+    if (reversed)
+      std::swap(s.segments[8][0], s.segments[8][1]);
+    const std::string w = warned(mesh(s));
+    // The piece named is part of the segment: (1, 0) is its one input end.
+    EXPECT_NE(
+      w.find(reversed ? ", 0) to (1, 0);" : "input segment 8 from (1, 0) to ("), std::string::npos)
+      << w;
+  }
+  Pslg square;
+  square.points = { { 0, 0 }, { 10, 0 }, { 10, 10 }, { 0, 10 } };
+  square.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 } };
+  square.holes = { { 5, 5 } };
+  const std::string w = warned(mesh(square));
+  EXPECT_NE(w.find("input segment 0 from (0, 0) to (10, 0)"), std::string::npos) << w;
 }
 
 TEST(Mesher, NegativeZeroCoordinatesComeBackBitForBit)
