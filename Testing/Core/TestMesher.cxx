@@ -2101,8 +2101,9 @@ TEST(Mesher, EveryLongStepPollsForAnAbort)
   EXPECT_GT(r.mesh.triangles.size(), 150000u);
   const std::pair<double, double> steps[] = { { 0.6, 0.62 }, { 0.7, 0.75 }, { 0.9, 0.95 },
     { 0.95, 1.0 } };
-  for (const auto& [lo, hi] : steps)
+  for (const auto& step : steps)
   {
+    const double lo = step.first, hi = step.second; // (clang 14 captures no bindings)
     const auto inside = std::count_if(all.seen.begin(), all.seen.end(),
       [&](const auto& s) { return s.second > lo && s.second < hi; });
     EXPECT_GE(inside, 2) << "reports inside (" << lo << ", " << hi << ")";

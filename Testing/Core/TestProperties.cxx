@@ -444,7 +444,7 @@ TEST(Properties, FlippedEdgesOnSegmentsFailTheChainCheckWithATolerance)
         triangleOf[{ T[t][k], T[t][(k + 1) % 3] }] = static_cast<int>(t);
     for (const auto& [uv, t1] : triangleOf)
     {
-      const auto [u, v] = uv;
+      const int u = uv.first, v = uv.second; // (clang 14 captures no bindings)
       const auto twin = triangleOf.find({ v, u });
       if (u > v || twin == triangleOf.end() || !onSegments.count(std::minmax(X[u], X[v])))
         continue;
