@@ -4,7 +4,6 @@
 
 #include <cstdint>
 #include <cstdlib>
-#include <mutex>
 #include <string_view>
 
 #if defined(__linux__)
@@ -35,17 +34,21 @@ void* handOut(void* p, std::size_t bytes, std::size_t size)
   return p;
 }
 
-/// The freed ranges kept while a pages::Reuse lives; adjacent ones are merged.
+/// The freed ranges kept while a pages::Reuse lives on this thread; adjacent
+/// ones are merged. One per thread, so that a call keeps only what it frees
+/// itself: shared, one call's freed arrays stayed mapped until every call on
+/// other threads had ended (a review: 192 MB after meshing us48.poly, while
+/// another thread meshed). A mapping freed on a thread with no scope open
+/// (a result freed elsewhere) is given back at once.
 struct Kept
 {
-  std::mutex mutex;
   int scopes = 0;
   FreeRanges ranges; // whole huge pages, freed and kept mapped for reuse
 };
 
 Kept& kept()
 {
-  static Kept k;
+  thread_local Kept k;
   return k;
 }
 
@@ -141,15 +144,12 @@ void* map(std::size_t bytes)
 {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
   const std::size_t size = mappedSize(bytes);
-  {
-    Kept& k = kept();
-    const std::lock_guard<std::mutex> lock(k.mutex);
-    if (void* p = k.ranges.takeSmallestHolding(size))
-      return handOut(p, bytes, size);
-    // Nothing kept fits: give it all back before mapping more, so that the
-    // mappings never exceed the largest total the live arrays have had.
-    giveBackAll(k);
-  }
+  Kept& k = kept();
+  if (void* p = k.ranges.takeSmallestHolding(size))
+    return handOut(p, bytes, size);
+  // Nothing kept fits: give it all back before mapping more, so that the
+  // mappings never exceed the largest total the live arrays have had.
+  giveBackAll(k);
   void* p = mapHuge(size);
   if (!p)
     throw std::bad_alloc();
@@ -164,11 +164,9 @@ void unmap(void* p, std::size_t bytes) noexcept
 {
   const std::size_t size = mappedSize(bytes);
   Kept& k = kept();
-  std::unique_lock<std::mutex> lock(k.mutex);
   const auto any = [](const AddressRange&) { return true; };
   if (k.scopes == 0 || !k.ranges.add({ static_cast<char*>(p), size }, any))
   {
-    lock.unlock();
     unmapNow(p, size);
     return;
   }
@@ -177,8 +175,7 @@ void unmap(void* p, std::size_t bytes) noexcept
 
 std::size_t keptBytes()
 {
-  Kept& k = kept();
-  const std::lock_guard<std::mutex> lock(k.mutex);
+  const Kept& k = kept();
   std::size_t bytes = 0;
   for (const AddressRange& r : k.ranges.ranges())
     bytes += r.size;
@@ -187,11 +184,7 @@ std::size_t keptBytes()
 
 Reuse::Reuse()
 {
-  {
-    Kept& k = kept();
-    const std::lock_guard<std::mutex> lock(k.mutex);
-    ++k.scopes;
-  }
+  ++kept().scopes;
   pool::openScope();
 }
 
@@ -199,7 +192,6 @@ Reuse::~Reuse()
 {
   pool::closeScope();
   Kept& k = kept();
-  const std::lock_guard<std::mutex> lock(k.mutex);
   if (--k.scopes > 0)
     return;
   giveBackAll(k);

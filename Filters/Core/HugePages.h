@@ -85,18 +85,17 @@ void unmapNow(void* p, std::size_t size) noexcept;
 void poison(void* p, std::size_t bytes);
 void unpoison(void* p, std::size_t bytes);
 
-/// The bytes of freed mappings kept for reuse now.
+/// The bytes of freed mappings this thread keeps for reuse now.
 std::size_t keptBytes();
 
-/// While one lives (osm::mesh keeps one for its whole call), freed mappings
-/// stay mapped, merged where they touch, and a request takes the front of the
-/// smallest kept range that holds it: the kernel clears every fresh page, and
-/// each phase frees arrays the next one could fill (a run of 10^6 triangles
-/// would otherwise map about 200 MB more, 440 instead of 240). A request that
-/// no kept range holds first gives them all back, so these mappings never
-/// exceed the largest total that the live arrays have had (operator new's
-/// memory cannot use them). When the last one ends, the kept ranges are given
-/// back. While one lives, the block pool serves medium blocks (BlockPool.h).
+/// While one lives on a thread (osm::mesh keeps one for its whole call), mappings freed on that
+/// thread stay mapped, merged where they touch, and a request takes the front of the smallest kept
+/// range that holds it: the kernel clears every fresh page, and each phase frees arrays the next
+/// one could fill (a run of 10^6 triangles would otherwise map about 200 MB more, 440 instead of
+/// 240). A request that no kept range holds first gives them all back, so these mappings never
+/// exceed the largest total that the live arrays have had (operator new's memory cannot use them).
+/// When the thread's last one ends, its kept ranges are given back. While one lives on any thread,
+/// the block pool serves medium blocks (BlockPool.h).
 class Reuse
 {
 public:
