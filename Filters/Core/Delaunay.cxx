@@ -1,5 +1,6 @@
 #include "Delaunay.h"
 
+#include "Predicates.h"
 #include "SpatialSort.h"
 
 #include <algorithm>
@@ -11,6 +12,7 @@ namespace osm
 Triangulation delaunayTriangulation(
   const Array<Point>& points, Array<int>& vertexOf, double padding)
 {
+  const RoundToNearest rounding;
   Triangulation T;
   T.reserve(points.size() + 4, 2 * points.size() + 2); // a triangulation's size: no copies
   vertexOf.assign(points.size(), -1);

@@ -124,6 +124,7 @@ void VertexTerms::add(int p, double w)
 
 bool visitInputWeights(const Pslg& input, const Result& result, const TermsVisitor& visit)
 {
+  const RoundToNearest rounding;
   const pages::Reuse reuse; // the scratch arrays in huge pages, freed ones used again
   const Array<Point>& vertices = result.mesh.vertices;
   const std::size_t n = vertices.size();

@@ -1617,6 +1617,7 @@ Result meshOnce(const Pslg& input, const Options& options, Progress* progress)
 
 Result mesh(const Pslg& input, const Options& options, Progress* progress)
 {
+  const RoundToNearest rounding; // the host's rounding mode is restored on return
   Result r = meshOnce(input, options, progress);
   const double above =
     options.remeshAboveDeg > 0 ? options.remeshAboveDeg : r.stats.predictedMaxAngleDeg;

@@ -7,6 +7,8 @@
 // the public functions.
 #include "PolyReader.h"
 
+#include "Predicates.h"
+
 #include <algorithm>
 #include <cerrno>
 #include <charconv>
@@ -620,6 +622,7 @@ private:
 template <typename Body>
 PolyFile guarded(const std::string& name, Body body) noexcept
 {
+  const RoundToNearest rounding; // numbers read as written, whatever the host's mode
   try
   {
     return body();

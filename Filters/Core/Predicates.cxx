@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cfenv>
 #include <cfloat>
 #include <cmath>
 #include <limits>
@@ -47,6 +48,20 @@
 
 namespace osm
 {
+
+RoundToNearest::RoundToNearest()
+  : Saved(std::fegetround())
+{
+  if (this->Saved != FE_TONEAREST)
+    std::fesetround(FE_TONEAREST);
+}
+
+RoundToNearest::~RoundToNearest()
+{
+  if (this->Saved != FE_TONEAREST)
+    std::fesetround(this->Saved);
+}
+
 namespace
 {
 

@@ -1329,6 +1329,7 @@ Pslg snapped(const Pslg& input, double tol)
 ValidationReport validate(const Pslg& input, const Array<Point>& vertices,
   const Array<Triangle>& triangles, const ValidationOptions& options)
 {
+  const RoundToNearest rounding;
   // Scaling by a power of two is exact and changes no predicate or angle.
   if (const int e = rescaleExponent(input, vertices); e != 0)
   {

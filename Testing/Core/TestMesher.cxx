@@ -5,9 +5,11 @@
 #include "Clean.h"
 #include "Domain.h"
 #include "Overlay.h"
+#include "PolyReader.h"
 #include "Predicates.h"
 
 #include <algorithm>
+#include <cfenv>
 
 #include <chrono>
 #include <cmath>
@@ -16,6 +18,7 @@
 #include <cstring>
 #include <numeric>
 #include <random>
+#include <sstream>
 #include <utility>
 
 using namespace osm;
@@ -3606,4 +3609,41 @@ TEST(Domain, AHullWithANearlyVerticalEdgeHasItsArea)
   // Still thinner than rounding: no area, no boundary.
   const Array<Point> thin{ { 0, 0 }, { 1, 1e-17 }, { 2, 0 } };
   EXPECT_TRUE(hullBoundary(thin).empty());
+}
+
+TEST(Mesher, TheCallersRoundingModeChangesNothing)
+{
+  // Found by a review: a host rounding upward on the calling thread changed
+  // 94 of 112 meshes, as the exact predicates assume rounding to nearest.
+  // Every entry point now rounds to nearest and restores the caller's mode.
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> at(0.01, 0.99);
+  Pslg p;
+  p.points = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } };
+  p.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 } };
+  for (int k = 0; k < 300; ++k)
+    p.points.push_back({ at(rng), at(rng) });
+  const Result nearest = mesh(p);
+  ASSERT_TRUE(nearest.ok) << nearest.error;
+  const std::string text = "3 2 0 0\n1 0.1 0.3\n2 0.7 0.1\n3 0.3 0.9\n0 0\n0\n";
+  std::istringstream nearestText(text);
+  const PolyFile readNearest = parsePoly(nearestText, "t.poly");
+  for (const int mode : { FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO })
+  {
+    std::fesetround(mode);
+    const Result r = mesh(p);
+    std::istringstream in(text);
+    const PolyFile read = parsePoly(in, "t.poly");
+    const int after = std::fegetround();
+    std::fesetround(FE_TONEAREST);
+    EXPECT_EQ(after, mode) << "the caller's mode is restored";
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_EQ(r.mesh.triangles, nearest.mesh.triangles) << "mode " << mode;
+    EXPECT_EQ(r.mesh.vertices.size(), nearest.mesh.vertices.size());
+    for (std::size_t i = 0; i < r.mesh.vertices.size() && i < nearest.mesh.vertices.size(); ++i)
+      EXPECT_TRUE(r.mesh.vertices[i] == nearest.mesh.vertices[i]) << "vertex " << i;
+    ASSERT_TRUE(read.ok && readNearest.ok);
+    for (std::size_t i = 0; i < read.pslg.points.size(); ++i)
+      EXPECT_TRUE(read.pslg.points[i] == readNearest.pslg.points[i]) << "read point " << i;
+  }
 }
