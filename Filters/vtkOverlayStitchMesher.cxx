@@ -926,13 +926,21 @@ vtkOverlayStitchMesher::vtkOverlayStitchMesher()
   , PassCellData(1)
   , GenerateEdges(1)
   , GenerateOverlay(1)
+  , Controller(nullptr)
 {
   this->SetNumberOfInputPorts(1);
   this->SetNumberOfOutputPorts(3);
+  this->SetController(vtkMultiProcessController::GetGlobalController());
 }
 
 //------------------------------------------------------------------------------
-vtkOverlayStitchMesher::~vtkOverlayStitchMesher() = default;
+vtkOverlayStitchMesher::~vtkOverlayStitchMesher()
+{
+  this->SetController(nullptr);
+}
+
+//------------------------------------------------------------------------------
+vtkCxxSetObjectMacro(vtkOverlayStitchMesher, Controller, vtkMultiProcessController);
 
 //------------------------------------------------------------------------------
 void vtkOverlayStitchMesher::AddHolePoint(double x, double y)
@@ -1017,15 +1025,15 @@ namespace
 /// whose other ranks return 1 with empty outputs: a failure on rank 0 alone
 /// would stop the filters downstream there, while on the other ranks they
 /// would wait for rank 0 in their collective steps.
-bool Parallel()
+bool Parallel(vtkOverlayStitchMesher* self)
 {
-  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  vtkMultiProcessController* controller = self->GetController();
   return controller && controller->GetNumberOfProcesses() > 1;
 }
 
 int Failure(vtkOverlayStitchMesher* self)
 {
-  return Parallel() || !self->GetReportFailureToPipeline() ? 1 : 0;
+  return Parallel(self) || !self->GetReportFailureToPipeline() ? 1 : 0;
 }
 } // namespace
 
@@ -1171,7 +1179,7 @@ vtkSmartPointer<vtkPolyData> vtkOverlayStitchMesher::MeshRun::LocalPiece(
     // Its cells' ids, as polydata renumbers them, only in a serial run: a
     // rank's piece of a single dataset has ids of its own (as for ghost
     // cells). Each rank says what it leaves out of its piece.
-    vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+    vtkMultiProcessController* controller = self->GetController();
     const int ranks = controller ? controller->GetNumberOfProcesses() : 1;
     const std::string where =
       ranks > 1 ? "the piece of rank " + std::to_string(controller->GetLocalProcessId()) : "";
@@ -1229,8 +1237,8 @@ std::optional<int> vtkOverlayStitchMesher::MeshRun::Prepare(vtkDataObject* data)
   // Parallel runs (pvbatch, pvserver): every rank takes part in gathering the whole input
   // on rank 0, which meshes it; the other ranks keep empty outputs (OverlayStitchGather.h).
   // A rank whose blocks are invalid still takes part, or the others would wait for it.
-  const bool meshHere = OverlayStitchGatherInput(
-    vtkMultiProcessController::GetGlobalController(), local, this->Gathered, &this->Gather);
+  const bool meshHere =
+    OverlayStitchGatherInput(self->GetController(), local, this->Gathered, &this->Gather);
   // Cells naming points their piece lacks: said with the piece's own ids (this
   // rank's blocks first), since combining leaves such an id as -1.
   const OverlayStitchGatherSummary& invalid =
@@ -1742,7 +1750,7 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
     }
     catch (...)
     {}
-    return cleared || Parallel() ? Failure(this) : 0;
+    return cleared || Parallel(this) ? Failure(this) : 0;
   }
 }
 
@@ -1778,6 +1786,15 @@ void vtkOverlayStitchMesher::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "InterpolatePointData: " << (this->InterpolatePointData ? "On" : "Off") << "\n";
   os << indent << "PassCellData: " << (this->PassCellData ? "On" : "Off") << "\n";
   os << indent << "GenerateOverlay: " << (this->GenerateOverlay ? "On" : "Off") << "\n";
+  os << indent << "Controller: ";
+  if (this->Controller)
+  {
+    os << this->Controller << " (" << this->Controller->GetNumberOfProcesses() << " processes)\n";
+  }
+  else
+  {
+    os << "(none)\n";
+  }
   os << indent << "HolePoints: " << this->GetNumberOfHolePoints() << "\n";
   for (int i = 0; i < this->GetNumberOfHolePoints(); ++i)
   {

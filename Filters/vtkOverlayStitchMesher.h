@@ -91,6 +91,8 @@
 
 #include <vector> // For HolePoints
 
+class vtkMultiProcessController;
+
 class OVERLAYSTITCHFILTERS_EXPORT vtkOverlayStitchMesher : public vtkPolyDataAlgorithm
 {
 public:
@@ -334,6 +336,21 @@ public:
 
   ///@{
   /**
+   * The controller whose processes mesh together (default: the global
+   * controller at construction). With more than one process, RequestData is
+   * collective: every process must update the filter, each with its piece;
+   * the pieces are gathered and meshed on process 0, and the other processes'
+   * outputs are empty. Set null, or a one-process controller, to mesh each
+   * process's input on its own (an MPI application meshing on some ranks
+   * only: with the global controller, the other ranks' collectives would
+   * meet this filter's and hang, a review).
+   */
+  virtual void SetController(vtkMultiProcessController*);
+  vtkGetObjectMacro(Controller, vtkMultiProcessController);
+  ///@}
+
+  ///@{
+  /**
    * Convenience accessors for the outputs: port 0 is GetOutput().
    */
   vtkPolyData* GetEdgesOutput();
@@ -364,6 +381,7 @@ protected:
   vtkTypeBool GenerateEdges;
   vtkTypeBool GenerateOverlay;
   std::vector<double> HolePoints; // x0, y0, x1, y1, ...
+  vtkMultiProcessController* Controller;
 
 private:
   class MeshRun; // one run of RequestData's steps (in the .cxx)
