@@ -1082,6 +1082,7 @@ private:
   std::optional<int> MeshPslg(bool interpolate);
   int FillOutputs(bool interpolate);
   bool Aborted();
+  void SayAborted();
   /// Where the output phase starts in the run's progress: the Edges and
   /// Overlay outputs take about a quarter of a run to fill (us48.poly: the
   /// output phase took 35% of the time with both, 10% without).
@@ -1388,7 +1389,7 @@ std::optional<int> vtkOverlayStitchMesher::MeshRun::ReadPslg()
   }
   if (AbortRequested(self))
   {
-    vtkErrorWithObjectMacro(self, << kAborted);
+    this->SayAborted();
     return 1;
   }
   self->UpdateProgress(0.05);
@@ -1538,7 +1539,7 @@ std::optional<int> vtkOverlayStitchMesher::MeshRun::MeshPslg(bool interpolate)
     // nor said to be one (a second review).
     if (this->Result.error == osm::kAbortedByTheUser)
     {
-      vtkErrorWithObjectMacro(self, << kAborted);
+      this->SayAborted();
       return 1;
     }
     vtkErrorWithObjectMacro(
@@ -1556,8 +1557,22 @@ bool vtkOverlayStitchMesher::MeshRun::Aborted()
     return false;
   }
   ClearOutputs({ this->Mesh, this->Edges, this->Overlay });
-  vtkErrorWithObjectMacro(this->Self, << kAborted);
+  this->SayAborted();
   return true;
+}
+
+/// An abort is said as a warning, once until a run starts with AbortExecute
+/// clear: while the flag stays set, the pipeline runs the filter again for
+/// every request (3 to 5 times in one ParaView update), and an error would
+/// present the user's own cancel as a failure (a review; VTK's filters say
+/// nothing at all).
+void vtkOverlayStitchMesher::MeshRun::SayAborted()
+{
+  if (!this->Self->AbortSaid)
+  {
+    vtkWarningWithObjectMacro(this->Self, << kAborted);
+    this->Self->AbortSaid = true;
+  }
 }
 
 /// Phase "output": the three polydata, built in bulk, with the input's data
@@ -1715,6 +1730,10 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   }
   // Outputs stay empty unless meshing succeeds.
   ClearOutputs({ mesh, edges, overlay });
+  if (!this->GetAbortExecute())
+  {
+    this->AbortSaid = false; // an abort in this run is a new one
+  }
   // Whichever way the run ends, no phase is left named as current.
   const struct ProgressTextReset
   {

@@ -72,9 +72,11 @@
  * returns 0 (in a parallel run every rank returns 1, so that filters
  * downstream run on every rank alike). Progress is reported through
  * every phase (input, clean, overlay, stitch, complete, domain, output) and
- * GetAbortExecute() is polled: an abort ends the run with the error "aborted
- * by the user" and empty outputs (RequestData returns 1, as VTK's filters do
- * on an abort). A NaN given to a clamped setter is kept, not clamped, and
+ * GetAbortExecute() is polled: an abort ends the run with empty outputs and
+ * the warning "Meshing aborted by the user", given once while the flag stays
+ * set (RequestData returns 1, as VTK's filters do on an abort). A failed
+ * serial run also makes VTK's executive print the failed request (with
+ * ReportFailureToPipeline off, it does not). A NaN given to a clamped setter is kept, not clamped, and
  * refused by the run with an error.
  *
  * The class uses only API that VTK 9.1 also has.
@@ -384,7 +386,8 @@ protected:
   vtkMultiProcessController* Controller;
 
 private:
-  class MeshRun; // one run of RequestData's steps (in the .cxx)
+  class MeshRun;          // one run of RequestData's steps (in the .cxx)
+  bool AbortSaid = false; // the warning of an abort given, AbortExecute still set
 
   vtkOverlayStitchMesher(const vtkOverlayStitchMesher&) = delete;
   void operator=(const vtkOverlayStitchMesher&) = delete;
