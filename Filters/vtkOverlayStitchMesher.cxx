@@ -978,6 +978,8 @@ void vtkOverlayStitchMesher::GetHolePoint(int i, double point[2]) const
 {
   if (i < 0 || i >= this->GetNumberOfHolePoints())
   {
+    vtkErrorMacro("GetHolePoint: no hole point " << i << " (there are "
+                                                 << this->GetNumberOfHolePoints() << ")");
     point[0] = point[1] = 0.0;
     return;
   }
@@ -1791,7 +1793,10 @@ void vtkOverlayStitchMesher::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "MinimumAngle: " << this->MinimumAngle << "\n";
   os << indent << "MaximumEdgeLength: " << this->MaximumEdgeLength << "\n";
-  os << indent << "Domain: " << this->Domain << "\n";
+  static const char* const domains[] = { "Auto", "Enclosed", "Hull", "Box" };
+  os << indent << "Domain: "
+     << (this->Domain >= DOMAIN_AUTO && this->Domain <= DOMAIN_BOX ? domains[this->Domain] : "?")
+     << " (" << this->Domain << ")\n";
   os << indent << "ResolveIntersections: " << (this->ResolveIntersections ? "On" : "Off") << "\n";
   os << indent << "MergeTolerance: " << this->MergeTolerance << "\n";
   os << indent << "ProjectToXYPlane: " << (this->ProjectToXYPlane ? "On" : "Off") << "\n";

@@ -107,7 +107,7 @@ public:
    */
   enum DomainTypes
   {
-    DOMAIN_AUTO = 0,     ///< DOMAIN_ENCLOSED if input points bound a region, else DOMAIN_HULL
+    DOMAIN_AUTO = 0,     ///< DOMAIN_ENCLOSED if input segments bound a region, else DOMAIN_HULL
     DOMAIN_ENCLOSED = 1, ///< regions enclosed by segments, minus holes
     DOMAIN_HULL = 2,     ///< the convex hull of the input points
     DOMAIN_BOX = 3       ///< the overlay's padded box: 4 times the input's larger extent

@@ -250,8 +250,9 @@ int TestMergeTolerance()
   h.Mesher->Print(printed);
   Check(printed.str().find("MergeTolerance: 1e-06") != std::string::npos &&
       printed.str().find("ProjectToXYPlane: Off") != std::string::npos &&
-      printed.str().find("UseInputHolePoints: On") != std::string::npos,
-    "PrintSelf shows MergeTolerance, ProjectToXYPlane and UseInputHolePoints");
+      printed.str().find("UseInputHolePoints: On") != std::string::npos &&
+      printed.str().find("Domain: Auto (0)") != std::string::npos,
+    "PrintSelf shows MergeTolerance, ProjectToXYPlane, UseInputHolePoints and the domain by name");
   mesh = h.Run(input, "tolerance 1e-6");
   Check(h.NoError(), "tolerance 1e-6: no error");
   Check(Statistic(mesh, "DuplicatePointsMerged") == 1,
@@ -887,6 +888,15 @@ int TestFieldHoles()
   mesh = h.Run(input, "hole seed coordinates 5, 5, 2.5");
   std::ostringstream printedSeeds;
   h.Mesher->Print(printedSeeds);
+  // A seed past the last is an error (a review: it was (0, 0) without a word).
+  const auto said = h.Messages->Warnings;
+  h.Messages->Clear();
+  double past[2] = { 7, 7 };
+  h.Mesher->GetHolePoint(1, past);
+  Check(h.Messages->HasError({ "no hole point 1 (there are 1)" }) && past[0] == 0 && past[1] == 0,
+    "GetHolePoint past the last says so");
+  h.Messages->Clear();
+  h.Messages->Warnings = said;
   h.Mesher->RemoveAllHolePoints();
   Check(printedSeeds.str().find("(5, 5)") != std::string::npos &&
       printedSeeds.str().find("(2.5, ?): a lone coordinate") != std::string::npos,
