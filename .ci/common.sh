@@ -42,8 +42,9 @@ OSM_PACKAGES=(
   libnetcdf-dev libgdal-dev libglew-dev libdouble-conversion-dev liblz4-dev
   libtiff-dev libjpeg-dev libpng-dev libfreetype-dev liblzma-dev libexpat1-dev
   libxml2-dev zlib1g-dev libx11-dev libgl-dev libboost-dev libeigen3-dev python3-dev
-  # Tests: GoogleTest, GMP (exact arithmetic checks), benchmarks, a virtual X server.
-  libgtest-dev libgmp-dev libbenchmark-dev xvfb xauth
+  # Tests: GoogleTest, GMP (exact arithmetic checks), benchmarks, a virtual X server,
+  # and the locale sources localedef makes a German locale from (TestNumberText).
+  libgtest-dev libgmp-dev libbenchmark-dev xvfb xauth locales
 )
 
 osm_log() {

@@ -14,6 +14,7 @@
 
 #include "Clean.h"
 #include "Mesher.h"
+#include "NumberText.h"
 #include "OverlayStitchArrays.h"
 #include "OverlayStitchGather.h"
 #include "OverlayStitchMarkers.h"
@@ -240,14 +241,12 @@ void NoteRegionsOutsidePolygons(const osm::Result& result, const std::vector<int
       osm::formatNumber(seed.x) + ", " + osm::formatNumber(seed.y) + ", " +
       osm::formatNumber(seed.z) + ")";
   }
-  char counts[256];
-  std::snprintf(counts, sizeof counts,
-    "%lld region(s) of the mesh lie in no input polygon (holes in the polygons, or space their "
-    "edges enclose between them), area %.6g of the mesh's %.6g",
-    static_cast<long long>(regions), outside, all);
-  warnings.push_back(std::string(counts) +
-    ": they are meshed, with InputCellId -1. To leave them out, give " + where + " for region " +
-    std::to_string(r) + " (RegionId)");
+  const std::string counts = std::to_string(regions) +
+    " region(s) of the mesh lie in no input polygon (holes in the polygons, or space their "
+    "edges enclose between them), area " +
+    osm::generalText(outside, 6) + " of the mesh's " + osm::generalText(all, 6);
+  warnings.push_back(counts + ": they are meshed, with InputCellId -1. To leave them out, give " +
+    where + " for region " + std::to_string(r) + " (RegionId)");
 }
 
 } // namespace

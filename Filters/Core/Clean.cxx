@@ -2,6 +2,7 @@
 
 #include "Geometry.h"
 #include "HugePages.h"
+#include "NumberText.h"
 #include "Predicates.h"
 #include "Snap.h"
 
@@ -23,21 +24,19 @@ std::string formatPoint(const Point& p)
 
 std::string formatNumber(double x)
 {
-  char buf[40];
+  std::string text;
   for (int digits = 15; digits <= 17; ++digits)
   {
-    std::snprintf(buf, sizeof buf, "%.*g", digits, x);
-    if (std::strtod(buf, nullptr) == x)
+    text = generalText(x, digits);
+    if (cLocaleReal(text) == x)
       break;
   }
-  return buf;
+  return text;
 }
 
 std::string roughNumber(double x)
 {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.2g", x);
-  return buf;
+  return generalText(x, 2);
 }
 
 namespace

@@ -1,5 +1,6 @@
 #include "MeshWriter.h"
 
+#include "NumberText.h"
 #include "OutputFile.h"
 #include "TriangleMarkers.h"
 
@@ -8,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <locale>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -17,6 +19,12 @@ namespace osm
 
 namespace
 {
+
+/// %.17g: every double read back exactly, in any locale.
+std::string exact(double x)
+{
+  return generalText(x, 17);
+}
 
 /// Per mesh edge (of edges), the entry of Result::edges that is the input
 /// subsegment on it, -1 for none.
@@ -61,7 +69,6 @@ void writePolyFile(std::ostream& poly, const MeshEdges& edges, const std::vector
   for (std::size_t e = 0; e < edges.size(); ++e)
     if (subsegment[e] >= 0 || edges.onBoundary(e))
       segments.push_back(e);
-  char buf[160];
   poly << "# the mesh's input subsegments and boundary edges; its vertices are in the .node\n"
        << "0 2 0 1\n"
        << segments.size() << " 1\n";
@@ -74,9 +81,7 @@ void writePolyFile(std::ostream& poly, const MeshEdges& edges, const std::vector
   poly << data.holes.size() << '\n';
   for (std::size_t h = 0; h < data.holes.size(); ++h)
   {
-    std::snprintf(
-      buf, sizeof buf, "%zu %.17g %.17g\n", h + first, data.holes[h].x, data.holes[h].y);
-    poly << buf;
+    poly << h + first << ' ' << exact(data.holes[h].x) << ' ' << exact(data.holes[h].y) << '\n';
   }
   if (data.regions.empty())
     return;
@@ -84,9 +89,8 @@ void writePolyFile(std::ostream& poly, const MeshEdges& edges, const std::vector
   for (std::size_t i = 0; i < data.regions.size(); ++i)
   {
     const RegionAttribute& region = data.regions[i];
-    std::snprintf(buf, sizeof buf, "%zu %.17g %.17g %.17g %.17g\n", i + first, region.seed.x,
-      region.seed.y, region.attribute, region.maxArea);
-    poly << buf;
+    poly << i + first << ' ' << exact(region.seed.x) << ' ' << exact(region.seed.y) << ' '
+         << exact(region.attribute) << ' ' << exact(region.maxArea) << '\n';
   }
 }
 
@@ -125,6 +129,7 @@ std::string writeTriangleFiles(const std::string& base, const Result& r, const N
     files[k].open(names[k]);
     if (!files[k])
       return failed(k, errno);
+    files[k].imbue(std::locale::classic()); // no digit grouping from a host's global locale
   }
   std::ofstream &node = files[0], &ele = files[1], &edge = files[2];
   const MeshEdges edges(r.mesh);
@@ -136,19 +141,12 @@ std::string writeTriangleFiles(const std::string& base, const Result& r, const N
         : 0,
       edges.onBoundary(e));
   const std::size_t first = data.firstIndex == 0 ? 0 : 1;
-  char buf[128];
   node << n << " 2 " << data.attributeCount << " 1\n";
   for (std::size_t v = 0; v < n; ++v)
   {
-    // %.17g round-trips every double exactly.
-    std::snprintf(
-      buf, sizeof buf, "%zu %.17g %.17g", v + first, r.mesh.vertices[v].x, r.mesh.vertices[v].y);
-    node << buf;
+    node << v + first << ' ' << exact(r.mesh.vertices[v].x) << ' ' << exact(r.mesh.vertices[v].y);
     for (std::size_t k = 0; k < data.attributeCount; ++k)
-    {
-      std::snprintf(buf, sizeof buf, " %.17g", data.attributes[v * data.attributeCount + k]);
-      node << buf;
-    }
+      node << ' ' << exact(data.attributes[v * data.attributeCount + k]);
     node << ' '
          << (data.markers.empty() ? boundaryMarker(0, edges.vertexOnBoundary(int(v)))
                                   : data.markers[v])
@@ -165,8 +163,7 @@ std::string writeTriangleFiles(const std::string& base, const Result& r, const N
         << r.mesh.triangles[t][1] + first << ' ' << r.mesh.triangles[t][2] + first << ' ';
     if (attributes)
     {
-      std::snprintf(buf, sizeof buf, "%.17g ", r.regionAttribute[t]);
-      ele << buf;
+      ele << exact(r.regionAttribute[t]) << ' ';
     }
     ele << r.regionId[t] << '\n';
   }
@@ -207,16 +204,12 @@ void writeSvg(std::ostream& out, const Result& r)
   const double w = (x1 - x0) * scale + 20, h = (y1 - y0) * scale + 20;
   auto X = [&](const Point& p) { return 10 + (p.x - x0) * scale; };
   auto Y = [&](const Point& p) { return 10 + (y1 - p.y) * scale; };
-  char buf[256];
-  std::snprintf(buf, sizeof buf,
-    "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" "
-    "viewBox=\"0 0 %.3f %.3f\">\n<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n",
-    w, h, w, h);
-  out << buf;
+  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << fixedText(w, 0) << "\" height=\""
+      << fixedText(h, 0) << "\" viewBox=\"0 0 " << fixedText(w, 3) << ' ' << fixedText(h, 3)
+      << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   auto line = [&](const Point& a, const Point& b, const char* style) {
-    std::snprintf(buf, sizeof buf, "<line x1=\"%.3f\" y1=\"%.3f\" x2=\"%.3f\" y2=\"%.3f\" %s/>\n",
-      X(a), Y(a), X(b), Y(b), style);
-    out << buf;
+    out << "<line x1=\"" << fixedText(X(a), 3) << "\" y1=\"" << fixedText(Y(a), 3) << "\" x2=\""
+        << fixedText(X(b), 3) << "\" y2=\"" << fixedText(Y(b), 3) << "\" " << style << "/>\n";
   };
   out << "<g id=\"mesh\">\n";
   const MeshEdges edges(r.mesh);
@@ -266,12 +259,8 @@ void writeStatisticsJson(std::ostream& out, const Result& r)
   out << "{\n  \"ok\": " << (r.ok ? "true" : "false") << ",\n";
   if (!r.ok)
     out << "  \"error\": " << jsonString(r.error) << ",\n";
-  char buf[64];
   for (const auto& [name, value] : r.stats.items())
-  {
-    std::snprintf(buf, sizeof buf, "%.17g", std::isfinite(value) ? value : 0.0);
-    out << "  " << jsonString(name) << ": " << buf << ",\n";
-  }
+    out << "  " << jsonString(name) << ": " << exact(std::isfinite(value) ? value : 0.0) << ",\n";
   out << "  \"Warnings\": [";
   for (std::size_t i = 0; i < r.warnings.size(); ++i)
     out << (i ? ", " : "") << jsonString(r.warnings[i]);

@@ -9,6 +9,7 @@
 #include "HugePages.h"
 #include "InputWarnings.h"
 #include "LongEdges.h"
+#include "NumberText.h"
 #include "Overlay.h"
 #include "Predicates.h"
 #include "RunContext.h"
@@ -68,12 +69,8 @@ double since(Clock::time_point t0)
 /// spread 1e3 fails at 32.5, and 2e4 random points at 33.5.
 std::string beyondGuaranteeWarning(double minAngleDeg)
 {
-  char buf[160];
-  std::snprintf(buf, sizeof buf,
-    "a minimum angle above 30 degrees (here %g) has no guarantee: the overlay may grow "
-    "several times larger, or its refinement not end",
-    minAngleDeg);
-  return buf;
+  return "a minimum angle above 30 degrees (here " + generalText(minAngleDeg, 6) +
+    ") has no guarantee: the overlay may grow several times larger, or its refinement not end";
 }
 
 /// An origin that subtracts exactly from every coordinate in [lo, hi] (x - c
@@ -1152,8 +1149,7 @@ void Mesher::meshRounds(Work& w)
 
 std::string Mesher::longEdgesWarning(const LongEdges& split) const
 {
-  char ratio[32];
-  std::snprintf(ratio, sizeof ratio, "%.3g", split.worst);
+  const std::string ratio = generalText(split.worst, 3);
   return std::to_string(split.remaining) +
     " triangle(s) keep an edge longer than the maximum edge length (or their region's bound "
     "for its maximum area), up to " +
@@ -1385,8 +1381,7 @@ std::string angleBoundWarning(const TriMesh& mesh, double boundDeg, const PointF
   const double ulps = shortest / (std::numeric_limits<double>::epsilon() * magnitude);
   // Rounding by a few units moves an angle by about units / ulps radians.
   const bool rounding = (worst - boundDeg) / deg * ulps <= 64;
-  char degrees[64];
-  std::snprintf(degrees, sizeof degrees, "%.2f degrees, up to %.2f", boundDeg, worst);
+  const std::string degrees = fixedText(boundDeg, 2) + " degrees, up to " + fixedText(worst, 2);
   return std::to_string(count) + " triangle(s) exceed the largest-angle bound of " + degrees +
     " at " + formatPoint(at, format) + ", in a triangle whose shortest side, " +
     roughNumber(shortest) + ", spans " + roughNumber(ulps) +

@@ -29,6 +29,7 @@
 
 #include "Clean.h"
 #include "HugePages.h"
+#include "NumberText.h"
 #include "Predicates.h"
 #include "Series.h"
 #include "SizeQueue.h"
@@ -414,9 +415,8 @@ Overlay Refiner::refine()
   const double indexable = std::numeric_limits<int>::max() / 2;
   if (!(forMaxEdge <= indexable))
   {
-    char need[48] = "more";
-    if (std::isfinite(forMaxEdge))
-      std::snprintf(need, sizeof need, "at least %.3g", forMaxEdge);
+    const std::string need =
+      std::isfinite(forMaxEdge) ? "at least " + generalText(forMaxEdge, 3) : "more";
     throw Stop{ sizeBoundName() + " is too small for this input: the overlay would need " + need +
       " points, and a mesh can index " + std::to_string(static_cast<long long>(indexable)) };
   }
@@ -428,10 +428,9 @@ Overlay Refiner::refine()
   if (const double need = 2.2 * forMaxEdge * 2 * kBytesPerTriangle, memory = memoryToCheck(need);
       memory > 0 && need > memory)
   {
-    char sizes[112];
-    std::snprintf(sizes, sizeof sizes,
-      "about %.3g points, at least %.3g GB, and this machine has %.3g GB", 2.2 * forMaxEdge,
-      need / 1e9, memory / 1e9);
+    const std::string sizes = "about " + generalText(2.2 * forMaxEdge, 3) + " points, at least " +
+      generalText(need / 1e9, 3) + " GB, and this machine has " + generalText(memory / 1e9, 3) +
+      " GB";
     throw Stop{ sizeBoundName() +
       " is too small for this machine's memory: the overlay would need " + sizes };
   }

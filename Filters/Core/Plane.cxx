@@ -1,6 +1,7 @@
 #include "Plane.h"
 
 #include "Clean.h" // formatNumber
+#include "NumberText.h"
 
 #include <algorithm>
 #include <array>
@@ -319,17 +320,13 @@ std::string PlaneMap::choose(const Array<Vec3>& points, bool projectToXY, double
   const double rounding = 4 * roundoff * largest;
   if (!(fit.maxDistance <= relativeTolerance * fit.diagonal + rounding))
   {
-    char buf[224];
-    if (rounding > 0)
-      std::snprintf(buf, sizeof buf,
-        " is %g from their best-fitting plane (the tolerance is %g times the bounding box "
-        "diagonal plus 4 times the coordinates' rounding, %g, of the largest coordinate: %g)",
-        fit.maxDistance, relativeTolerance, roundoff, relativeTolerance * fit.diagonal + rounding);
-    else
-      std::snprintf(buf, sizeof buf,
-        " is %g from their best-fitting plane (the tolerance is %g times the bounding box "
-        "diagonal: %g)",
-        fit.maxDistance, relativeTolerance, relativeTolerance * fit.diagonal);
+    const std::string buf = " is " + generalText(fit.maxDistance, 6) +
+      " from their best-fitting plane (the tolerance is " + generalText(relativeTolerance, 6) +
+      " times the bounding box diagonal" +
+      (rounding > 0 ? " plus 4 times the coordinates' rounding, " + generalText(roundoff, 6) +
+            ", of the largest coordinate: " +
+            generalText(relativeTolerance * fit.diagonal + rounding, 6) + ")"
+                    : ": " + generalText(relativeTolerance * fit.diagonal, 6) + ")");
     return "the input points are not coplanar: point " + std::to_string(fit.farthest) + " at " +
       formatPoint3(points[fit.farthest]) + buf +
       "; turn on ProjectToXYPlane (osm-mesh: --project-xy) to mesh their projection onto the "

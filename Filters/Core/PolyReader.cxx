@@ -7,6 +7,7 @@
 // the public functions.
 #include "PolyReader.h"
 
+#include "NumberText.h"
 #include "Predicates.h"
 
 #include <algorithm>
@@ -109,8 +110,9 @@ Conversion toReal(std::string_view token, double& value)
   if (ec == std::errc::result_out_of_range)
   {
     // Underflow (1e-400) is a harmless zero, as with strtod; overflow is not finite.
-    // from_chars leaves value unset here, so let strtod say which one it was.
-    value = std::strtod(std::string(t).c_str(), nullptr);
+    // from_chars leaves value unset here, so let strtod say which one it was
+    // (in the C locale: in a German one, it read 1.5e-400 as 1, a review).
+    value = cLocaleReal(std::string(t));
   }
   return std::isfinite(value) ? Conversion::Ok : Conversion::NotFinite;
 }
