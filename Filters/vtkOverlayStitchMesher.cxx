@@ -11,6 +11,7 @@
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
 #include "vtkCompositeDataSet.h"
+#include "vtkDataArray.h"
 #include "vtkDataObject.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -563,6 +564,20 @@ void ReadSegments(
   }
 }
 
+/// Whether the field data's array of that name holds no numbers (a
+/// vtkStringArray, say): such seeds are ignored with a warning, as a numeric
+/// array of the wrong shape is (a review: they were ignored without a word).
+std::string NotNumeric(vtkFieldData* field, const char* name)
+{
+  vtkAbstractArray* array = field->GetAbstractArray(name);
+  if (!array || vtkArrayDownCast<vtkDataArray>(array))
+  {
+    return std::string();
+  }
+  return std::string("The input's field data array ") + name + " holds no numbers (a " +
+    array->GetClassName() + "): ignored; give its seeds as a numeric array.";
+}
+
 /// The regional attributes of a .poly file, as vtkTrianglePolyReader puts them
 /// in the field data: "RegionAttributes", a tuple (x, y, attribute, maximum
 /// area) per region seed; (x, y, attribute) is read too. Returns a warning for
@@ -572,7 +587,7 @@ std::string ReadRegionAttributes(vtkPolyData* input, const osm::PlaneMap& map, o
   vtkDataArray* regions = input->GetFieldData()->GetArray("RegionAttributes");
   if (!regions)
   {
-    return std::string();
+    return NotNumeric(input->GetFieldData(), "RegionAttributes");
   }
   const int components = regions->GetNumberOfComponents();
   if (components != 3 && components != 4)
@@ -1437,6 +1452,13 @@ std::optional<int> vtkOverlayStitchMesher::MeshRun::ReadHoleSeeds()
   }
   if (!fieldHoles)
   {
+    if (self->GetUseInputHolePoints())
+    {
+      if (const std::string said = NotNumeric(field, "HolePoints"); !said.empty())
+      {
+        vtkWarningWithObjectMacro(self, << said);
+      }
+    }
     return std::nullopt;
   }
   const int components = fieldHoles->GetNumberOfComponents();

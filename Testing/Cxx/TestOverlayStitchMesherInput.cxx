@@ -936,6 +936,20 @@ int TestFieldHoles()
     "a 4-component HolePoints array is not used");
   Check(h.Messages->HasWarning({ "HolePoints", "4 components (2 or 3 expected", "ignored" }),
     "a warning says why it was ignored");
+  // Seeds as text (a review: ignored without a word), holes and regions.
+  auto text = SquareWithInnerSquares({ { 3, 7 } });
+  for (const char* name : { "HolePoints", "RegionAttributes" })
+  {
+    vtkNew<vtkStringArray> seeds;
+    seeds->SetName(name);
+    seeds->InsertNextValue("5 5");
+    text->GetFieldData()->AddArray(seeds);
+  }
+  mesh = h.Run(text, "HolePoints and RegionAttributes as strings");
+  Check(h.NoError() && std::fabs(osmtest::TotalArea(mesh) - 100.0) < 1e-9 &&
+      h.Messages->HasWarning({ "HolePoints holds no numbers (a vtkStringArray): ignored" }) &&
+      h.Messages->HasWarning({ "RegionAttributes holds no numbers (a vtkStringArray): ignored" }),
+    "string arrays of seeds are ignored with a warning each");
   return 0;
 }
 
