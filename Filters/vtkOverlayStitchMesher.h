@@ -43,7 +43,11 @@
  * largest angle. Every output angle is at most 180° − θ2 (about 170° at the
  * default θ1 = 30°).
  *
- * The filter has three output ports:
+ * The filter has three output ports, whose points are double whatever the
+ * input's type (float input points give double output points; there is no
+ * OutputPointsPrecision): the angle bound holds for the double coordinates the
+ * mesher computes, and rounded to float the thinnest triangles (angles of
+ * 1e-4 degrees occur along stitched segments) could turn over.
  * - port 0 (Mesh): the conforming triangulation. Point data `VertexOrigin`
  *   (0 input vertex, 1 overlay Steiner point, 2 stitch point on a segment,
  *   3 other: a crossing of input segments, or a point splitting a
