@@ -80,8 +80,8 @@
  * the warning "Meshing aborted by the user", given once while the flag stays
  * set (RequestData returns 1, as VTK's filters do on an abort). A failed
  * serial run also makes VTK's executive print the failed request (with
- * ReportFailureToPipeline off, it does not). A NaN given to a clamped setter is kept, not clamped, and
- * refused by the run with an error.
+ * ReportFailureToPipeline off, it does not). A NaN given to a clamped
+ * setter is kept, not clamped, and refused by the run with an error.
  *
  * The class uses only API that VTK 9.1 also has.
  *
