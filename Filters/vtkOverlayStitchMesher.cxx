@@ -44,6 +44,7 @@
 #include "OverlayStitchSeeds.h"
 #include "OverlayStitchUnstructured.h"
 #include "Plane.h"
+#include "Predicates.h" // RoundToNearest
 #include "Pslg.h"
 #include "RunContext.h"
 #include "Statistics.h"
@@ -1585,17 +1586,20 @@ bool vtkOverlayStitchMesher::MeshRun::Aborted()
   return true;
 }
 
-/// An abort is said as a warning, once until a run starts with AbortExecute
-/// clear: while the flag stays set, the pipeline runs the filter again for
-/// every request (3 to 5 times in one ParaView update), and an error would
-/// present the user's own cancel as a failure (a review; VTK's filters say
-/// nothing at all).
+/// An abort is said as a warning, once until a run ends otherwise: while the
+/// flag stays set, the pipeline runs the filter again for every request (3
+/// to 5 times in one ParaView update), and an error would present the user's
+/// own cancel as a failure (a review; VTK's filters say nothing at all). The
+/// filter's modification time cannot tell a new request: every aborted run
+/// changes it (VTK's AbortOutput flag is set and cleared on the filter).
 void vtkOverlayStitchMesher::MeshRun::SayAborted()
 {
-  if (!this->Self->AbortSaid)
+  vtkOverlayStitchMesher* self = this->Self;
+  self->AbortedThisRun = true;
+  if (!self->AbortSaid)
   {
-    vtkWarningWithObjectMacro(this->Self, << kAborted);
-    this->Self->AbortSaid = true;
+    vtkWarningWithObjectMacro(self, << kAborted);
+    self->AbortSaid = true;
   }
 }
 
@@ -1754,10 +1758,19 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   }
   // Outputs stay empty unless meshing succeeds.
   ClearOutputs({ mesh, edges, overlay });
-  if (!this->GetAbortExecute())
+  // The plane's map to 2D and back rounds like the core (a review: under the
+  // host's upward rounding, 303 of 304 points of a tilted plane moved).
+  const osm::RoundToNearest rounding;
+  this->AbortedThisRun = false;
+  const struct AbortRecord
   {
-    this->AbortSaid = false; // an abort in this run is a new one
-  }
+    vtkOverlayStitchMesher* Filter;
+    ~AbortRecord()
+    {
+      // A run that was not aborted ends what the abort warning covered.
+      this->Filter->AbortSaid = this->Filter->AbortSaid && this->Filter->AbortedThisRun;
+    }
+  } abortRecord{ this };
   // Whichever way the run ends, no phase is left named as current.
   const struct ProgressTextReset
   {

@@ -390,8 +390,10 @@ protected:
   vtkMultiProcessController* Controller;
 
 private:
-  class MeshRun;          // one run of RequestData's steps (in the .cxx)
-  bool AbortSaid = false; // the warning of an abort given, AbortExecute still set
+  class MeshRun; // one run of RequestData's steps (in the .cxx)
+  // The abort warning given since the last run that was not aborted; this run aborted.
+  bool AbortSaid = false;
+  bool AbortedThisRun = false;
 
   vtkOverlayStitchMesher(const vtkOverlayStitchMesher&) = delete;
   void operator=(const vtkOverlayStitchMesher&) = delete;

@@ -61,6 +61,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cfenv>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -412,6 +413,33 @@ int TestTiltedPlane()
     "every input vertex is an output point with its exact coordinates (" + std::to_string(exact) +
       " of " + std::to_string(input->GetNumberOfPoints()) + ")");
   Check(CountOrigin(mesh, 0) == input->GetNumberOfPoints(), "VertexOrigin 0 for each input vertex");
+
+  // The caller's rounding mode changes nothing, the plane's map included (a
+  // review: under upward rounding 303 of 304 points of a tilted plane moved).
+  {
+    vtkNew<vtkPolyData> nearest;
+    nearest->DeepCopy(mesh);
+    for (const int mode : { FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO })
+    {
+      h.Mesher->Modified();
+      std::fesetround(mode);
+      h.Mesher->Update();
+      const int after = std::fegetround();
+      std::fesetround(FE_TONEAREST);
+      vtkPolyData* again = h.Mesher->GetOutput();
+      bool same = after == mode && again->GetNumberOfPoints() == nearest->GetNumberOfPoints() &&
+        again->GetNumberOfCells() == nearest->GetNumberOfCells();
+      for (vtkIdType i = 0; same && i < again->GetNumberOfPoints(); ++i)
+      {
+        double p[3], q[3];
+        again->GetPoint(i, p);
+        nearest->GetPoint(i, q);
+        same = p[0] == q[0] && p[1] == q[1] && p[2] == q[2];
+      }
+      Check(same,
+        "rounding mode " + std::to_string(mode) + ": the same mesh, bit for bit, mode restored");
+    }
+  }
 
   // Every output point lies in the plane.
   const double d0 = FarthestFromPlane(mesh, tilt);
@@ -1551,10 +1579,11 @@ int TestAbort(int points)
     Check(h.Mesher->GetOutputInformation(0)->Get(vtkAlgorithm::ABORTED()) == 1,
       row + ": the output is marked ABORTED");
     // While the flag stays set, every request runs the filter again (3 to 5
-    // times in one ParaView update): the abort was said once.
+    // times in one ParaView update): the abort was said once, until a run
+    // ends otherwise.
     h.Messages->Clear();
-    h.Mesher->Modified();
     h.Mesher->Update();
+    h.Mesher->Modified();
     h.Mesher->Update();
     Check(h.Messages->Errors.empty() && h.Messages->Warnings.empty(),
       row + ": runs with the flag still set say nothing again (" +
