@@ -1068,6 +1068,7 @@ public:
     , Mesh(mesh)
     , Edges(edges)
     , Overlay(overlay)
+    , AbortSaidBefore(std::exchange(self->AbortSaid, false)) // set again if this run aborts
   {}
 
   int Execute(vtkDataObject* data)
@@ -1114,6 +1115,7 @@ private:
   vtkPolyData* Mesh;
   vtkPolyData* Edges;
   vtkPolyData* Overlay;
+  bool AbortSaidBefore;                      // by the run before, itself aborted (SayAborted)
   vtkSmartPointer<vtkDataObject> WellFormed; // the input, cleaned of what it cannot hold
   vtkSmartPointer<vtkPolyData> Gathered;     // the whole input, on the rank that meshes
   vtkPolyData* Input = nullptr;              // = Gathered
@@ -1594,13 +1596,11 @@ bool vtkOverlayStitchMesher::MeshRun::Aborted()
 /// changes it (VTK's AbortOutput flag is set and cleared on the filter).
 void vtkOverlayStitchMesher::MeshRun::SayAborted()
 {
-  vtkOverlayStitchMesher* self = this->Self;
-  self->AbortedThisRun = true;
-  if (!self->AbortSaid)
+  if (!this->AbortSaidBefore && !this->Self->AbortSaid)
   {
-    vtkWarningWithObjectMacro(self, << kAborted);
-    self->AbortSaid = true;
+    vtkWarningWithObjectMacro(this->Self, << kAborted);
   }
+  this->Self->AbortSaid = true;
 }
 
 /// Phase "output": the three polydata, built in bulk, with the input's data
@@ -1761,16 +1761,6 @@ int vtkOverlayStitchMesher::RequestData(vtkInformation* vtkNotUsed(request),
   // The plane's map to 2D and back rounds like the core (a review: under the
   // host's upward rounding, 303 of 304 points of a tilted plane moved).
   const osm::RoundToNearest rounding;
-  this->AbortedThisRun = false;
-  const struct AbortRecord
-  {
-    vtkOverlayStitchMesher* Filter;
-    ~AbortRecord()
-    {
-      // A run that was not aborted ends what the abort warning covered.
-      this->Filter->AbortSaid = this->Filter->AbortSaid && this->Filter->AbortedThisRun;
-    }
-  } abortRecord{ this };
   // Whichever way the run ends, no phase is left named as current.
   const struct ProgressTextReset
   {

@@ -390,10 +390,8 @@ protected:
   vtkMultiProcessController* Controller;
 
 private:
-  class MeshRun; // one run of RequestData's steps (in the .cxx)
-  // The abort warning given since the last run that was not aborted; this run aborted.
-  bool AbortSaid = false;
-  bool AbortedThisRun = false;
+  class MeshRun;          // one run of RequestData's steps (in the .cxx)
+  bool AbortSaid = false; // the last run was aborted and said so, or followed one that did
 
   vtkOverlayStitchMesher(const vtkOverlayStitchMesher&) = delete;
   void operator=(const vtkOverlayStitchMesher&) = delete;

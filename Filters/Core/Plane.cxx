@@ -320,7 +320,7 @@ std::string PlaneMap::choose(const Array<Vec3>& points, bool projectToXY, double
   const double rounding = 4 * roundoff * largest;
   if (!(fit.maxDistance <= relativeTolerance * fit.diagonal + rounding))
   {
-    const std::string buf = " is " + generalText(fit.maxDistance, 6) +
+    const std::string distance = " is " + generalText(fit.maxDistance, 6) +
       " from their best-fitting plane (the tolerance is " + generalText(relativeTolerance, 6) +
       " times the bounding box diagonal" +
       (rounding > 0 ? " plus 4 times the coordinates' rounding, " + generalText(roundoff, 6) +
@@ -328,7 +328,7 @@ std::string PlaneMap::choose(const Array<Vec3>& points, bool projectToXY, double
             generalText(relativeTolerance * fit.diagonal + rounding, 6) + ")"
                     : ": " + generalText(relativeTolerance * fit.diagonal, 6) + ")");
     return "the input points are not coplanar: point " + std::to_string(fit.farthest) + " at " +
-      formatPoint3(points[fit.farthest]) + buf +
+      formatPoint3(points[fit.farthest]) + distance +
       "; turn on ProjectToXYPlane (osm-mesh: --project-xy) to mesh their projection onto the "
       "XY plane";
   }
