@@ -124,6 +124,7 @@ PlaneFrame frameFor(const Vec3& origin, Vec3 n, double vertical = 1e-9)
   PlaneFrame f;
   f.origin = origin;
   f.normal = n;
+  f.vertical = vertical;
   const Vec3 e = axis(smallest);
   f.u = normalized(sub(e, scaled(n, component(n, smallest))));
   f.v = cross(n, f.u);
@@ -182,7 +183,7 @@ double PlaneFrame::distance(const Vec3& p) const
 
 Point PlaneFrame::liftXY(double x, double y) const
 {
-  if (std::fabs(normal.z) < 1e-9)
+  if (std::fabs(normal.z) <= vertical)
     return toPlane({ x, y, origin.z });
   const double z = origin.z - (normal.x * (x - origin.x) + normal.y * (y - origin.y)) / normal.z;
   return toPlane({ x, y, z });

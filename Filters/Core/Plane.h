@@ -31,6 +31,10 @@ struct PlaneFrame
   Vec3 u{ 1, 0, 0 };
   Vec3 v{ 0, 1, 0 };
   Vec3 normal{ 0, 0, 1 };
+  /// A normal whose z is at most this counts as horizontal, the plane as
+  /// containing the z direction: a float Slice's vertical plane tilts its
+  /// normal by rounding, about 1e-5 (see PlaneMap::choose).
+  double vertical = 1e-9;
 
   /// 2D coordinates of the orthogonal projection of p onto the plane.
   Point toPlane(const Vec3& p) const;
@@ -39,8 +43,8 @@ struct PlaneFrame
   /// Signed distance of p from the plane (along the normal).
   double distance(const Vec3& p) const;
   /// 2D coordinates of the point of the plane straight above or below (x, y)
-  /// along z; for a plane parallel to z (within 1e-9), of the orthogonal
-  /// projection of (x, y, origin.z) instead.
+  /// along z; for a plane that contains the z direction (normal's z at most
+  /// vertical), of the orthogonal projection of (x, y, origin.z) instead.
   Point liftXY(double x, double y) const;
 };
 
@@ -107,7 +111,7 @@ public:
   Point seedXY(double x, double y) const { return fitted ? frame.liftXY(x, y) : Point{ x, y }; }
   /// Whether seedXY names one point: not in a plane that contains the z
   /// direction (x = c, y = c), where (x, y) leaves the height undefined.
-  bool seedXYDefined() const { return !fitted || std::fabs(frame.normal.z) >= 1e-9; }
+  bool seedXYDefined() const { return !fitted || std::fabs(frame.normal.z) > frame.vertical; }
 
   /// Remembers which 2D points are the input's (the first of equal ones), so
   /// that toSpace() returns their original coordinates.

@@ -758,6 +758,29 @@ void CheckSeedsInAVerticalPlane(Harness& h)
       h.Messages->HasWarning({ "RegionAttributes name no single point", "ignored" }),
     "vertical plane: (x, y) region seeds are ignored with a warning, the mesh made (area " +
       Num(withRegions) + ", 96)");
+
+  // A vertical plane at an angle to the axes near x = 1000, in float points
+  // as a Slice gives them: rounding tilts its normal by about 1e-5, and the
+  // (x, y) seed was lifted by dividing by that tilt (a review), not refused.
+  std::vector<std::array<double, 3>> corners;
+  for (const auto& st : std::vector<std::array<double, 2>>{
+         { 0, 0 }, { 10, 0 }, { 10, 10 }, { 0, 10 }, { 2, 1 }, { 4, 1 }, { 4, 3 }, { 2, 3 } })
+  {
+    corners.push_back({ 1000 + 0.8 * st[0], 1000 + 0.6 * st[0], 0.5 + st[1] });
+  }
+  auto slice = MakeLines(corners, { { 0, 1, 2, 3, 0 }, { 4, 5, 6, 7, 4 } });
+  vtkNew<vtkPoints> floats;
+  floats->SetDataTypeToFloat();
+  floats->DeepCopy(slice->GetPoints());
+  slice->SetPoints(floats);
+  h.Mesher->RemoveAllHolePoints();
+  h.Mesher->AddHolePoint(1000 + 0.8 * 3, 1000 + 0.6 * 3);
+  mesh = h.Run(slice, "an (x, y) hole seed, float input in a vertical plane at an angle");
+  Check(
+    h.Messages->HasError({ "a plane that contains the z direction", "the HolePoints property" }) &&
+      osmtest::AllOutputsEmpty(h.Mesher),
+    "float vertical plane at an angle: an (x, y) seed is refused with an error, empty outputs");
+  h.Mesher->RemoveAllHolePoints();
 }
 
 int TestNumbering()
