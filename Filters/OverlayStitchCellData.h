@@ -54,9 +54,9 @@ bool OverlayStitchPassCellData(vtkCellData* in, vtkIdType inputCells, const osm:
 /// each triangle takes the tuple of the smallest polygon (by area) that
 /// contains it, the innermost where polygons nest (even-odd rule for a
 /// polygon that crosses itself), and "InputCellId" names it. Nothing when
-/// the input has no polygon cells. When it has no line cells either, a
-/// warning says where regions lie in no polygon (as a hole point: map takes
-/// it back to the input's space).
+/// the input has no polygon cells. When it has no line cells either and the
+/// domain is the enclosed one, a warning says where regions lie in no polygon (as a hole point: map
+/// takes it back to the input's space).
 bool OverlayStitchPassPolygonData(vtkPolyData* input, const osm::Pslg& pslg,
   const osm::Result& result, const osm::PlaneMap& map, const std::vector<std::string>& reserved,
   vtkCellData* out, const std::function<bool(double)>& poll, std::vector<std::string>& warnings);

@@ -20,9 +20,9 @@
 // RemoveGhostCells choosing the cells; the points that no cell used are kept,
 // and every point kept keeps its order). Point
 // and cell arrays common to all non-empty pieces are kept; field data arrays
-// are taken from the first piece that has each name, except "HolePoints"
-// (3-component doubles), whose tuples are collected from every piece and
-// deduplicated.
+// are taken from the first piece that has each name, except "HolePoints" (2
+// or 3 components) and "RegionAttributes" (3 or 4), whose tuples are
+// collected from every piece and deduplicated.
 //
 // Point order: the mesh the core makes can depend on the order of the input
 // points (not only on the point set), and a distribution loses the input's

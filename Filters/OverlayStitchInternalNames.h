@@ -17,7 +17,8 @@
 class vtkDataObject;
 
 /// Whether an array's name is one the filter gives arrays of its input on
-/// the way (block, rank and source ids; the count of ignored cells).
+/// the way (block, rank and source ids; the count of ignored cells; the marks
+/// of malformed cell arrays and of float points).
 bool OverlayStitchIsInternalName(const char* name);
 
 /// input as it is when no point, cell or field data array of it (of any

@@ -31,9 +31,11 @@ void OverlayStitchAddSeedReference(vtkPolyData* output);
 /// now (a region's maximum area scaled with the areas), or null where
 /// nothing moves: no reference array, another number of points than it
 /// recorded (a piece of a distributed dataset, merged points: the seeds are
-/// then used as they are), or the points where it recorded them. note: why
-/// the seeds could not follow, where the points moved but by no affine map
-/// (the fourth point not where the first three's map takes it).
+/// then used as they are, while the recorded points are still among them),
+/// or the points where it recorded them. note: why the seeds could not
+/// follow, where the points moved but by no affine map (the fourth point not
+/// where the first three's map takes it), or where the number of points
+/// changed and the recorded points are gone (renumbered and moved).
 vtkSmartPointer<vtkDataObject> OverlayStitchSeedsFollowingPoints(
   vtkDataObject* input, std::string& note);
 

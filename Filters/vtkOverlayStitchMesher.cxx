@@ -2,9 +2,11 @@
 // Copyright (c) 2026, the Overlay Stitch Meshing authors
 //
 // A thin layer: vtkPolyData -> osm::Pslg, osm::mesh(), osm::Result -> three
-// vtkPolyData outputs. No geometric algorithm lives here: the mesher, the
-// input's plane (osm::PlaneMap) and which input polygon holds each region
-// (osm::innermostPolygons) are in the plain C++ core (Filters/Core).
+// vtkPolyData outputs. The mesher, the input's plane (osm::PlaneMap) and
+// which input polygon holds each region (osm::innermostPolygons) are in the
+// plain C++ core (Filters/Core); what geometry is left here is small: which
+// way the input's point normals face the mesh (NormalsOppose), and the affine map that moves
+// field data seeds with their points (OverlayStitchSeeds.cxx).
 #include "vtkOverlayStitchMesher.h"
 
 #include "vtkCellArray.h"

@@ -5,16 +5,16 @@
  * @brief   triangulate planar line data so that no angle exceeds about 170 degrees
  *
  * vtkOverlayStitchMesher meshes a Planar Straight Line Graph given as
- * vtkPolyData (or vtkUnstructuredGrid, whose vertex, line, polyline,
- * triangle, quad, pixel, polygon and strip cells are read as polydata's, and
- * whose other cells are ignored with a warning naming the first) with
- * Overlay Stitch Meshing (OSM). Line and polyline cells
- * become segments between consecutive points, polygon cells contribute their
- * closed edge loops, vertex cells (and every other input point) are meshed as
- * isolated points. Triangle strips, empty cells, lines with fewer than 2
- * points and polygons with fewer than 3 points (a last point repeating the
- * first not counted) are ignored, with one warning
- * that counts them by kind.
+ * vtkPolyData (or vtkUnstructuredGrid, whose vertex, poly-vertex, line,
+ * polyline, triangle, quad, pixel, polygon and strip cells are read as
+ * polydata's, its quadratic, cubic and Lagrange curves and faces through
+ * their nodes, a curve as the polyline of its nodes and a face as the polygon
+ * of its boundary's nodes, and its other cells, volumes and Bezier cells,
+ * ignored with a warning naming the first) with Overlay Stitch Meshing (OSM). Line and polyline
+ * cells become segments between consecutive points, polygon cells contribute their closed edge
+ * loops, vertex cells (and every other input point) are meshed as isolated points. Triangle strips,
+ * empty cells, lines with fewer than 2 points and polygons with fewer than 3 points (a last point
+ * repeating the first not counted) are ignored, with one warning that counts them by kind.
  *
  * The input points may lie in any plane:
  * - in a plane z = constant, they are meshed as they are;
@@ -30,11 +30,13 @@
  * z = the mean z of the input points.
  *
  * Hole seeds come from the HolePoints property and, when UseInputHolePoints
- * is on, from the input's field data array "HolePoints" (3 components, x y z;
- * as written by the .poly reader). For input meshed in a fitted plane, field
- * data seeds are projected orthogonally onto that plane and property seeds
- * (x, y) are moved along z onto it; in a plane that contains the z direction
- * (x = c, y = c) an (x, y) seed names no single point, and the run fails.
+ * is on, from the input's field data array "HolePoints" (2 or 3 components,
+ * (x, y) or (x, y, z); the .poly reader writes 3). For input meshed in a
+ * fitted plane, (x, y, z) seeds are projected orthogonally onto that plane and
+ * (x, y) seeds, the property's among them, are moved along z onto it; in a
+ * plane that contains the z direction (x = c, y = c, or within the rounding
+ * of float points of it) an (x, y) seed names no single point, and the run
+ * fails: give such seeds with 3 components.
  *
  * The mesher runs in three phases: an overlay Delaunay mesh of the input
  * points whose angles are at least MinimumAngle (θ1); stitching, which keeps
@@ -111,18 +113,23 @@ public:
    */
   enum DomainTypes
   {
-    DOMAIN_AUTO = 0,     ///< DOMAIN_ENCLOSED if input segments bound a region, else DOMAIN_HULL
+    /// DOMAIN_ENCLOSED if the segments enclose a region with an input point on
+    /// its boundary (where segments cross, regions a speck across do not
+    /// count), else DOMAIN_HULL
+    DOMAIN_AUTO = 0,
     DOMAIN_ENCLOSED = 1, ///< regions enclosed by segments, minus holes
-    DOMAIN_HULL = 2,     ///< the convex hull of the input points
-    DOMAIN_BOX = 3       ///< the overlay's padded box: 4 times the input's larger extent
+                         /// the convex hull of the input points, minus holes (DOMAIN_BOX, with a
+                         /// warning, where the hull has no area)
+    DOMAIN_HULL = 2,
+    DOMAIN_BOX = 3 ///< the overlay's padded box: 4 times the input's larger extent
   };
 
   ///@{
   /**
    * θ1, the smallest angle of the phase-1 overlay mesh, in degrees (1 to 35,
    * default 30). The output's largest angle is bounded by 180° − θ2, where θ2
-   * shrinks with θ1: 30° gives about 170°. Above 30° nothing is guaranteed:
-   * the mesh grows several times larger, and from about 32.5° (31.7° with
+   * grows with θ1 (a larger θ1, a lower bound): 30° gives about 170°. Above 30° nothing is
+   * guaranteed: the mesh grows several times larger, and from about 32.5° (31.7° with
    * GapRatioOverlay) the refinement may not end (an error after its cap on
    * Steiner points).
    */
@@ -185,9 +192,11 @@ public:
    * If on, input points that are not in a plane z = constant (whether they
    * lie in a tilted plane or in no plane at all) are projected onto the XY
    * plane: z is dropped, x and y are meshed as they are, and the outputs lie
-   * in the plane z = the mean z of the input points (a warning says so).
-   * Points in a plane z = constant are never changed. Default off: tilted
-   * coplanar input is meshed in its own plane, other input is an error.
+   * in the plane z = the mean z of the input points (a warning says so), the
+   * input z kept as the point array `InputZ`. Input in a vertical plane
+   * projects onto a line, which is an error. Points in a plane z = constant
+   * are never changed. Default off: tilted coplanar input is meshed in its
+   * own plane, other input is an error.
    */
   vtkSetMacro(ProjectToXYPlane, vtkTypeBool);
   vtkGetMacro(ProjectToXYPlane, vtkTypeBool);
@@ -225,9 +234,9 @@ public:
 
   ///@{
   /**
-   * If on (the default), the input's field data array "HolePoints" (3
-   * components x, y, z, as written by the .poly reader) adds hole seeds to
-   * those of the HolePoints property.
+   * If on (the default), the input's field data array "HolePoints" (2 or 3
+   * components, (x, y) or (x, y, z); the .poly reader writes 3) adds hole
+   * seeds to those of the HolePoints property.
    */
   vtkSetMacro(UseInputHolePoints, vtkTypeBool);
   vtkGetMacro(UseInputHolePoints, vtkTypeBool);
@@ -250,8 +259,11 @@ public:
 
   ///@{
   /**
-   * Stop with an error when more Steiner points than this would be needed.
-   * 0 (the default) means no cap.
+   * Stop with an error when the overlay of a meshing round would need more
+   * Steiner points than this (as the statistic OverlaySteinerPoints counts
+   * the last round's: the 4 corners of its padding box and the points
+   * refining it, in the padding too; not the points put on segments): never
+   * an invalid or partial mesh. 0 (the default) means no cap.
    */
   vtkSetClampMacro(MaximumSteinerPoints, vtkIdType, 0, VTK_ID_MAX);
   vtkGetMacro(MaximumSteinerPoints, vtkIdType);

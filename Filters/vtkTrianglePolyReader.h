@@ -25,8 +25,12 @@
  * - field data `HolePoints`: a 3-component double array (x, y, 0) with the
  *   file's hole seeds, always present, possibly with 0 tuples (the mesher
  *   uses it as hole seeds); `FileFirstIndex` (int, 1 value: 0 or 1, the
- *   numbering the file used); and, when the file has regional attributes,
- *   `RegionAttributes`: 4 components (x, y, attribute, maximum area).
+ *   numbering the file used); when the file has regional attributes,
+ *   `RegionAttributes`: 4 components (x, y, attribute, maximum area); and,
+ *   when it has hole or region seeds, `SeedReferencePoints` (4 components:
+ *   the id and coordinates of four of its points, then the number of points), by
+ *   which vtkOverlayStitchMesher moves the seeds with the points through a
+ *   Transform; the mesher does not pass it to its outputs.
  *
  * A malformed file gives an error "file:line: reason" and an empty output;
  * the request does not fail (Update() returns 1), so that the filters

@@ -1,5 +1,6 @@
 // Plain Delaunay triangulation of a point set by bulk insertion: Hilbert order,
-// walking point location, Bowyer-Watson insertion. Used by the tests as an
+// walking point location, Bowyer-Watson insertion. Used by Interpolation.cxx
+// (the triangle of known points around each other vertex), by the tests as an
 // independent check of the triangulation layer, and by benchmarks as the
 // "triangulation alone" reference.
 #ifndef osm_Delaunay_h

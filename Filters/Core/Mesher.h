@@ -18,7 +18,7 @@ enum class Domain
 {
   Auto,     ///< Enclosed if a region's boundary has input points, else Hull (Mesher.cxx).
   Enclosed, ///< Regions enclosed by segments (the exterior removed, like Triangle's -p).
-  Hull,     ///< The convex hull of the input points.
+  Hull,     ///< The convex hull of the input points (Box, warned, where it has no area).
   Box       ///< The whole padded bounding box of the overlay.
 };
 
@@ -66,7 +66,7 @@ struct Options
   double mergeTolerance = 0.0;
   /// Stop with an error when the overlay of a meshing round would need more
   /// Steiner points than this (0: no cap), counted as
-  /// Stats::overlaySteinerPoints counts the last round's: the 4 corners of its
+  /// Statistics::overlaySteinerPoints counts the last round's: the 4 corners of its
   /// padding box and the points refining it, in the padding too; not the
   /// points stitching and completion put on segments.
   std::size_t maxSteinerPoints = 0;
@@ -93,7 +93,8 @@ public:
   /// Where the mesh is made again from a gap-ratio overlay (Options::
   /// gapRatioOverlay), the second run reports from 0 again.
   virtual void report(double fraction, const char* phase) = 0;
-  /// Polled regularly; returning true makes mesh() stop with the error "aborted".
+  /// Polled regularly; returning true makes mesh() stop with the error kAbortedByTheUser
+  /// (RunContext.h).
   virtual bool aborted() { return false; }
 };
 
@@ -190,7 +191,7 @@ struct Result
 /// ok = false with a message instead. Deterministic: same input, same output.
 Result mesh(const Pslg& input, const Options& options = {}, Progress* progress = nullptr);
 
-/// θ2 and the bound 180° − θ2 on every output angle, for an overlay angle θ1
+/// The bound 180° − θ2 on every output angle, for an overlay angle θ1
 /// (degrees), 0 < θ1 <= 60: the range Options allows (1 to 35) and more.
 double predictedMaxAngleDeg(double minAngleDeg);
 

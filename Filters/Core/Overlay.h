@@ -16,7 +16,7 @@ namespace osm
 
 struct OverlayOptions
 {
-  double gamma = 1.0; ///< radius / shortest-edge bound Γ
+  double gamma = 1.0; ///< radius / shortest-edge bound Γ (with gapRatio, the gap-ratio bound)
   /// Bound the gap ratio instead (the paper's Definition 2, the premise of
   /// its Lemma 2): every triangle's circumradius at most Γ times the
   /// distance from each of its corners to that corner's nearest neighbour,
@@ -49,7 +49,7 @@ struct OverlayOptions
 struct Overlay
 {
   /// Delaunay triangulation of a padded box, the input points and Steiner points,
-  /// with every triangle of radius/edge ratio at most Γ (with limitRefinement,
+  /// with every triangle of radius/edge ratio (or gap ratio) at most Γ (with limitRefinement,
   /// every triangle that meets refineWithin). Vertices 0..3 are the box corners
   /// (counter-clockwise from the lower left).
   Triangulation mesh;
@@ -79,7 +79,7 @@ double cgroupMemoryLimit(const std::string& root);
 
 /// What a process holding a mesh takes per output triangle, at most, as
 /// measured: the core's own peak 75 bytes, osm-mesh's whole process 99 to
-/// 154 (a review measured 150 on la.poly with a size bound).
+/// 159 (a review measured 150 on la.poly with a size bound).
 constexpr double kBytesPerTriangle = 150;
 
 /// The points a mesh may have in memoryBytes (kBytesPerTriangle, 2 triangles

@@ -26,7 +26,7 @@ struct Statistics
   /// point makes every segment pass through it, and the rest are not counted.
   std::size_t crossingsSplit = 0;
   // Phase 1: overlay.
-  double gamma = 0.0; ///< radius/edge bound Γ
+  double gamma = 0.0; ///< radius/edge bound Γ (with gapRatioOverlay, the gap-ratio bound)
   double theta1Deg = 0.0;
   double predictedMaxAngleDeg = 0.0; ///< 180° − θ2
   /// The overlay bounds the gap ratio, not only radius / shortest edge
