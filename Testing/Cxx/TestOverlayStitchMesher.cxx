@@ -21,6 +21,7 @@
 #include "vtkStringArray.h"
 
 #include "HugePages.h"
+#include "Mesher.h"
 #include "Validate.h"
 
 #include <algorithm>
@@ -31,7 +32,9 @@
 #include <fstream>
 #include <iostream>
 #include <limits>
+#include <map>
 #include <random>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -510,6 +513,75 @@ int TestLargeOutputs()
   return Failures == 0 ? 0 : 1;
 }
 
+/// The defaults are written three times: the core's osm::Options, the
+/// filter's constructor and the plugin's XML (what ParaView and pvpython set).
+/// They must agree, but for ReportFailureToPipeline, which the XML turns off
+/// on purpose (its help says why).
+int TestDefaults()
+{
+  std::ifstream file(OSM_PLUGIN_XML);
+  std::stringstream text;
+  text << file.rdbuf();
+  const std::string xml = text.str();
+  Check(!xml.empty(), std::string("read ") + OSM_PLUGIN_XML);
+  std::map<std::string, std::string> xmlDefaults;
+  const std::regex property(R"re(<(?:Int|Double|IdType)VectorProperty\s([^>]*)>)re");
+  const std::regex name(R"re(\bname="([^"]*)")re"), value(R"re(\bdefault_values="([^"]*)")re");
+  for (auto it = std::sregex_iterator(xml.begin(), xml.end(), property);
+       it != std::sregex_iterator(); ++it)
+  {
+    const std::string attributes = (*it)[1];
+    std::smatch n, v;
+    if (std::regex_search(attributes, n, name) && std::regex_search(attributes, v, value))
+    {
+      xmlDefaults[n[1]] = v[1];
+    }
+  }
+  vtkNew<vtkOverlayStitchMesher> mesher;
+  const osm::Options core;
+  const std::map<std::string, double> filterDefaults = {
+    { "MinimumAngle", mesher->GetMinimumAngle() },
+    { "MaximumEdgeLength", mesher->GetMaximumEdgeLength() },
+    { "Domain", mesher->GetDomain() },
+    { "ResolveIntersections", mesher->GetResolveIntersections() },
+    { "MergeTolerance", mesher->GetMergeTolerance() },
+    { "ProjectToXYPlane", mesher->GetProjectToXYPlane() },
+    { "UseInputHolePoints", mesher->GetUseInputHolePoints() },
+    { "ApplyRegionAreas", mesher->GetApplyRegionAreas() },
+    { "GapRatioOverlay", mesher->GetGapRatioOverlay() },
+    { "MaximumSteinerPoints", static_cast<double>(mesher->GetMaximumSteinerPoints()) },
+    { "InterpolatePointData", mesher->GetInterpolatePointData() },
+    { "PassCellData", mesher->GetPassCellData() },
+    { "GenerateEdges", mesher->GetGenerateEdges() },
+    { "GenerateOverlay", mesher->GetGenerateOverlay() },
+  };
+  for (const auto& [property, filterValue] : filterDefaults)
+  {
+    const auto it = xmlDefaults.find(property);
+    const std::string xmlValue = it == xmlDefaults.end() ? "(none)" : it->second;
+    Check(it != xmlDefaults.end() && std::strtod(xmlValue.c_str(), nullptr) == filterValue,
+      property + ": the XML's default " + xmlValue + " is the filter's " +
+        std::to_string(filterValue));
+  }
+  Check(xmlDefaults.size() == filterDefaults.size() + 1 &&
+      xmlDefaults.count("ReportFailureToPipeline") == 1,
+    "every XML property with a default is compared (" + std::to_string(xmlDefaults.size()) + ")");
+  Check(xmlDefaults["ReportFailureToPipeline"] == "0" && mesher->GetReportFailureToPipeline() == 1,
+    "ReportFailureToPipeline: 1 in C++, 0 in ParaView");
+  Check(mesher->GetNumberOfHolePoints() == 0, "no hole points");
+  // The core's defaults, which osm-mesh uses too.
+  Check(core.minAngleDeg == mesher->GetMinimumAngle() &&
+      core.maxEdgeLength == mesher->GetMaximumEdgeLength() &&
+      static_cast<int>(core.domain) == mesher->GetDomain() &&
+      core.resolveCrossings == (mesher->GetResolveIntersections() != 0) &&
+      core.mergeTolerance == mesher->GetMergeTolerance() &&
+      core.gapRatioOverlay == (mesher->GetGapRatioOverlay() != 0) &&
+      core.regionAreas == (mesher->GetApplyRegionAreas() != 0) &&
+      core.maxSteinerPoints == static_cast<std::size_t>(mesher->GetMaximumSteinerPoints()),
+    "the filter's defaults are osm::Options'");
+  return Failures == 0 ? 0 : 1;
+}
+
 } // namespace
 
 int main(int argc, char* argv[])
@@ -528,9 +600,13 @@ int main(int argc, char* argv[])
   {
     status = TestLargeOutputs();
   }
+  else if (test == "defaults")
+  {
+    status = TestDefaults();
+  }
   else
   {
-    std::cerr << "usage: " << argv[0] << " contract|bad-input|large\n";
+    std::cerr << "usage: " << argv[0] << " contract|bad-input|large|defaults\n";
     return 2;
   }
   std::cout << (status == 0 ? "PASSED" : "FAILED") << "\n";
