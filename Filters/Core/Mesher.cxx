@@ -252,6 +252,14 @@ private:
   Domain chooseDomain(const Work& w, Array<int>& hull);
   void buildOutput(const Work& w, const PlanarGraph& g, Completion& c, Carving& carve,
     const Overlay& overlay, Array<Edge>& edges, Domain domain);
+  OverlayOptions overlayOptionsFor(
+    const Work& w, Domain domain, const Array<Segment>& segments, const Array<int>& hull);
+  void splitRoundCrossings(Work& w, const Walk& walk);
+  bool meshAgainAfterCarving(const Work& w, const PlanarGraph& g, const Completion& c,
+    const Carving& carve, const Overlay& overlay, const OverlayOptions& oo, Domain domain);
+  void warnAboutWalk(const Work& w, const Walk& walk, const Array<Segment>& segments,
+    const Overlay& overlay, Domain domain);
+  void warnAboutHoles(const Work& w, const Carving& carve, Domain domain);
   void warnAboutRegionSeeds(const Carving& carve);
   template <typename Unscale>
   void warnAboutDroppedSegments(const Work& w, const PlanarGraph& g, const Array<Segment>& dropped,
@@ -833,34 +841,7 @@ void Mesher::meshRounds(Work& w)
     const Domain domain = chooseDomain(w, hull);
     appendHullEdges(hull, segments);
     auto t = Clock::now();
-    OverlayOptions oo;
-    oo.gamma = st.gamma;
-    oo.gapRatio = options.gapRatioOverlay;
-    oo.maxEdgeLength = std::ldexp(boundBeforeTheOrigin(), -exponent);
-    // A bound that scaling rounds to 0 would read as none: keep it tiny, and
-    // the overlay refuses it as too small to mesh.
-    if (options.maxEdgeLength > 0 && oo.maxEdgeLength == 0)
-      oo.maxEdgeLength = std::numeric_limits<double>::denorm_min();
-    oo.maxSteinerPoints = options.maxSteinerPoints;
-    oo.sizeBoxes = regionBoxes;
-    oo.sizeFromAreas = options.regionAreas &&
-      std::any_of(input.regions.begin(), input.regions.end(),
-        [](const RegionAttribute& r) { return r.maxArea > 0; });
-    // Both the size boxes and the domain's estimate read the cycles.
-    const CycleComponents cycles = domain == Domain::Enclosed && oo.maxEdgeLength > 0
-      ? cycleComponents(w.points.size(), segments)
-      : CycleComponents{};
-    limitRefinement(oo, domain, w, segments, cycles, !sizeEverywhere);
-    if (!regionSizesKnown)
-      boundWhereKept = domain != Domain::Box && !sizeEverywhere && oo.maxEdgeLength > 0 &&
-        worthFindingTheDomainFirst(
-          oo, w.points.size(), domainAreaEstimate(w, segments, cycles, hull, domain));
-    // The bound only where the first round kept triangles (none in it).
-    if (boundWhereKept)
-    {
-      oo.sizeInBoxesOnly = true;
-      oo.sizeBoxes = regionBoxes;
-    }
+    const OverlayOptions oo = overlayOptionsFor(w, domain, segments, hull);
     // Region areas, or the bound where triangles are kept, mesh again, mostly
     // finer: this round is the smaller part.
     if (!regionSizesKnown && (boundWhereKept || oo.sizeFromAreas))
@@ -890,31 +871,7 @@ void Mesher::meshRounds(Work& w)
     st.secondsStitch += since(t);
     if (!walk.segmentCrossings.empty())
     {
-      if (!options.resolveCrossings)
-        throw Stop{ crossingError(w, walk.segmentCrossings, frame, options.pointFormat) +
-          "; enable resolving intersections to split them (the filter's ResolveIntersections; "
-          "osm-mesh without --no-resolve)" };
-      // Each round splits at rounded points, which may cross again.
-      if (++crossingRounds >= 5)
-        throw Stop{ "could not resolve all crossings after 5 rounds of splitting them at their "
-                    "rounded intersection points, which crossed again: " +
-            crossingError(w, walk.segmentCrossings, frame, options.pointFormat) +
-            "; the segments there come closer than double precision separates",
-          false, {}, { -1, -1 }, Stop::Remedy::JoinSegments };
-      if (st.crossingsSplit == 0)
-        firstCrossing =
-          describeCrossing(w, walk.segmentCrossings.front(), frame, options.pointFormat);
-      // Splitting many crossings takes a while: abort is polled around it.
-      run.report(1.0);
-      splitCrossings(w, walk.segmentCrossings, st);
-      run.report(1.0);
-      inputPointsOnSegments = walk.splitsAtInputVertices > 0;
-      SeedsAcross seeds;
-      const std::size_t joined = mergeEqualPoints(w, scaledTolerance(), seeds);
-      if (options.mergeTolerance > 0)
-        crossingsJoined += joined;
-      if (seeds.count > 0 && seedsAcrossJoins.count == 0)
-        seedsAcrossJoins = seeds;
+      splitRoundCrossings(w, walk);
       continue;
     }
     // A segment ending on another (a T-junction) or overlapping it closes a
@@ -929,58 +886,8 @@ void Mesher::meshRounds(Work& w)
       piecesEnclose = true;
       continue;
     }
-    // Say why the domain changed, once.
-    if (domain == Domain::Box && options.domain != Domain::Box)
-      res.warnings.push_back(w.points.size() == 1
-          ? "the input is one point" +
-            std::string(st.duplicatePointsMerged > 0 ? " once merged" : "") +
-            ", whose convex hull has no area: meshing the padded box around it instead"
-          : "the input points are collinear, or within rounding of it, so their convex hull has "
-            "no area at double precision: meshing the padded bounding box instead");
-    if (enclosesNothing)
-      res.warnings.push_back("the segments form cycles, but they enclose no area (collinear "
-                             "segments over each other): the auto domain meshes the convex hull");
-    if (enclosesOnlyCrossings)
-      res.warnings.push_back("the regions the segments enclose have no input point on their "
-                             "boundaries, or are specks under " +
-        roughNumber(std::ldexp(speckSize(w, scaledTolerance()), exponent)) +
-        " across (as where segments meant to meet at one point cross apart, which a merge "
-        "tolerance joins): the auto domain meshes the convex hull; the enclosed domain meshes "
-        "those regions alone");
-    if (st.crossingsSplit > 0)
-      res.warnings.push_back("split " + std::to_string(st.crossingsSplit) +
-        " crossing(s) of input segments at their intersection points, e.g. " + firstCrossing +
-        (crossingsJoined > 0 ? "; " + std::to_string(crossingsJoined) +
-              " of those points joined another within the merge tolerance"
-                             : ""));
-    if (seedsAcrossJoins.count > 0)
-      res.warnings.push_back(std::to_string(seedsAcrossJoins.count) +
-        " hole or region seed(s) now lie on the other side of a segment that bent where its "
-        "crossing joined another point within the merge tolerance, e.g. " +
-        seedsAcrossJoins.example);
     st.segmentsSplitAtVertices = walk.splitsAtInputVertices + walk.overlaps.size();
-    // Overlaps of input segments (a hull edge along a segment is no news).
-    const auto inputs = static_cast<int>(w.segments.size());
-    const auto overlap = std::find_if(walk.overlaps.begin(), walk.overlaps.end(),
-      [&](const std::array<int, 4>& o) { return o[1] < inputs; });
-    if (overlap != walk.overlaps.end())
-    {
-      const auto count = std::count_if(walk.overlaps.begin(), walk.overlaps.end(),
-        [&](const std::array<int, 4>& o) { return o[1] < inputs; });
-      const auto& [a, b, u, v] = *overlap;
-      const auto at = [&](int vertex) {
-        const Point& q = overlay.mesh.points[vertex];
-        return formatPoint(frame.toUser(q), options.pointFormat);
-      };
-      res.warnings.push_back(std::to_string(count) +
-        " piece(s) of input segments lie along another input segment and are meshed once, e.g. " +
-        segmentName(w, a) + " and " + segmentName(w, b) + " overlap from " + at(u) + " to " +
-        at(v));
-    }
-    if (std::string nearMiss =
-          nearMissWarning(w, walk, segments, input, clean.pointOf, frame, options.pointFormat);
-        !nearMiss.empty())
-      res.warnings.push_back(std::move(nearMiss));
+    warnAboutWalk(w, walk, segments, overlay, domain);
     NearMissSearch closePoints = nearMissSearch(w);
     closePoints.reach *= kClosePointsExtent / kNearMissExtent;
     closePairs = closePointPairs(w, overlay, ov, closePoints, input, clean.pointOf);
@@ -1027,33 +934,9 @@ void Mesher::meshRounds(Work& w)
     Carving carve = carveDomain(g.points, c.triangles, c.constrainedEdges, domain != Domain::Box,
       w.holes, std::move(g.intactAdjacency), w.regionSeeds, run);
     st.secondsDomain = since(t);
-    // A cycle of segments need not enclose any area: mesh the hull instead
-    // (once; this round's warnings come again).
-    if (options.domain == Domain::Auto && domain == Domain::Enclosed && carve.enclosedNothing)
+    if (meshAgainAfterCarving(w, g, c, carve, overlay, oo, domain))
     {
-      res.warnings.resize(warningsBefore);
-      enclosesNothing = true;
-      continue;
-    }
-    // Nor need regions whose boundaries pass through no input point, or
-    // specks, be what was meant: the crossings of segments meant to meet at
-    // one point close one. Without crossings, as before: every boundary has
-    // input points, and specks are the input's own.
-    if (options.domain == Domain::Auto && domain == Domain::Enclosed && st.crossingsSplit > 0 &&
-      !inputPointOnACycle(g.points, inputVertices(w, overlay.inputVertex, g.points.size()),
-        c.constrainedEdges, speckSize(w, scaledTolerance())))
-    {
-      res.warnings.resize(warningsBefore);
-      enclosesOnlyCrossings = true;
-      continue;
-    }
-    // The size bound must cover every kept triangle: where a region closed
-    // by a T-junction reaches beyond it, mesh again with the bound everywhere.
-    if (oo.maxEdgeLength > 0 && domain == Domain::Enclosed && !sizeEverywhere && !boundWhereKept &&
-      !keptWithinSizeBound(g.points, c.triangles, carve.regionId, oo))
-    {
-      res.warnings.resize(warningsBefore);
-      sizeEverywhere = true;
+      res.warnings.resize(warningsBefore); // this round's warnings come again
       continue;
     }
     // A region's maximum area is a bound on its edges, which the overlay
@@ -1098,46 +981,7 @@ void Mesher::meshRounds(Work& w)
         res.warnings.push_back(longEdgesWarning(split));
     }
     warnAboutRegionSeeds(carve);
-    if (!carve.unusedHoles.empty())
-      res.warnings.push_back(std::to_string(carve.unusedHoles.size()) +
-        " hole point(s) lie outside the meshed domain or in a region already removed, e.g. "
-        "hole " +
-        std::to_string(carve.unusedHoles.front()) + " at " +
-        formatPoint(input.holes[carve.unusedHoles.front()], options.pointFormat));
-    // Say why the mesh is empty when the holes took all of it (a seed in the
-    // wrong region, or a merge tolerance that collapsed the input).
-    if (carve.regions == 0 && w.holes.size() > carve.unusedHoles.size())
-    {
-      std::size_t used = 0;
-      while (used < carve.unusedHoles.size() && carve.unusedHoles[used] == static_cast<int>(used))
-        ++used;
-      res.warnings.push_back("the hole point(s) removed every region, e.g. hole " +
-        std::to_string(used) + " at " + formatPoint(input.holes[used], options.pointFormat) +
-        ": the mesh is empty");
-    }
-    else if (carve.regions == 0 && domain == Domain::Enclosed)
-      res.warnings.push_back(
-        "the segments enclose no region (no closed loop of them around an area): the enclosed "
-        "domain is empty; the hull or box domain meshes such input");
-    if (!carve.seedsOnSegments.empty())
-      res.warnings.push_back(std::to_string(carve.seedsOnSegments.size()) +
-        " hole point(s) lie on a segment or at its end, e.g. hole " +
-        std::to_string(carve.seedsOnSegments.front()) + " at " +
-        formatPoint(input.holes[carve.seedsOnSegments.front()], options.pointFormat) +
-        ": the region the direction +x from it enters (above, where a segment runs along +x) "
-        "was removed; move the point into the hole to choose");
-    // (A review: a seed on the outer boundary emptied the mesh, and only a
-    // seed on a segment inside was said to be on one.)
-    if (!carve.seedsOnBoundary.empty())
-      res.warnings.push_back(std::to_string(carve.seedsOnBoundary.size()) +
-        " hole point(s) lie on the domain's boundary, e.g. hole " +
-        std::to_string(carve.seedsOnBoundary.front()) + " at " +
-        formatPoint(input.holes[carve.seedsOnBoundary.front()], options.pointFormat) +
-        ": the region inside it was removed; move the point out of the domain to keep it");
-    if (options.domain == Domain::Auto && domain == Domain::Hull && st.crossingsSplit == 0)
-      if (std::string open = openOutlineWarning(w, input, clean.pointOf, options.pointFormat);
-          !open.empty())
-        res.warnings.push_back(std::move(open));
+    warnAboutHoles(w, carve, domain);
     run.phase("domain", 0.96, 1.0); // the output arrays
     res.domain = domain;
     buildOutput(w, g, c, carve, overlay, edges, domain);
@@ -1145,6 +989,218 @@ void Mesher::meshRounds(Work& w)
       res.edgeVertices.resize(graphPoints);
     return;
   }
+}
+
+/// Whether a carved round is to be meshed again another way: the auto
+/// domain's cycles enclose nothing, or only crossings and specks (the hull
+/// then), or a region reaches beyond the size bound (the bound everywhere).
+bool Mesher::meshAgainAfterCarving(const Work& w, const PlanarGraph& g, const Completion& c,
+  const Carving& carve, const Overlay& overlay, const OverlayOptions& oo, Domain domain)
+{
+  const Statistics& st = res.stats;
+  // A cycle of segments need not enclose any area: mesh the hull instead
+  // (once).
+  if (options.domain == Domain::Auto && domain == Domain::Enclosed && carve.enclosedNothing)
+  {
+    enclosesNothing = true;
+    return true;
+  }
+  // Nor need regions whose boundaries pass through no input point, or
+  // specks, be what was meant: the crossings of segments meant to meet at
+  // one point close one. Without crossings, as before: every boundary has
+  // input points, and specks are the input's own.
+  if (options.domain == Domain::Auto && domain == Domain::Enclosed && st.crossingsSplit > 0 &&
+    !inputPointOnACycle(g.points, inputVertices(w, overlay.inputVertex, g.points.size()),
+      c.constrainedEdges, speckSize(w, scaledTolerance())))
+  {
+    enclosesOnlyCrossings = true;
+    return true;
+  }
+  // The size bound must cover every kept triangle: where a region closed
+  // by a T-junction reaches beyond it, mesh again with the bound everywhere.
+  if (oo.maxEdgeLength > 0 && domain == Domain::Enclosed && !sizeEverywhere && !boundWhereKept &&
+    !keptWithinSizeBound(g.points, c.triangles, carve.regionId, oo))
+  {
+    sizeEverywhere = true;
+    return true;
+  }
+  return false;
+}
+
+/// The overlay's options for a round: Γ, the size bound and where it
+/// applies (the region boxes; only where a first round kept triangles).
+OverlayOptions Mesher::overlayOptionsFor(
+  const Work& w, Domain domain, const Array<Segment>& segments, const Array<int>& hull)
+{
+  const Statistics& st = res.stats;
+  OverlayOptions oo;
+  oo.gamma = st.gamma;
+  oo.gapRatio = options.gapRatioOverlay;
+  oo.maxEdgeLength = std::ldexp(boundBeforeTheOrigin(), -exponent);
+  // A bound that scaling rounds to 0 would read as none: keep it tiny, and
+  // the overlay refuses it as too small to mesh.
+  if (options.maxEdgeLength > 0 && oo.maxEdgeLength == 0)
+    oo.maxEdgeLength = std::numeric_limits<double>::denorm_min();
+  oo.maxSteinerPoints = options.maxSteinerPoints;
+  oo.sizeBoxes = regionBoxes;
+  oo.sizeFromAreas = options.regionAreas &&
+    std::any_of(input.regions.begin(), input.regions.end(),
+      [](const RegionAttribute& r) { return r.maxArea > 0; });
+  // Both the size boxes and the domain's estimate read the cycles.
+  const CycleComponents cycles = domain == Domain::Enclosed && oo.maxEdgeLength > 0
+    ? cycleComponents(w.points.size(), segments)
+    : CycleComponents{};
+  limitRefinement(oo, domain, w, segments, cycles, !sizeEverywhere);
+  if (!regionSizesKnown)
+    boundWhereKept = domain != Domain::Box && !sizeEverywhere && oo.maxEdgeLength > 0 &&
+      worthFindingTheDomainFirst(
+        oo, w.points.size(), domainAreaEstimate(w, segments, cycles, hull, domain));
+  // The bound only where the first round kept triangles (none in it).
+  if (boundWhereKept)
+  {
+    oo.sizeInBoxesOnly = true;
+    oo.sizeBoxes = regionBoxes;
+  }
+  return oo;
+}
+
+/// Splits the crossings of segments a round's walk found, at their rounded
+/// intersection points, for the next round; an error where crossings are not
+/// to be resolved, or cross again after 5 rounds.
+void Mesher::splitRoundCrossings(Work& w, const Walk& walk)
+{
+  Statistics& st = res.stats;
+  if (!options.resolveCrossings)
+    throw Stop{ crossingError(w, walk.segmentCrossings, frame, options.pointFormat) +
+      "; enable resolving intersections to split them (the filter's ResolveIntersections; "
+      "osm-mesh without --no-resolve)" };
+  // Each round splits at rounded points, which may cross again.
+  if (++crossingRounds >= 5)
+    throw Stop{ "could not resolve all crossings after 5 rounds of splitting them at their "
+                "rounded intersection points, which crossed again: " +
+        crossingError(w, walk.segmentCrossings, frame, options.pointFormat) +
+        "; the segments there come closer than double precision separates",
+      false, {}, { -1, -1 }, Stop::Remedy::JoinSegments };
+  if (st.crossingsSplit == 0)
+    firstCrossing = describeCrossing(w, walk.segmentCrossings.front(), frame, options.pointFormat);
+  // Splitting many crossings takes a while: abort is polled around it.
+  run.report(1.0);
+  splitCrossings(w, walk.segmentCrossings, st);
+  run.report(1.0);
+  inputPointsOnSegments = walk.splitsAtInputVertices > 0;
+  SeedsAcross seeds;
+  const std::size_t joined = mergeEqualPoints(w, scaledTolerance(), seeds);
+  if (options.mergeTolerance > 0)
+    crossingsJoined += joined;
+  if (seeds.count > 0 && seedsAcrossJoins.count == 0)
+    seedsAcrossJoins = seeds;
+}
+
+/// The round's warnings once its segments are walked: why the domain
+/// changed, the crossings split, seeds a join moved across a segment,
+/// overlapping segments, and ends that just miss a segment.
+void Mesher::warnAboutWalk(const Work& w, const Walk& walk, const Array<Segment>& segments,
+  const Overlay& overlay, Domain domain)
+{
+  const Statistics& st = res.stats;
+  // Say why the domain changed, once.
+  if (domain == Domain::Box && options.domain != Domain::Box)
+    res.warnings.push_back(w.points.size() == 1
+        ? "the input is one point" +
+          std::string(st.duplicatePointsMerged > 0 ? " once merged" : "") +
+          ", whose convex hull has no area: meshing the padded box around it instead"
+        : "the input points are collinear, or within rounding of it, so their convex hull has "
+          "no area at double precision: meshing the padded bounding box instead");
+  if (enclosesNothing)
+    res.warnings.push_back("the segments form cycles, but they enclose no area (collinear "
+                           "segments over each other): the auto domain meshes the convex hull");
+  if (enclosesOnlyCrossings)
+    res.warnings.push_back("the regions the segments enclose have no input point on their "
+                           "boundaries, or are specks under " +
+      roughNumber(std::ldexp(speckSize(w, scaledTolerance()), exponent)) +
+      " across (as where segments meant to meet at one point cross apart, which a merge "
+      "tolerance joins): the auto domain meshes the convex hull; the enclosed domain meshes "
+      "those regions alone");
+  if (st.crossingsSplit > 0)
+    res.warnings.push_back("split " + std::to_string(st.crossingsSplit) +
+      " crossing(s) of input segments at their intersection points, e.g. " + firstCrossing +
+      (crossingsJoined > 0 ? "; " + std::to_string(crossingsJoined) +
+            " of those points joined another within the merge tolerance"
+                           : ""));
+  if (seedsAcrossJoins.count > 0)
+    res.warnings.push_back(std::to_string(seedsAcrossJoins.count) +
+      " hole or region seed(s) now lie on the other side of a segment that bent where its "
+      "crossing joined another point within the merge tolerance, e.g. " +
+      seedsAcrossJoins.example);
+  // Overlaps of input segments (a hull edge along a segment is no news).
+  const auto inputs = static_cast<int>(w.segments.size());
+  const auto overlap = std::find_if(walk.overlaps.begin(), walk.overlaps.end(),
+    [&](const std::array<int, 4>& o) { return o[1] < inputs; });
+  if (overlap != walk.overlaps.end())
+  {
+    const auto count = std::count_if(walk.overlaps.begin(), walk.overlaps.end(),
+      [&](const std::array<int, 4>& o) { return o[1] < inputs; });
+    const auto& [a, b, u, v] = *overlap;
+    const auto at = [&](int vertex) {
+      const Point& q = overlay.mesh.points[vertex];
+      return formatPoint(frame.toUser(q), options.pointFormat);
+    };
+    res.warnings.push_back(std::to_string(count) +
+      " piece(s) of input segments lie along another input segment and are meshed once, e.g. " +
+      segmentName(w, a) + " and " + segmentName(w, b) + " overlap from " + at(u) + " to " + at(v));
+  }
+  if (std::string nearMiss =
+        nearMissWarning(w, walk, segments, input, clean.pointOf, frame, options.pointFormat);
+      !nearMiss.empty())
+    res.warnings.push_back(std::move(nearMiss));
+}
+
+/// The warnings of a carved domain: hole seeds that removed nothing, or
+/// everything, or lie on segments or the boundary; an empty enclosed domain;
+/// an outline the auto domain found open.
+void Mesher::warnAboutHoles(const Work& w, const Carving& carve, Domain domain)
+{
+  const Statistics& st = res.stats;
+  if (!carve.unusedHoles.empty())
+    res.warnings.push_back(std::to_string(carve.unusedHoles.size()) +
+      " hole point(s) lie outside the meshed domain or in a region already removed, e.g. "
+      "hole " +
+      std::to_string(carve.unusedHoles.front()) + " at " +
+      formatPoint(input.holes[carve.unusedHoles.front()], options.pointFormat));
+  // Say why the mesh is empty when the holes took all of it (a seed in the
+  // wrong region, or a merge tolerance that collapsed the input).
+  if (carve.regions == 0 && w.holes.size() > carve.unusedHoles.size())
+  {
+    std::size_t used = 0;
+    while (used < carve.unusedHoles.size() && carve.unusedHoles[used] == static_cast<int>(used))
+      ++used;
+    res.warnings.push_back("the hole point(s) removed every region, e.g. hole " +
+      std::to_string(used) + " at " + formatPoint(input.holes[used], options.pointFormat) +
+      ": the mesh is empty");
+  }
+  else if (carve.regions == 0 && domain == Domain::Enclosed)
+    res.warnings.push_back(
+      "the segments enclose no region (no closed loop of them around an area): the enclosed "
+      "domain is empty; the hull or box domain meshes such input");
+  if (!carve.seedsOnSegments.empty())
+    res.warnings.push_back(std::to_string(carve.seedsOnSegments.size()) +
+      " hole point(s) lie on a segment or at its end, e.g. hole " +
+      std::to_string(carve.seedsOnSegments.front()) + " at " +
+      formatPoint(input.holes[carve.seedsOnSegments.front()], options.pointFormat) +
+      ": the region the direction +x from it enters (above, where a segment runs along +x) "
+      "was removed; move the point into the hole to choose");
+  // (A review: a seed on the outer boundary emptied the mesh, and only a
+  // seed on a segment inside was said to be on one.)
+  if (!carve.seedsOnBoundary.empty())
+    res.warnings.push_back(std::to_string(carve.seedsOnBoundary.size()) +
+      " hole point(s) lie on the domain's boundary, e.g. hole " +
+      std::to_string(carve.seedsOnBoundary.front()) + " at " +
+      formatPoint(input.holes[carve.seedsOnBoundary.front()], options.pointFormat) +
+      ": the region inside it was removed; move the point out of the domain to keep it");
+  if (options.domain == Domain::Auto && domain == Domain::Hull && st.crossingsSplit == 0)
+    if (std::string open = openOutlineWarning(w, input, clean.pointOf, options.pointFormat);
+        !open.empty())
+      res.warnings.push_back(std::move(open));
 }
 
 std::string Mesher::longEdgesWarning(const LongEdges& split) const
