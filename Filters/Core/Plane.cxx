@@ -319,7 +319,7 @@ std::string PlaneMap::choose(const Array<Vec3>& points, bool projectToXY, double
   for (const Vec3& p : points)
     largest = std::max({ largest, std::fabs(p.x), std::fabs(p.y), std::fabs(p.z) });
   const double rounding = 4 * roundoff * largest;
-  if (!(fit.maxDistance <= relativeTolerance * fit.diagonal + rounding))
+  if (!fit.coplanar(relativeTolerance, rounding))
   {
     const std::string distance = " is " + generalText(fit.maxDistance, 6) +
       " from their best-fitting plane (the tolerance is " + generalText(relativeTolerance, 6) +

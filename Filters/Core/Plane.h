@@ -63,10 +63,11 @@ struct PlaneFit
   /// normal is closest to the z axis.
   bool degenerate = false;
 
-  /// All points within relativeTolerance * diagonal of the plane.
-  bool coplanar(double relativeTolerance) const
+  /// All points within relativeTolerance * diagonal of the plane, plus
+  /// rounding (PlaneMap::choose: the coordinates' rounding as stored).
+  bool coplanar(double relativeTolerance, double rounding = 0.0) const
   {
-    return maxDistance <= relativeTolerance * diagonal;
+    return maxDistance <= relativeTolerance * diagonal + rounding;
   }
 };
 
