@@ -172,6 +172,22 @@ TEST(Mesher, EdgeClassesAreConsistent)
     input += (e.flags & EdgeInput) != 0;
   EXPECT_GT(r.stats.discardedEdges, 0u); // the 5° wedge forces bad crossings
   EXPECT_GT(input, wedgeInSquare().segments.size());
+  // A discarded edge joins its two triangles into a face of 4 or more sides,
+  // which completion triangulates and counts (a mutation test: the count
+  // was never checked).
+  EXPECT_GT(r.stats.facesCompleted, 0u);
+  EXPECT_GE(r.stats.largestFace, 4u);
+  // Points alone in the box domain (the hull domain walks the hull's edges)
+  // leave every overlay triangle as it is: nothing to complete.
+  Pslg points;
+  for (int k = 0; k < 40; ++k)
+    points.points.push_back({ (k * 37 % 41) * 0.25, (k * 11 % 13) * 0.5 });
+  Options box;
+  box.domain = Domain::Box;
+  const Result p = meshAndValidate(points, "40 points", box);
+  EXPECT_EQ(p.stats.facesCompleted, 0u);
+  EXPECT_EQ(p.stats.largestFace, 3u);
+  EXPECT_EQ(p.stats.crossings, 0u);
   // Meshed in two rounds, the second at the size bound: the statistics
   // count the last (a review: they added up the rounds' counts).
   Pslg thinL;

@@ -577,10 +577,10 @@ TEST(PolyReaderErrors, TextWhereANumberBelongsIsQuoted)
   EXPECT_TRUE(failsAt(poly("3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n1 0\n1 0x1 3\n"), "t.poly:6", "'0x1'"));
   // One leading '+' is dropped as strtod drops it, not a second sign (a
   // mutation test: '+-1' read as -1).
-  EXPECT_TRUE(failsAt(poly("3 2 0 0\n1 0 0\n2 +-1 0\n3 0 1\n"), "t.poly:3",
-    "x coordinate of vertex 2, found '+-1'"));
-  EXPECT_TRUE(failsAt(poly("3 2 0 0\n1 0 0\n2 1 ++1\n3 0 1\n"), "t.poly:3",
-    "y coordinate of vertex 2, found '++1'"));
+  EXPECT_TRUE(failsAt(
+    poly("3 2 0 0\n1 0 0\n2 +-1 0\n3 0 1\n"), "t.poly:3", "x coordinate of vertex 2, found '+-1'"));
+  EXPECT_TRUE(failsAt(
+    poly("3 2 0 0\n1 0 0\n2 1 ++1\n3 0 1\n"), "t.poly:3", "y coordinate of vertex 2, found '++1'"));
   EXPECT_TRUE(failsAt(poly("3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n1 0\n1 +-1 3\n"), "t.poly:6",
     "first endpoint of segment 1, found '+-1'"));
   EXPECT_TRUE(failsAt(poly("2 2 0 1\n1 0 0 a\n2 1 0\n"), "t.poly:2",
