@@ -1578,6 +1578,23 @@ TEST(Mesher, RegionalAttributesOfASharedRegionAreTheLastSeeds)
     << nanArea.error;
   p.regions[2].maxArea = std::numeric_limits<double>::infinity();
   EXPECT_TRUE(mesh(p, areas).ok) << "an infinite area bounds nothing";
+  // A non-finite attribute, or hole point, is refused and named (a mutation
+  // test: no core test made either).
+  p.regions[1].attribute = std::nan("");
+  const Result nanAttribute = mesh(p);
+  EXPECT_FALSE(nanAttribute.ok);
+  EXPECT_NE(nanAttribute.error.find("region 1 has a non-finite attribute"), std::string::npos)
+    << nanAttribute.error;
+  p.regions[1].attribute = 1.0;
+  ASSERT_TRUE(mesh(p).ok);
+  for (const double bad : { std::nan(""), std::numeric_limits<double>::infinity() })
+  {
+    p.holes = { { 0.25, 0.25 }, { bad, 0.5 } };
+    const Result badHole = mesh(p);
+    EXPECT_FALSE(badHole.ok) << bad;
+    EXPECT_NE(badHole.error.find("hole point 1 has a non-finite coordinate"), std::string::npos)
+      << badHole.error;
+  }
 }
 
 double triangleArea(const Result& r, std::size_t t)
