@@ -266,6 +266,16 @@ TEST(PolyReader, ZeroMarkerFlagsIgnoreExtraColumns)
   EXPECT_TRUE(f.segmentMarkers.empty());
 }
 
+TEST(PolyReader, NegativeMarkerFlagsMeanMarkers)
+{
+  // Any nonzero flag, as in triangle.c (a mutation test: only positive ones
+  // were tried).
+  const PolyFile f = poly("3 2 0 -1\n1 0 0 8\n2 1 0 7\n3 0 1\n1 -2\n1 1 2 9\n0\n");
+  ASSERT_TRUE(f.ok) << f.error;
+  EXPECT_EQ(f.pointMarkers, (std::vector<int>{ 8, 7, 0 }));
+  EXPECT_EQ(f.segmentMarkers, (std::vector<int>{ 9 }));
+}
+
 TEST(PolyReader, HeaderFieldsAfterTheCountAreOptional)
 {
   // triangle.c defaults a missing dimension to 2 and missing counts of
