@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -298,4 +299,22 @@ TEST(MeshWriter, SvgAndJson)
   EXPECT_NE(json.str().find("\"ok\": true"), std::string::npos);
   EXPECT_NE(json.str().find("\"OutputTriangles\": " + std::to_string(r.mesh.triangles.size())),
     std::string::npos);
+  // Messages quote file names and tokens: quotes, backslashes and control
+  // bytes are escaped, so the JSON stays valid (a mutation test: none of them
+  // was written in a test).
+  Result failed;
+  failed.ok = false;
+  failed.error = "C:\\data\\t.poly:3: found '\"x\"'\tand \x01";
+  failed.warnings = { "a\\b", "line\nbreak" };
+  failed.stats.maxAngleDeg = std::numeric_limits<double>::quiet_NaN();
+  std::ostringstream bad;
+  writeStatisticsJson(bad, failed);
+  EXPECT_NE(bad.str().find("\"ok\": false"), std::string::npos) << bad.str();
+  EXPECT_NE(
+    bad.str().find(R"json("error": "C:\\data\\t.poly:3: found '\"x\"'\u0009and \u0001",)json"),
+    std::string::npos)
+    << bad.str();
+  EXPECT_NE(bad.str().find(R"json("Warnings": ["a\\b", "line\u000abreak"])json"), std::string::npos)
+    << bad.str();
+  EXPECT_NE(bad.str().find("\"MaxAngleDeg\": 0,"), std::string::npos) << bad.str();
 }
