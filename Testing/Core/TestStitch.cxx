@@ -157,6 +157,39 @@ TEST(Stitch, CrossingsAreClassifiedAtTheta1)
   EXPECT_GT(bad, 0u); // the fan's near-parallel crossings
 }
 
+TEST(Stitch, ACrossingExactlyAtTheta1IsNotGood)
+{
+  // A good crossing is one above θ1, strictly (a mutation test: at θ1 itself
+  // no test looked). A segment across a vertical overlay edge at right
+  // angles, with sin θ1 = 1 exactly: the sine is 1, not above it.
+  const Array<Point> pts{ { 0, 1 }, { 2, 1 }, { 1, 0 }, { 1, 1.8 } };
+  RunContext run(nullptr);
+  OverlayOptions o;
+  o.gamma = gammaForMinAngle(30);
+  Overlay overlay = buildOverlay(pts, o, run);
+  const OverlayEdges ov = compactOverlay(overlay.mesh);
+  const Array<Segment> segments{ { overlay.inputVertex[0], overlay.inputVertex[1] } };
+  const Walk right = walkSegments(ov, overlay, segments, 1.0, run);
+  std::size_t vertical = 0;
+  for (const Crossing& c : right.crossings)
+  {
+    const Point& p = overlay.mesh.points[ov.ends(c.edge)[0]];
+    const Point& q = overlay.mesh.points[ov.ends(c.edge)[1]];
+    if (p.x == 1 && q.x == 1)
+    {
+      ++vertical;
+      EXPECT_FALSE(c.good) << "a crossing at exactly θ1 = 90 degrees";
+    }
+  }
+  EXPECT_EQ(vertical, 1u);
+  // Just below, it is good.
+  const Walk below = walkSegments(ov, overlay, segments, std::nextafter(1.0, 0.0), run);
+  for (const Crossing& c : below.crossings)
+    if (overlay.mesh.points[ov.ends(c.edge)[0]].x == 1 &&
+      overlay.mesh.points[ov.ends(c.edge)[1]].x == 1)
+      EXPECT_TRUE(c.good);
+}
+
 TEST(Stitch, EdgesAreKeptOrDiscardedByTheirCrossings)
 {
   Array<Point> pts{ { 0, 0 }, { 1, 0.02 }, { 0, 0.05 }, { 1, 0.08 }, { 0.3, 0.9 } };
