@@ -1109,8 +1109,10 @@ void Mesher::warnAboutWalk(const Work& w, const Walk& walk, const Array<Segment>
         ? "the input is one point" +
           std::string(st.duplicatePointsMerged > 0 ? " once merged" : "") +
           ", whose convex hull has no area: meshing the padded box around it instead"
-        : "the input points are collinear, or within rounding of it, so their convex hull has "
-          "no area at double precision: meshing the padded bounding box instead");
+        : "the input points are collinear or within rounding of it, or some lie within rounding "
+          "of a corner of their convex hull or of a hull edge from both sides, so that hull has "
+          "no area at double precision somewhere (its edges would pass within rounding of input "
+          "points): meshing the padded bounding box instead");
   if (enclosesNothing)
     res.warnings.push_back("the segments form cycles, but they enclose no area (collinear "
                            "segments over each other): the auto domain meshes the convex hull");

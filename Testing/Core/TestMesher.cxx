@@ -1297,6 +1297,13 @@ TEST(Clean, RefusesSegmentIndicesOutOfRange)
   const Result r = mesh(p);
   EXPECT_FALSE(r.ok);
   EXPECT_NE(r.error.find("segment 4 refers to point 9"), std::string::npos) << r.error;
+  // One past the last point, the first index out of range (a mutation test).
+  p.segments.back() = { 0, 4 };
+  const Result past = mesh(p);
+  EXPECT_FALSE(past.ok);
+  EXPECT_NE(
+    past.error.find("segment 4 refers to point 4, but there are 4 points"), std::string::npos)
+    << past.error;
 }
 
 TEST(Clean, EmptyInputGivesAnEmptyMeshAndAWarning)
@@ -3611,6 +3618,36 @@ TEST(Domain, HullBoundaryPassesThroughPointsWithinRounding)
   const Array<Point> square{ { 0, 0 }, { 2, 0 }, { 2, 2 }, { 0, 2 }, { 1, 0 }, { 1, 1 },
     { 0.5, 0 } };
   EXPECT_EQ(hullBoundary(square), (Array<int>{ 0, 6, 4, 1, 2, 3 }));
+  // On the upper chain too, which runs the other way (a mutation test: only
+  // the lower edge had points on it).
+  const Array<Point> top{ { 0, 0 }, { 2, 0 }, { 2, 2 }, { 0, 2 }, { 1.5, 2 }, { 0.5, 2 } };
+  EXPECT_EQ(hullBoundary(top), (Array<int>{ 0, 1, 2, 4, 5, 3 }));
+}
+
+TEST(Domain, APointAHairFromAHullCornerIsSaidToBeWhyTheBoxIsMeshed)
+{
+  // A point within rounding of a hull corner lies within rounding of both
+  // hull edges there, which would pass closer to it than double precision
+  // separates (at x = 20 the mesh of such a hull fails): the padded box is
+  // meshed, as for collinear points, and the warning said only that the
+  // points were collinear (found by a mutation test).
+  Pslg diamond;
+  diamond.points = { { 0, 0 }, { 10, 1 }, { 20, 0 }, { 10, -1 }, { 1e-14, 0 } };
+  EXPECT_TRUE(hullBoundary(diamond.points).empty());
+  const Result r = meshAndValidate(diamond, "a diamond with a point a hair from a corner");
+  EXPECT_EQ(r.domain, Domain::Box);
+  EXPECT_TRUE(mentions(r.warnings, "within rounding of a corner of their convex hull"));
+  EXPECT_TRUE(mentions(r.warnings, "a hair apart")) << "the pair is named, with the remedy";
+  // At the corner x = 20, 1e-14 is below what the coordinates resolve: an
+  // error that names the remedy.
+  diamond.points.back() = { 20 - 1e-14, 0 };
+  const Result far = mesh(diamond);
+  EXPECT_FALSE(far.ok);
+  EXPECT_NE(far.error.find("a merge tolerance"), std::string::npos) << far.error;
+  // A thin wedge whose sides run within rounding of a point far from the
+  // corner is thinner than rounding there too.
+  const Array<Point> thin{ { 0, 0 }, { 1e6, 1e-9 }, { 1e6, -1e-9 }, { 5e5, 0 } };
+  EXPECT_TRUE(hullBoundary(thin).empty());
 }
 
 TEST(Domain, AHullWithANearlyVerticalEdgeHasItsArea)
