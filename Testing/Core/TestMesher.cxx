@@ -1545,6 +1545,23 @@ TEST(Mesher, RegionalAttributesGoToEveryTriangleOfTheirRegion)
     "1 region point(s) lie outside the meshed domain or in a hole, e.g. region 0 at"));
 }
 
+TEST(Mesher, AZeroMaximumAreaBoundsNothing)
+{
+  // As in Triangle, an area of 0 (a 4-token region line gives its attribute,
+  // often 0, as its area) bounds nothing: with region areas applied the mesh
+  // is the one without, and without them nothing is said (a mutation test:
+  // >= 0 refused the mesh as too fine to make, or warned of an unapplied area).
+  Pslg p = square();
+  p.regions = { { { 0.5, 0.5 }, 0.0, 0.0 } };
+  Options areas;
+  areas.regionAreas = true;
+  const Result applied = meshAndValidate(p, "a zero area, applied", areas);
+  const Result plain = meshAndValidate(p, "a zero area, not applied");
+  EXPECT_EQ(applied.mesh.triangles, plain.mesh.triangles);
+  EXPECT_FALSE(mentions(plain.warnings, "maximum triangle area"));
+  EXPECT_FALSE(mentions(applied.warnings, "maximum triangle area"));
+}
+
 TEST(Mesher, RegionalAttributesOfASharedRegionAreTheLastSeeds)
 {
   // More seeds than the scan handles: the grid finds them. The last seed of a
