@@ -1421,6 +1421,17 @@ TEST(Mesher, HoleSeedOnASegmentIsSaid)
       EXPECT_TRUE(mentions(r.warnings, "1 hole point(s) lie on the domain's boundary"))
         << seed.x << " " << seed.y << ", " << points << " points";
     }
+  // Within rounding of a slanted side, not exactly on it: (0.1, 0.3) lies
+  // 2.8e-17 inside the side from (0, 0) to (1, 3) (a mutation test: only
+  // seeds exactly on the boundary were tried).
+  Pslg slant;
+  slant.points = { { 0, 0 }, { 1, 3 }, { 3, 3 }, { 3, 0 } };
+  slant.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 } };
+  slant.holes = { { 0.1, 0.3 } };
+  ASSERT_NE(orient2d(slant.points[0], slant.points[1], slant.holes[0]), 0.0);
+  const Result within = mesh(slant);
+  ASSERT_TRUE(within.ok) << within.error;
+  EXPECT_TRUE(mentions(within.warnings, "1 hole point(s) lie on the domain's boundary"));
   // One too many is said to be so, not also to have removed its region.
   Pslg two = square();
   two.holes = { { 0.5, 0.5 }, { 0, 0.5 } };
