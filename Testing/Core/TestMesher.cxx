@@ -762,6 +762,13 @@ TEST(Mesher, ASegmentEndAHairShortOfAnotherSegmentIsWarnedOf)
     { 0.3000002, 0.5 }, { 0.3000003, 0.5 } };
   dense.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 }, { 4, 5 }, { 5, 6 }, { 6, 7 } };
   EXPECT_FALSE(mentions(meshAndValidate(dense, "a dense polyline").warnings, shortOf));
+  // Its chain reaches back within 64 gaps (here 31: 3e-6 along, then 1e-7
+  // down to its first segment, in a unit extent; a mutation test: only 2 to
+  // 3 gaps were tried).
+  Pslg hook;
+  hook.points = { { 0, 0 }, { 1, 0 }, { 1, 1e-7 }, { 1 - 3e-6, 1e-7 }, { 0, 1 } };
+  hook.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 } };
+  EXPECT_FALSE(mentions(meshAndValidate(hook, "a hook 31 gaps long").warnings, shortOf));
   // Nor where the near segment shares a vertex: a small input angle.
   Pslg wedge;
   wedge.points = { { 0, 0 }, { 1, 0 }, { 0.5, 1e-8 }, { 0, 1 } };
