@@ -2641,6 +2641,10 @@ TEST(Clean, ASeedBesideABentSegmentIsWarnedAbout)
   near.domain = Domain::Hull;
   EXPECT_TRUE(mentions(mesh(diagonal, near).warnings,
     "1 hole or region seed(s) lie within the merge tolerance of a segment that was split"));
+  // And before its start, the same (a mutation test: only the far end was tried).
+  diagonal.holes = { { -0.14, 0 } };
+  EXPECT_TRUE(mentions(mesh(diagonal, near).warnings,
+    "1 hole or region seed(s) lie within the merge tolerance of a segment that was split"));
   // Each seed counted once, holes named before regions (seeds by x find them).
   Pslg more = p;
   more.regions.push_back({ { 4, 5.2 } });
@@ -2687,6 +2691,19 @@ TEST(Clean, ASeedAMergeMovesASegmentAcrossIsWarnedAbout)
   const Result collapsed = mesh(p, o);
   ASSERT_TRUE(collapsed.ok) << collapsed.error;
   EXPECT_TRUE(mentions(collapsed.warnings, "e.g. region 0 at (2.001, 5.001) and segment 7"));
+  // A zero-length input segment (dropped by cleaning) moved nowhere: a seed
+  // beside the points it joins is not said to be crossed (a mutation test).
+  Pslg zero = square();
+  for (Point& q : zero.points)
+    q = { 10 * q.x, 10 * q.y };
+  zero.points.insert(zero.points.end(), { { 5, 5 }, { 5.05, 5 } });
+  zero.segments.push_back({ 5, 5 });
+  zero.holes = { { 5.02, 5.02 } };
+  Options merge;
+  merge.mergeTolerance = 0.1;
+  const Result dropped = mesh(zero, merge);
+  ASSERT_TRUE(dropped.ok) << dropped.error;
+  EXPECT_FALSE(mentions(dropped.warnings, warning));
 }
 
 TEST(Clean, MergeToleranceFarBelowTheCoordinates)
