@@ -510,3 +510,24 @@ TEST(Stitch, TheStitchedGraphDoesNotDependOnTheWalkOrder)
     }
   }
 }
+
+// Where two segments overlap, the overlay edges crossing the shared part are
+// crossed once, not once per segment: the statistics count the same crossings
+// as for the line cut into pieces that only touch (the same points, so the same
+// overlay).
+TEST(Stitch, OverlappingSegmentsCountEachCrossingOnce)
+{
+  const Array<Point> pts{ { 0, 0 }, { 2, 0 }, { 1, 0 }, { 3, 0 }, { 0.3, 0.5 }, { 1.7, -0.4 },
+    { 1.2, 0.3 }, { 2.6, 0.45 }, { 0.5, -0.2 }, { 1.5, 0.2 } };
+  auto crossingStats = [&](const Array<Segment>& segs) {
+    Stitched s = stitchInput(pts, segs, 30);
+    Statistics stats;
+    Array<Edge> edges;
+    stitch(s.ov, s.overlay.mesh.points, s.overlay.isInput, s.walk, &edges, stats);
+    return std::array<std::size_t, 3>{ stats.crossings, stats.goodCrossings, stats.badCrossings };
+  };
+  const auto overlapping = crossingStats({ { 0, 1 }, { 2, 3 } });
+  const auto pieces = crossingStats({ { 0, 2 }, { 2, 1 }, { 1, 3 } });
+  EXPECT_GT(pieces[0], 0u);
+  EXPECT_EQ(overlapping, pieces);
+}
