@@ -53,12 +53,18 @@ std::string openOutlineWarning(
   Array<int> degree(w.points.size(), 0);
   for (const Segment& s : w.segments)
     ++degree[s[0]], ++degree[s[1]];
+  // Ends are named by input point: a split crossing, which has none, has 2 or
+  // more segments.
+  Array<std::uint8_t> isInput(w.points.size(), 0);
+  for (int v : pointOf)
+    if (v >= 0 && static_cast<std::size_t>(v) < isInput.size())
+      isInput[v] = 1;
   Array<int> ends;
   std::size_t touched = 0;
   for (std::size_t v = 0; v < degree.size(); ++v)
   {
     touched += degree[v] > 0;
-    if (degree[v] == 1)
+    if (degree[v] == 1 && isInput[v])
       ends.push_back(static_cast<int>(v));
   }
   const auto user = [&](int v) { return firstInputPoint(pointOf, v); };

@@ -1199,7 +1199,7 @@ void Mesher::warnAboutHoles(const Work& w, const Carving& carve, Domain domain)
       std::to_string(carve.seedsOnBoundary.front()) + " at " +
       formatPoint(input.holes[carve.seedsOnBoundary.front()], options.pointFormat) +
       ": the region inside it was removed; move the point out of the domain to keep it");
-  if (options.domain == Domain::Auto && domain == Domain::Hull && st.crossingsSplit == 0)
+  if (options.domain == Domain::Auto && domain == Domain::Hull)
     if (std::string open = openOutlineWarning(w, input, clean.pointOf, options.pointFormat);
         !open.empty())
       res.warnings.push_back(std::move(open));

@@ -841,6 +841,15 @@ TEST(Mesher, AnOutlineThatDoesNotCloseIsSaidToBeMeshedAsItsHull)
   r = meshAndValidate(gap, "the same outline, joined", joined);
   EXPECT_NEAR(area(r.mesh), 12, 1e-6);
   EXPECT_FALSE(mentions(r.warnings, "meet no other segment"));
+  // Crossing segments elsewhere, split, do not hide it (a mutation test: the
+  // warning was left out whenever a crossing had been split).
+  Pslg crossed = gap;
+  crossed.points.insert(crossed.points.end(), { { 6, 0 }, { 8, 2 }, { 6, 2 }, { 8, 0 } });
+  crossed.segments.insert(crossed.segments.end(), { { 7, 8 }, { 9, 10 } });
+  r = meshAndValidate(crossed, "the outline beside an X");
+  EXPECT_EQ(r.stats.crossingsSplit, 1u);
+  EXPECT_TRUE(mentions(r.warnings,
+    "segment ends at point 0 at (0, 0) and point 6 at (0, 1e-09) meet no other segment"));
   Pslg open = gap;
   open.points.pop_back();
   open.segments.pop_back();
