@@ -236,7 +236,7 @@ int TestContract()
       "statistic OutputTriangles matches the mesh");
   }
 
-  // The core's independent validator on the filter's output: the input's
+  // The independent validator on the filter's output: the input's
   // segments conform, every input point is a vertex, the domain is the
   // square (the slit and wedge inside; no holes), and no angle exceeds the
   // bound.

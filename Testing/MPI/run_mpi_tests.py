@@ -18,7 +18,7 @@ run passes when every rank held part of the input (its probe printed a cell
 count > 0), the statistics from the Mesh output's field data equal the serial
 ones (triangles, vertices, input points and segments, repairs, regions, min and
 max angle), only one rank's worth of triangles exists, and the fetched mesh
-passes the core's independent validator (osm_cli_helper validate).
+passes the independent validator (osm_cli_helper validate).
 """
 import argparse
 import json
