@@ -15,6 +15,7 @@
 #include "Clean.h"
 #include "Mesher.h"
 #include "NumberText.h"
+#include "OverlayStitchArrayNames.h"
 #include "OverlayStitchArrays.h"
 #include "OverlayStitchGather.h"
 #include "OverlayStitchMarkers.h"
@@ -98,7 +99,7 @@ bool Carry(vtkCellData* in, vtkIdType inputCells, vtkIdTypeArray* cellIds,
 vtkSmartPointer<vtkIdTypeArray> NewCellIds(vtkIdType n)
 {
   auto ids = vtkSmartPointer<vtkIdTypeArray>::New();
-  ids->SetName("InputCellId");
+  ids->SetName(OverlayStitchArrayNames::InputCellId);
   ids->SetNumberOfTuples(n);
   return ids;
 }
@@ -162,7 +163,7 @@ bool OverlayStitchPassCellData(vtkCellData* in, vtkIdType inputCells, const osm:
   // Triangle's markers, by its rules.
   for (auto& [source, target] : carried)
   {
-    if (OverlayStitchIsMarker(source, "SegmentMarker"))
+    if (OverlayStitchIsMarker(source, OverlayStitchArrayNames::SegmentMarker))
     {
       const osm::TriangleMarkers markers(
         pslg, result, OverlayStitchSegmentMarkers(source, segmentCells));

@@ -26,6 +26,8 @@
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
+#include "OverlayStitchArrayNames.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -43,8 +45,8 @@
 namespace
 {
 
-const char* const HolePointsName = "HolePoints";
-const char* const RegionAttributesName = "RegionAttributes";
+const char* const HolePointsName = OverlayStitchArrayNames::HolePoints;
+const char* const RegionAttributesName = OverlayStitchArrayNames::RegionAttributes;
 
 /// Exact coordinates of a point; -0.0 and +0.0 are the same point.
 using PointKey = std::array<double, 3>;
@@ -773,7 +775,7 @@ void OverlayStitchToSourceIds(vtkDataSetAttributes* in, const char* sourceIdName
   if (block)
   {
     vtkNew<vtkIdTypeArray> blockIds;
-    blockIds->SetName("InputBlockId");
+    blockIds->SetName(OverlayStitchArrayNames::InputBlockId);
     blockIds->SetNumberOfTuples(n);
     for (vtkIdType i = 0; i < n; ++i)
     {
@@ -1265,7 +1267,7 @@ void PieceCombination::SetHoleSeeds()
 //------------------------------------------------------------------------------
 bool OverlayStitchCountsFromOne(vtkFieldData* field)
 {
-  vtkDataArray* first = field ? field->GetArray("FileFirstIndex") : nullptr;
+  vtkDataArray* first = field ? field->GetArray(OverlayStitchArrayNames::FileFirstIndex) : nullptr;
   return first && first->GetNumberOfTuples() == 1 && first->GetComponent(0, 0) == 1.0;
 }
 

@@ -4,6 +4,7 @@
 
 #include "vtkDataArray.h"
 
+#include "OverlayStitchArrayNames.h"
 #include "OverlayStitchArrays.h"
 
 #include <algorithm>
@@ -12,7 +13,7 @@ std::vector<int> OverlayStitchSegmentMarkers(
   vtkAbstractArray* segmentMarkers, const std::vector<vtkIdType>& segmentCells)
 {
   std::vector<int> markers;
-  if (!OverlayStitchIsMarker(segmentMarkers, "SegmentMarker"))
+  if (!OverlayStitchIsMarker(segmentMarkers, OverlayStitchArrayNames::SegmentMarker))
   {
     return markers;
   }

@@ -12,6 +12,7 @@
 
 #include "Interpolation.h"
 #include "Mesher.h"
+#include "OverlayStitchArrayNames.h"
 #include "OverlayStitchArrays.h"
 #include "OverlayStitchMarkers.h"
 #include "Pslg.h"
@@ -60,9 +61,9 @@ bool OverlayStitchInterpolatePointData(vtkPointData* in, vtkCellData* inCells,
       data->Fill(0.0); // a vertex with no terms (none on the input) reads 0
     }
     carried.push_back({ source, target,
-      OverlayStitchIsFloating(source)                  ? Carried::Linear
-        : OverlayStitchIsMarker(source, "PointMarker") ? Carried::Marker
-                                                       : Carried::Largest });
+      OverlayStitchIsFloating(source)                                         ? Carried::Linear
+        : OverlayStitchIsMarker(source, OverlayStitchArrayNames::PointMarker) ? Carried::Marker
+                                                                              : Carried::Largest });
   }
   if (carried.empty())
   {
@@ -75,7 +76,8 @@ bool OverlayStitchInterpolatePointData(vtkPointData* in, vtkCellData* inCells,
   {
     triangle.emplace(pslg, result,
       OverlayStitchSegmentMarkers(
-        inCells ? inCells->GetArray("SegmentMarker") : nullptr, segmentCells));
+        inCells ? inCells->GetArray(OverlayStitchArrayNames::SegmentMarker) : nullptr,
+        segmentCells));
   }
 
   vtkNew<vtkIdList> ids;

@@ -9,6 +9,8 @@
 #include "vtkNew.h"
 #include "vtkPolyData.h"
 
+#include "OverlayStitchArrayNames.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -212,8 +214,9 @@ vtkSmartPointer<vtkDataObject> OverlayStitchSeedsFollowingPoints(
   auto* data = vtkDataSet::SafeDownCast(input);
   vtkFieldData* field = data ? data->GetFieldData() : nullptr;
   vtkDataArray* reference = field ? field->GetArray(OverlayStitchSeedReferenceName) : nullptr;
-  vtkDataArray* holes = field ? field->GetArray("HolePoints") : nullptr;
-  vtkDataArray* regions = field ? field->GetArray("RegionAttributes") : nullptr;
+  vtkDataArray* holes = field ? field->GetArray(OverlayStitchArrayNames::HolePoints) : nullptr;
+  vtkDataArray* regions =
+    field ? field->GetArray(OverlayStitchArrayNames::RegionAttributes) : nullptr;
   const vtkIdType n = data ? data->GetNumberOfPoints() : 0;
   if (!reference || reference->GetNumberOfComponents() != 4 ||
     reference->GetNumberOfTuples() != kReferencePoints + 1 || (!holes && !regions))

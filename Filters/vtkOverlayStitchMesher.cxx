@@ -37,6 +37,7 @@
 #include "Geometry.h"
 #include "HugePages.h"
 #include "Mesher.h"
+#include "OverlayStitchArrayNames.h"
 #include "OverlayStitchArrays.h"
 #include "OverlayStitchCellArrays.h"
 #include "OverlayStitchCellData.h"
@@ -73,6 +74,8 @@ vtkStandardNewMacro(vtkOverlayStitchMesher);
 // range repeat the core's: change them together.
 static_assert(osm::kMinAngleDegLowest == 1.0 && osm::kMinAngleDegHighest == 35.0,
   "MinimumAngle's clamp (vtkOverlayStitchMesher.h, OverlayStitchMesher.xml) follows the core's");
+
+namespace Names = OverlayStitchArrayNames;
 
 namespace
 {
@@ -112,7 +115,8 @@ void PassFieldData(vtkFieldData* in, vtkPolyData* output)
   {
     vtkAbstractArray* array = in->GetAbstractArray(a);
     const char* name = array->GetName();
-    if (array->GetNumberOfTuples() > 0 && !(name && std::strcmp(name, "FileFirstIndex") == 0) &&
+    if (array->GetNumberOfTuples() > 0 &&
+      !(name && std::strcmp(name, Names::FileFirstIndex) == 0) &&
       !(name && std::strcmp(name, OverlayStitchSeedReferenceName) == 0) &&
       !OverlayStitchIsInternalName(name) && (!name || !out->GetAbstractArray(name)))
     {
@@ -587,10 +591,10 @@ std::string NotNumeric(vtkFieldData* field, const char* name)
 /// an array of another shape, which is ignored.
 std::string ReadRegionAttributes(vtkPolyData* input, const osm::PlaneMap& map, osm::Pslg& pslg)
 {
-  vtkDataArray* regions = input->GetFieldData()->GetArray("RegionAttributes");
+  vtkDataArray* regions = input->GetFieldData()->GetArray(Names::RegionAttributes);
   if (!regions)
   {
-    return NotNumeric(input->GetFieldData(), "RegionAttributes");
+    return NotNumeric(input->GetFieldData(), Names::RegionAttributes);
   }
   const int components = regions->GetNumberOfComponents();
   if (components != 3 && components != 4)
@@ -807,7 +811,7 @@ void FillMesh(const osm::Result& result, const osm::PlaneMap& map, vtkPolyData* 
   }
 
   const auto numberOfVertices = static_cast<vtkIdType>(result.mesh.vertices.size());
-  auto origin = MakeArray<vtkUnsignedCharArray>("VertexOrigin", numberOfVertices);
+  auto origin = MakeArray<vtkUnsignedCharArray>(Names::VertexOrigin, numberOfVertices);
   for (vtkIdType i = 0; i < numberOfVertices; ++i)
   {
     const auto value = static_cast<std::size_t>(i) < result.vertexOrigin.size()
@@ -816,14 +820,14 @@ void FillMesh(const osm::Result& result, const osm::PlaneMap& map, vtkPolyData* 
     origin->SetValue(i, static_cast<unsigned char>(value));
   }
   output->GetPointData()->AddArray(origin);
-  auto inputPoint = MakeArray<vtkIdTypeArray>("InputPointId", numberOfVertices);
+  auto inputPoint = MakeArray<vtkIdTypeArray>(Names::InputPointId, numberOfVertices);
   std::copy(inputOf.begin(), inputOf.end(), inputPoint->GetPointer(0));
   output->GetPointData()->AddArray(inputPoint);
 
   const auto numberOfTriangles = static_cast<vtkIdType>(result.mesh.triangles.size());
-  auto minAngle = MakeArray<vtkDoubleArray>("MinAngle", numberOfTriangles);
-  auto maxAngle = MakeArray<vtkDoubleArray>("MaxAngle", numberOfTriangles);
-  auto regionId = MakeArray<vtkIntArray>("RegionId", numberOfTriangles);
+  auto minAngle = MakeArray<vtkDoubleArray>(Names::MinAngle, numberOfTriangles);
+  auto maxAngle = MakeArray<vtkDoubleArray>(Names::MaxAngle, numberOfTriangles);
+  auto regionId = MakeArray<vtkIntArray>(Names::RegionId, numberOfTriangles);
   const double degrees = 180.0 / std::acos(-1.0);
   const auto& v = result.mesh.vertices;
   const Poll arrays = Part(poll, 0.4, 1.0);
@@ -852,7 +856,7 @@ void FillMesh(const osm::Result& result, const osm::PlaneMap& map, vtkPolyData* 
   output->GetCellData()->AddArray(regionId);
   if (!result.regionAttribute.empty())
   {
-    auto attribute = MakeArray<vtkDoubleArray>("RegionAttribute", numberOfTriangles);
+    auto attribute = MakeArray<vtkDoubleArray>(Names::RegionAttribute, numberOfTriangles);
     std::copy(
       result.regionAttribute.begin(), result.regionAttribute.end(), attribute->GetPointer(0));
     output->GetCellData()->AddArray(attribute);
@@ -889,11 +893,11 @@ void FillEdges(
   output->SetLines(cells);
 
   const auto numberOfEdges = static_cast<vtkIdType>(result.edges.size());
-  auto overlay = MakeArray<vtkUnsignedCharArray>("Overlay", numberOfEdges);
-  auto kept = MakeArray<vtkUnsignedCharArray>("Kept", numberOfEdges);
-  auto discarded = MakeArray<vtkUnsignedCharArray>("Discarded", numberOfEdges);
-  auto isInput = MakeArray<vtkUnsignedCharArray>("Input", numberOfEdges);
-  auto edgeClass = MakeArray<vtkUnsignedCharArray>("EdgeClass", numberOfEdges);
+  auto overlay = MakeArray<vtkUnsignedCharArray>(Names::Overlay, numberOfEdges);
+  auto kept = MakeArray<vtkUnsignedCharArray>(Names::Kept, numberOfEdges);
+  auto discarded = MakeArray<vtkUnsignedCharArray>(Names::Discarded, numberOfEdges);
+  auto isInput = MakeArray<vtkUnsignedCharArray>(Names::Input, numberOfEdges);
+  auto edgeClass = MakeArray<vtkUnsignedCharArray>(Names::EdgeClass, numberOfEdges);
   const Poll arrays = Part(poll, 0.5, 1.0);
   for (vtkIdType e = 0; e < numberOfEdges; ++e)
   {
@@ -913,15 +917,16 @@ void FillEdges(
   output->GetCellData()->AddArray(discarded);
   output->GetCellData()->AddArray(isInput);
   output->GetCellData()->AddArray(edgeClass);
-  output->GetCellData()->SetActiveScalars("EdgeClass");
+  output->GetCellData()->SetActiveScalars(Names::EdgeClass);
 
   // The names of the EdgeClass categories, indexed by value.
   vtkNew<vtkStringArray> names;
-  names->SetName("EdgeClassNames");
-  names->InsertNextValue("Uncrossed");
-  names->InsertNextValue("Kept");
-  names->InsertNextValue("Discarded");
-  names->InsertNextValue("Input");
+  names->SetName(Names::EdgeClassNames);
+  for (auto c : { osm::EdgeClass::Uncrossed, osm::EdgeClass::Kept, osm::EdgeClass::Discarded,
+         osm::EdgeClass::Input })
+  {
+    names->InsertNextValue(osm::edgeClassName(c));
+  }
   output->GetFieldData()->AddArray(names);
 }
 
@@ -1316,13 +1321,13 @@ void vtkOverlayStitchMesher::MeshRun::KeepInputZ()
 {
   vtkPointData* pointData = this->Input->GetPointData();
   if (!this->Map.isProjected() || !this->Self->GetInterpolatePointData() ||
-    pointData->GetAbstractArray("InputZ") ||
+    pointData->GetAbstractArray(Names::InputZ) ||
     static_cast<vtkIdType>(this->Points.size()) != this->Input->GetNumberOfPoints())
   {
     return;
   }
   auto z = vtkSmartPointer<vtkDoubleArray>::New();
-  z->SetName("InputZ");
+  z->SetName(Names::InputZ);
   z->SetNumberOfValues(static_cast<vtkIdType>(this->Points.size()));
   for (std::size_t i = 0; i < this->Points.size(); ++i)
   {
@@ -1427,7 +1432,7 @@ std::optional<int> vtkOverlayStitchMesher::MeshRun::ReadHoleSeeds()
   // vertical line of the plane: refused rather than placed at some height.
   vtkFieldData* field = this->Input->GetFieldData();
   vtkDataArray* fieldHoles =
-    self->GetUseInputHolePoints() ? field->GetArray("HolePoints") : nullptr;
+    self->GetUseInputHolePoints() ? field->GetArray(Names::HolePoints) : nullptr;
   // (Region seeds there are left out with a warning (ReadRegionAttributes):
   // they label and size regions, and a .poly's region line refused every
   // mesh of its file turned upright, a review.)
@@ -1459,7 +1464,7 @@ std::optional<int> vtkOverlayStitchMesher::MeshRun::ReadHoleSeeds()
   {
     if (self->GetUseInputHolePoints())
     {
-      if (const std::string said = NotNumeric(field, "HolePoints"); !said.empty())
+      if (const std::string said = NotNumeric(field, Names::HolePoints); !said.empty())
       {
         vtkWarningWithObjectMacro(self, << said);
       }
@@ -1516,7 +1521,7 @@ osm::Options vtkOverlayStitchMesher::MeshRun::MakeOptions(bool interpolate) cons
   // Triangle's vertex markers need the input subsegments, to know which
   // vertices lie on a marked segment.
   options.keepEdges = self->GenerateEdges != 0 ||
-    (interpolate && this->Input->GetPointData()->GetArray("PointMarker"));
+    (interpolate && this->Input->GetPointData()->GetArray(Names::PointMarker));
   options.keepOverlay = self->GenerateOverlay != 0;
   options.keepVertexSegments = interpolate; // the segment of each vertex, to carry data along
   if (this->Map.isFitted())
@@ -1641,10 +1646,11 @@ int vtkOverlayStitchMesher::MeshRun::FillOutputs(bool interpolate)
   };
   // An output's own arrays, which an input array may not take the name of
   // (InputBlockId only for a composite input, which alone has it).
-  auto ownNames = [this](std::vector<std::string> names) {
+  auto ownNames = [this](const auto& own) {
+    std::vector<std::string> names(own.begin(), own.end());
     if (this->Composite)
     {
-      names.emplace_back("InputBlockId");
+      names.emplace_back(Names::InputBlockId);
     }
     return names;
   };
@@ -1661,7 +1667,7 @@ int vtkOverlayStitchMesher::MeshRun::FillOutputs(bool interpolate)
   if (interpolate)
   {
     OverlayStitchInterpolatePointData(input->GetPointData(), input->GetCellData(), this->Pslg,
-      result, segmentCells, ownNames({ "VertexOrigin", "InputPointId" }), carried,
+      result, segmentCells, ownNames(Names::MeshPointArrays), carried,
       outputSteps(start, start + 0.06), warnings);
     warn();
     this->Reuse.reset();
@@ -1680,13 +1686,13 @@ int vtkOverlayStitchMesher::MeshRun::FillOutputs(bool interpolate)
     return 1;
   }
   OverlayStitchToSourceIds(input->GetPointData(), OverlayStitchSourcePointIdName,
-    vtkIdTypeArray::SafeDownCast(this->Mesh->GetPointData()->GetArray("InputPointId")),
+    vtkIdTypeArray::SafeDownCast(this->Mesh->GetPointData()->GetArray(Names::InputPointId)),
     this->Mesh->GetPointData());
   if (self->PassCellData)
   {
     OverlayStitchPassPolygonData(input, this->Pslg, result, this->Map,
-      ownNames({ "MinAngle", "MaxAngle", "RegionId", "RegionAttribute", "InputCellId" }),
-      this->Mesh->GetCellData(), outputSteps(start + 0.09, edges), warnings);
+      ownNames(Names::MeshCellArrays), this->Mesh->GetCellData(), outputSteps(start + 0.09, edges),
+      warnings);
     warn();
     if (this->Aborted())
     {
@@ -1700,11 +1706,11 @@ int vtkOverlayStitchMesher::MeshRun::FillOutputs(bool interpolate)
     array->SetValue(0, value);
     mesh->GetFieldData()->AddArray(array);
   };
-  addCount(
-    "IgnoredCells", static_cast<double>(this->Ignored.Total() + OverlayStitchIgnoredCells(input)));
-  addCount("InputHolePoints", static_cast<double>(this->InputHoles));
-  addCount("InputPlaneFitted", this->Map.isFitted() ? 1.0 : 0.0);
-  addCount("InputProjectedToXY", this->Map.isProjected() ? 1.0 : 0.0);
+  addCount(Names::IgnoredCells,
+    static_cast<double>(this->Ignored.Total() + OverlayStitchIgnoredCells(input)));
+  addCount(Names::InputHolePoints, static_cast<double>(this->InputHoles));
+  addCount(Names::InputPlaneFitted, this->Map.isFitted() ? 1.0 : 0.0);
+  addCount(Names::InputProjectedToXY, this->Map.isProjected() ? 1.0 : 0.0);
   self->UpdateProgress(edges);
   if (this->Aborted())
   {
@@ -1716,12 +1722,11 @@ int vtkOverlayStitchMesher::MeshRun::FillOutputs(bool interpolate)
     if (self->PassCellData && !AbortRequested(self))
     {
       OverlayStitchPassCellData(input->GetCellData(), input->GetNumberOfCells(), this->Pslg, result,
-        segmentCells,
-        ownNames({ "Overlay", "Kept", "Discarded", "Input", "EdgeClass", "InputCellId" }),
-        this->Edges->GetCellData(), outputSteps(edges + 0.1, overlay), warnings);
+        segmentCells, ownNames(Names::EdgesCellArrays), this->Edges->GetCellData(),
+        outputSteps(edges + 0.1, overlay), warnings);
       // The input's active cell scalars came along active; the Edges output
       // opens colored by its classes all the same.
-      this->Edges->GetCellData()->SetActiveScalars("EdgeClass");
+      this->Edges->GetCellData()->SetActiveScalars(Names::EdgeClass);
       warn();
     }
   }

@@ -22,6 +22,7 @@
 #include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
+#include "OverlayStitchArrayNames.h"
 #include "PolyReader.h"
 
 #include <algorithm>
@@ -39,7 +40,7 @@ namespace
 void AddHolePoints(const osm::PolyFile* file, vtkPolyData* output)
 {
   vtkNew<vtkDoubleArray> holes;
-  holes->SetName("HolePoints");
+  holes->SetName(OverlayStitchArrayNames::HolePoints);
   holes->SetNumberOfComponents(3);
   if (file)
   {
@@ -99,7 +100,7 @@ void FillOutput(const osm::PolyFile& file, vtkPolyData* output)
   if (!file.pointMarkers.empty() || !file.segmentMarkers.empty())
   {
     vtkNew<vtkIntArray> markers;
-    markers->SetName("PointMarker");
+    markers->SetName(OverlayStitchArrayNames::PointMarker);
     markers->SetNumberOfTuples(numberOfPoints);
     for (vtkIdType i = 0; i < numberOfPoints; ++i)
     {
@@ -135,7 +136,7 @@ void FillOutput(const osm::PolyFile& file, vtkPolyData* output)
     // Cell data spans every cell: the vertex cells (first) get marker 0.
     const vtkIdType numberOfVerts = verts->GetNumberOfCells();
     vtkNew<vtkIntArray> markers;
-    markers->SetName("SegmentMarker");
+    markers->SetName(OverlayStitchArrayNames::SegmentMarker);
     markers->SetNumberOfTuples(numberOfVerts + lines->GetNumberOfCells());
     for (vtkIdType c = 0; c < numberOfVerts; ++c)
     {
@@ -152,14 +153,14 @@ void FillOutput(const osm::PolyFile& file, vtkPolyData* output)
 
   // The numbering the file used (0 or 1), so that tools can quote its numbers.
   vtkNew<vtkIntArray> firstIndex;
-  firstIndex->SetName("FileFirstIndex");
+  firstIndex->SetName(OverlayStitchArrayNames::FileFirstIndex);
   firstIndex->InsertNextValue(file.firstIndex);
   output->GetFieldData()->AddArray(firstIndex);
 
   if (!file.pslg.regions.empty())
   {
     vtkNew<vtkDoubleArray> regions;
-    regions->SetName("RegionAttributes");
+    regions->SetName(OverlayStitchArrayNames::RegionAttributes);
     regions->SetNumberOfComponents(4);
     regions->SetNumberOfTuples(static_cast<vtkIdType>(file.pslg.regions.size()));
     for (std::size_t r = 0; r < file.pslg.regions.size(); ++r)

@@ -38,6 +38,8 @@
 #include "Clean.h" // formatNumber
 #include "MeshWriter.h"
 #include "OutputFile.h"
+#include "Overlay.h" // gammaForMinAngle, minAngleForGamma
+#include "OverlayStitchArrayNames.h"
 #include "OverlayStitchSeeds.h"
 #include "PolyReader.h"
 #include "StagedOutput.h"
@@ -66,6 +68,8 @@
 #ifndef OSM_VERSION
 #define OSM_VERSION "unknown"
 #endif
+
+namespace Names = OverlayStitchArrayNames;
 
 namespace
 {
@@ -669,16 +673,15 @@ bool ParseArguments(int argc, char* argv[], Arguments& args, OsmOutputWindow* wi
   if (args.gammaGiven)
   {
     // theta1 = asin(1 / (2 gamma)) must lie in [1, 35] degrees.
-    const double degrees = 180.0 / std::acos(-1.0);
-    const double lo = 1.0 / (2.0 * std::sin(osm::kMinAngleDegHighest / degrees));
-    const double hi = 1.0 / (2.0 * std::sin(osm::kMinAngleDegLowest / degrees));
+    const double lo = osm::gammaForMinAngle(osm::kMinAngleDegHighest);
+    const double hi = osm::gammaForMinAngle(osm::kMinAngleDegLowest);
     if (!(gamma >= lo && gamma <= hi))
     {
       Fail("--gamma must be between " + Number(lo) + " and " + Number(hi) +
           " (theta1 = asin(1/(2G)) from 35 to 1 degrees), got " + Number(gamma),
         2);
     }
-    args.minAngle = std::asin(1.0 / (2.0 * gamma)) * degrees;
+    args.minAngle = osm::minAngleForGamma(gamma);
     // Rounding at the ends of the range must not fall outside the filter's clamp.
     args.minAngle =
       std::min(osm::kMinAngleDegHighest, std::max(osm::kMinAngleDegLowest, args.minAngle));
@@ -867,7 +870,7 @@ osm::Result ToResult(vtkPolyData* mesh, vtkPolyData* edges)
   const vtkIdType numberOfPoints = mesh->GetNumberOfPoints();
   r.mesh.vertices.resize(static_cast<std::size_t>(numberOfPoints));
   r.vertexOrigin.assign(static_cast<std::size_t>(numberOfPoints), osm::VertexOrigin::Other);
-  vtkDataArray* origin = mesh->GetPointData()->GetArray("VertexOrigin");
+  vtkDataArray* origin = mesh->GetPointData()->GetArray(Names::VertexOrigin);
   for (vtkIdType i = 0; i < numberOfPoints; ++i)
   {
     double p[3];
@@ -879,8 +882,8 @@ osm::Result ToResult(vtkPolyData* mesh, vtkPolyData* edges)
         static_cast<osm::VertexOrigin>(static_cast<int>(origin->GetComponent(i, 0)));
     }
   }
-  vtkDataArray* region = mesh->GetCellData()->GetArray("RegionId");
-  vtkDataArray* attribute = mesh->GetCellData()->GetArray("RegionAttribute");
+  vtkDataArray* region = mesh->GetCellData()->GetArray(Names::RegionId);
+  vtkDataArray* attribute = mesh->GetCellData()->GetArray(Names::RegionAttribute);
   auto cells = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
   vtkIdType cellId = mesh->GetNumberOfVerts() + mesh->GetNumberOfLines();
   for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell(), ++cellId)
@@ -911,8 +914,9 @@ osm::Result ToResult(vtkPolyData* mesh, vtkPolyData* edges)
       r.edgeVertices[static_cast<std::size_t>(i)] = osm::Point{ p[0], p[1] };
     }
     vtkCellData* cd = edges->GetCellData();
-    const std::pair<const char*, std::uint8_t> flags[] = { { "Overlay", osm::EdgeOverlay },
-      { "Kept", osm::EdgeKept }, { "Discarded", osm::EdgeDiscarded }, { "Input", osm::EdgeInput } };
+    const std::pair<const char*, std::uint8_t> flags[] = { { Names::Overlay, osm::EdgeOverlay },
+      { Names::Kept, osm::EdgeKept }, { Names::Discarded, osm::EdgeDiscarded },
+      { Names::Input, osm::EdgeInput } };
     auto lines = vtk::TakeSmartPointer(edges->GetLines()->NewIterator());
     vtkIdType lineId = edges->GetNumberOfVerts();
     for (lines->GoToFirstCell(); !lines->IsDoneWithTraversal(); lines->GoToNextCell(), ++lineId)
@@ -985,7 +989,7 @@ osm::NodeData NodeDataOf(vtkPolyData* mesh, vtkPolyData* edges)
       data.attributes.push_back(a->GetComponent(v, 0));
     }
   }
-  vtkDataArray* markers = pd->GetArray("PointMarker");
+  vtkDataArray* markers = pd->GetArray(Names::PointMarker);
   if (markers && markers->GetNumberOfComponents() == 1)
   {
     for (vtkIdType v = 0; v < n; ++v)
@@ -994,7 +998,8 @@ osm::NodeData NodeDataOf(vtkPolyData* mesh, vtkPolyData* edges)
     }
   }
   // The Edges output's segment markers, per line as ToResult lists them.
-  vtkDataArray* edgeMarkers = edges ? edges->GetCellData()->GetArray("SegmentMarker") : nullptr;
+  vtkDataArray* edgeMarkers =
+    edges ? edges->GetCellData()->GetArray(Names::SegmentMarker) : nullptr;
   if (edgeMarkers)
   {
     auto lines = vtk::TakeSmartPointer(edges->GetLines()->NewIterator());
@@ -1017,10 +1022,11 @@ osm::NodeData NodeDataOf(vtkPolyData* mesh, vtkPolyData* edges)
 /// mesh's order; numbers from the input file's first index.
 void ToTriangleNumbering(osm::Result& r, osm::NodeData& data, vtkPolyData* mesh, vtkPointSet* input)
 {
-  vtkDataArray* first = input->GetFieldData()->GetArray("FileFirstIndex");
+  vtkDataArray* first = input->GetFieldData()->GetArray(Names::FileFirstIndex);
   data.firstIndex =
     first && first->GetNumberOfTuples() == 1 && first->GetComponent(0, 0) == 0 ? 0 : 1;
-  auto* inputIds = vtkIdTypeArray::SafeDownCast(mesh->GetPointData()->GetArray("InputPointId"));
+  auto* inputIds =
+    vtkIdTypeArray::SafeDownCast(mesh->GetPointData()->GetArray(Names::InputPointId));
   const std::size_t inputs = static_cast<std::size_t>(input->GetNumberOfPoints());
   const std::size_t vertices = r.mesh.vertices.size();
   if (!inputIds || static_cast<std::size_t>(inputIds->GetNumberOfTuples()) != vertices)
@@ -1049,7 +1055,7 @@ void ToTriangleNumbering(osm::Result& r, osm::NodeData& data, vtkPolyData* mesh,
   std::vector<double> attributes(nodes * k, 0.0);
   std::vector<int> markers(data.markers.empty() ? 0 : nodes, 0);
   vtkPointData* in = input->GetPointData();
-  vtkDataArray* inMarkers = in->GetArray("PointMarker");
+  vtkDataArray* inMarkers = in->GetArray(Names::PointMarker);
   for (std::size_t i = 0; i < inputs; ++i)
   {
     if (meshVertex[i] >= 0)
@@ -1097,14 +1103,15 @@ void ToTriangleNumbering(osm::Result& r, osm::NodeData& data, vtkPolyData* mesh,
 /// other arrays (a .vtp input's point data, polygon cell data) it leaves out.
 void WarnNotInNodeFiles(vtkPolyData* mesh, const osm::NodeData& data, OsmOutputWindow* window)
 {
-  std::vector<std::string> points = { "VertexOrigin", "InputPointId", "InputBlockId" };
+  std::vector<std::string> points(Names::MeshPointArrays.begin(), Names::MeshPointArrays.end());
+  points.emplace_back(Names::InputBlockId);
   for (std::size_t a = 0; a < data.attributeCount; ++a)
   {
     points.push_back("Attribute" + std::to_string(a));
   }
   if (!data.markers.empty())
   {
-    points.emplace_back("PointMarker");
+    points.emplace_back(Names::PointMarker);
   }
   std::string left;
   auto note = [&left](
@@ -1120,8 +1127,9 @@ void WarnNotInNodeFiles(vtkPolyData* mesh, const osm::NodeData& data, OsmOutputW
     }
   };
   note(mesh->GetPointData(), "point data", points);
-  note(mesh->GetCellData(), "cell data",
-    { "MinAngle", "MaxAngle", "RegionId", "RegionAttribute", "InputCellId", "InputBlockId" });
+  std::vector<std::string> cells(Names::MeshCellArrays.begin(), Names::MeshCellArrays.end());
+  cells.emplace_back(Names::InputBlockId);
+  note(mesh->GetCellData(), "cell data", cells);
   if (!left.empty())
   {
     window->DisplayWarningText(
@@ -1154,7 +1162,7 @@ void SeedsOf(vtkPointSet* input, bool useHoles, osm::NodeData& data)
     input ? OverlayStitchSeedsFollowingPoints(input, note) : nullptr;
   vtkDataObject* seeds = moved ? moved.GetPointer() : input;
   vtkFieldData* field = seeds ? seeds->GetFieldData() : nullptr;
-  vtkDataArray* holes = field && useHoles ? field->GetArray("HolePoints") : nullptr;
+  vtkDataArray* holes = field && useHoles ? field->GetArray(Names::HolePoints) : nullptr;
   if (holes && (holes->GetNumberOfComponents() == 2 || holes->GetNumberOfComponents() == 3))
   {
     for (vtkIdType i = 0; i < holes->GetNumberOfTuples(); ++i)
@@ -1162,7 +1170,7 @@ void SeedsOf(vtkPointSet* input, bool useHoles, osm::NodeData& data)
       data.holes.push_back({ holes->GetComponent(i, 0), holes->GetComponent(i, 1) });
     }
   }
-  vtkDataArray* regions = field ? field->GetArray("RegionAttributes") : nullptr;
+  vtkDataArray* regions = field ? field->GetArray(Names::RegionAttributes) : nullptr;
   const int components = regions ? regions->GetNumberOfComponents() : 0;
   if (components == 3 || components == 4)
   {
@@ -1373,7 +1381,7 @@ int Run(int argc, char* argv[], OsmOutputWindow* window)
 
   // Input in a tilted plane is meshed in that plane: x and y alone do not
   // describe it, so the 2D outputs would be wrong. Refuse before writing any.
-  vtkDataArray* fitted = mesh->GetFieldData()->GetArray("InputPlaneFitted");
+  vtkDataArray* fitted = mesh->GetFieldData()->GetArray(Names::InputPlaneFitted);
   const bool tilted = fitted && fitted->GetNumberOfTuples() > 0 && fitted->GetComponent(0, 0) != 0;
   const bool nodeOutput = Extension(args.output) == ".node";
   if (tilted && (nodeOutput || !args.svg.empty()))

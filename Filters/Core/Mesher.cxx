@@ -53,6 +53,22 @@ EdgeClass edgeClass(std::uint8_t flags)
   return EdgeClass::Uncrossed;
 }
 
+const char* edgeClassName(EdgeClass c)
+{
+  switch (c)
+  {
+    case EdgeClass::Kept:
+      return "Kept";
+    case EdgeClass::Discarded:
+      return "Discarded";
+    case EdgeClass::Input:
+      return "Input";
+    case EdgeClass::Uncrossed:
+      break;
+  }
+  return "Uncrossed";
+}
+
 namespace
 {
 

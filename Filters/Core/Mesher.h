@@ -137,6 +137,9 @@ struct Edge
 
 EdgeClass edgeClass(std::uint8_t flags);
 
+/// The class's name: "Uncrossed", "Kept", "Discarded" or "Input".
+const char* edgeClassName(EdgeClass c);
+
 /// A triangle mesh: vertices and counter-clockwise triangles.
 struct TriMesh
 {

@@ -56,6 +56,13 @@ double gammaForMinAngle(double minAngleDeg)
   return 1.0 / (2.0 * series::sin(minAngleDeg * series::kPi / 180.0));
 }
 
+double minAngleForGamma(double gamma)
+{
+  // libm's: called once per run, outside the meshing call, on the whole range
+  // (sin 35° lies beyond series::asin's).
+  return std::asin(1.0 / (2.0 * gamma)) * 180.0 / series::kPi;
+}
+
 namespace
 {
 

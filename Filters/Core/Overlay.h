@@ -113,6 +113,9 @@ Overlay buildOverlay(const Array<Point>& points, const OverlayOptions& options, 
 /// For 0 < θ1 <= 90, the range Options allows (1 to 35) and more.
 double gammaForMinAngle(double minAngleDeg);
 
+/// The inverse: θ1 in degrees for a gap ratio Γ >= 1/2 (osm-mesh's --gamma).
+double minAngleForGamma(double gamma);
+
 } // namespace osm
 
 #endif

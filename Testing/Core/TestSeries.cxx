@@ -108,6 +108,10 @@ TEST(Series, TheMeshersConstantsAsWithLibm)
     EXPECT_LE(ulps(predictedMaxAngleDeg(deg), libmPredictedMaxAngle(deg)), 2) << deg;
   }
   EXPECT_NEAR(predictedMaxAngleDeg(30.0), 169.95, 0.01);
+  // osm-mesh's --gamma goes back to θ1 through the inverse, on the whole range.
+  for (double deg = 1.0; deg <= 35.0; deg += 1.0 / 64)
+    EXPECT_NEAR(minAngleForGamma(gammaForMinAngle(deg)), deg, 1e-12) << deg;
+  EXPECT_NEAR(minAngleForGamma(1.0), 30.0, 1e-12);
 }
 
 } // namespace

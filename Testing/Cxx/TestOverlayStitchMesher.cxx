@@ -288,8 +288,10 @@ int TestContract()
   }
   auto* names =
     vtkStringArray::SafeDownCast(edges->GetFieldData()->GetAbstractArray("EdgeClassNames"));
-  Check(names && names->GetNumberOfValues() == 4 && names->GetValue(2) == "Discarded",
-    "EdgeClassNames names the four classes");
+  Check(names && names->GetNumberOfValues() == 4 && names->GetValue(0) == "Uncrossed" &&
+      names->GetValue(1) == "Kept" && names->GetValue(2) == "Discarded" &&
+      names->GetValue(3) == "Input",
+    "EdgeClassNames names the four classes, in the order of their values");
 
   // Port 2, Overlay.
   vtkPolyData* overlay = mesher->GetOverlayOutput();
