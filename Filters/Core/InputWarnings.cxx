@@ -2,10 +2,12 @@
 
 #include "Clean.h"
 #include "Predicates.h"
+#include "Series.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <unordered_map>
 
 namespace osm
@@ -17,6 +19,50 @@ std::string segmentName(const Work& w, int s)
   return s < static_cast<int>(w.segments.size())
     ? "input segment " + std::to_string(w.segmentOrigin[s])
     : std::string("an edge of the convex hull");
+}
+
+std::string sharedEndNote(const Work& w, int a, int b, const Array<int>& pointOf,
+  const Frame& frame, double reach, const PointFormat& format)
+{
+  const auto segments = static_cast<int>(w.segments.size());
+  if (a < 0 || b < 0 || a >= segments || b >= segments)
+    return "";
+  const Segment &s = w.segments[a], &t = w.segments[b];
+  const int end = s[0] == t[0] || s[0] == t[1] ? s[0] : s[1] == t[0] || s[1] == t[1] ? s[1] : -1;
+  if (end < 0)
+    return "";
+  const Point& p = w.points[end];
+  const Point& u = w.points[s[0] == end ? s[1] : s[0]];
+  const Point& v = w.points[t[0] == end ? t[1] : t[0]];
+  // The tolerance that would bend one segment onto the other's far end.
+  const double apart =
+    std::ldexp(std::min(distanceToSegment(u, p, v), distanceToSegment(v, p, u)), frame.exponent);
+  if (!(apart > reach))
+    return "";
+  const double ux = u.x - p.x, uy = u.y - p.y, vx = v.x - p.x, vy = v.y - p.y;
+  const double degrees =
+    std::fabs(std::atan2(ux * vy - uy * vx, ux * vx + uy * vy)) * 180 / series::kPi;
+  // The nearest other input point (a scan: this runs once, on the way out).
+  int nearest = -1;
+  double best = std::numeric_limits<double>::infinity();
+  for (int q : pointOf)
+    if (q >= 0 && q != end && dist2(p, w.points[q]) < best)
+      best = dist2(p, w.points[q]), nearest = q;
+  const auto user = [&](int q) {
+    return "point " + std::to_string(firstInputPoint(pointOf, q)) + " at " +
+      formatPoint(frame.toUser(w.points[q]), format);
+  };
+  std::string note = "; " + segmentName(w, a) + " and " + segmentName(w, b) + " meet at " +
+    user(end) + " at an angle of " + roughNumber(degrees) + " degrees";
+  if (nearest >= 0)
+    note += ", and " + user(nearest) + " lies " +
+      roughNumber(std::ldexp(std::sqrt(best), frame.exponent)) +
+      " from there: the mesh there is as fine as that distance, too fine to separate the two "
+      "segments in double precision";
+  return note +
+    ". A wider angle, or the nearby points farther away, let it mesh; a merge "
+    "tolerance would have to be " +
+    roughNumber(apart) + ", which bends one segment onto the other's far end";
 }
 
 /// "input segment A and input segment B cross near (x, y)", in user coordinates.
@@ -240,9 +286,14 @@ std::string closePointsWarning(const Array<ClosePair>& pairs, const Array<int>& 
 /// and the message gave no value to type): 1e-9 of the input's extent,
 /// far below any feature meant, far above the rounding. "" where the
 /// tolerance given is that already.
+double toleranceSuggested(const Bounds& input)
+{
+  return 1e-9 * std::max(input.width(), input.height());
+}
+
 std::string toleranceToTry(const Bounds& input, double given)
 {
-  const double suggested = 1e-9 * std::max(input.width(), input.height());
+  const double suggested = toleranceSuggested(input);
   if (!(suggested > given))
     return "";
   return " (try about 1e-9 of the input's extent: " + roughNumber(suggested) + ")";

@@ -56,6 +56,18 @@ Array<ClosePair> closePointPairs(const Work& w, const Overlay& overlay, const Ov
 std::string closePointsWarning(const Array<ClosePair>& pairs, const Array<int>& inputVertex,
   const Pslg& input, const PointFormat& format);
 
+/// Where segments a and b of a round, too close to tell apart, share an end
+/// and their far ends lie farther than reach (user units) from each other's
+/// segment: the end, their angle there and the nearest other input point,
+/// which makes the mesh as fine as the angle cannot be resolved at, and what
+/// helps (the merge tolerance that bends one onto the other is that far);
+/// "" otherwise, where the usual remedy, a small merge tolerance, applies.
+std::string sharedEndNote(const Work& w, int a, int b, const Array<int>& pointOf,
+  const Frame& frame, double reach, const PointFormat& format);
+
+/// The merge tolerance toleranceToTry suggests: 1e-9 of the input's extent.
+double toleranceSuggested(const Bounds& input);
+
 /// " (try about ...)": a merge tolerance to try where segments meet closer
 /// than double precision separates, or "" where the one given is as large.
 std::string toleranceToTry(const Bounds& input, double given);

@@ -520,6 +520,13 @@ Result Mesher::execute()
     if (stop.remedy == Stop::Remedy::MergePoints)
       stop.reason += std::string("; if ") + (crossings ? "points or crossings" : "input points") +
         " there are meant to be one, a " + tolerance + " joins them";
+    else if (const std::string shared = stop.remedy == Stop::Remedy::JoinSegments
+               ? sharedEndNote(w, stop.segments[0], stop.segments[1], clean.pointOf, frame,
+                   std::max(options.mergeTolerance, toleranceSuggested(boundsOf(input.points))),
+                   options.pointFormat)
+               : "";
+             !shared.empty())
+      stop.reason += shared;
     else if (stop.remedy == Stop::Remedy::JoinSegments)
       stop.reason += "; if segments there are meant to meet at one point, a " + tolerance +
         " joins their crossings and bends segments onto the points near them" +

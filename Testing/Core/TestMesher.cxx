@@ -3778,3 +3778,31 @@ TEST(Mesher, TheCallersRoundingModeChangesNothing)
       EXPECT_TRUE(read.pslg.points[i] == readNearest.pslg.points[i]) << "read point " << i;
   }
 }
+
+TEST(Stitch, SegmentsSharingAnEndTooCloseToSeparateSayWhatHelps)
+{
+  // Found by an adversarial review: a 1 x 1e-8 triangle beside a point 1e-8
+  // below its tip (a thin rectangle split by its diagonal is alike) was
+  // refused with "try a merge tolerance of 1e-09", which failed the same way.
+  // The point makes the overlay 1e-8 fine at the tip, where the two segments
+  // lie closer than double precision separates at x = 1.
+  Pslg p;
+  p.points = { { 0, 0 }, { 1, 1e-8 }, { 0, 1e-8 }, { 1, 0 } };
+  p.segments = { { 0, 1 }, { 1, 2 }, { 2, 0 } };
+  const Result r = mesh(p);
+  ASSERT_FALSE(r.ok);
+  EXPECT_TRUE(mentions({ r.error },
+    "; input segment 1 and input segment 0 meet at point 1 at (1, 1e-08) at an angle of 5.7e-07 "
+    "degrees, and point 3 at (1, 0) lies 1e-08 from there: the mesh there is as fine as that "
+    "distance, too fine to separate the two segments in double precision. A wider angle, or the "
+    "nearby points farther away, let it mesh; a merge tolerance would have to be 1e-08"))
+    << r.error;
+  EXPECT_FALSE(mentions({ r.error }, "try about")) << r.error;
+  // Without the point it meshes, and so with a wider angle.
+  Pslg alone = p;
+  alone.points.pop_back();
+  meshAndValidate(alone, "the triangle alone");
+  Pslg wider = p;
+  wider.points = { { 0, 0 }, { 1, 1e-3 }, { 0, 1e-3 }, { 1, 0 } };
+  meshAndValidate(wider, "a wider angle");
+}
