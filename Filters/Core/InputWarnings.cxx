@@ -21,6 +21,39 @@ std::string segmentName(const Work& w, int s)
     : std::string("an edge of the convex hull");
 }
 
+std::string nearestPointsNote(const Work& w, const Point& at, const Array<int>& pointOf,
+  const Frame& frame, const PointFormat& format)
+{
+  // Scans: this runs once, on the way out.
+  const auto nearestTo = [&](const Point& p, int except) {
+    int nearest = -1;
+    double best = std::numeric_limits<double>::infinity();
+    for (int q : pointOf)
+      if (q >= 0 && q != except && dist2(p, w.points[q]) < best)
+        best = dist2(p, w.points[q]), nearest = q;
+    return nearest;
+  };
+  const int a = nearestTo(at, -1);
+  const int b = a >= 0 ? nearestTo(w.points[a], a) : -1;
+  if (b < 0)
+    return "";
+  // Only a pair below what the error speaks of, at the place it names (points
+  // a hair apart elsewhere are not the cause: crossings may be).
+  const Point &pa = w.points[a], &pb = w.points[b];
+  const double magnitude = std::max({ std::fabs(pa.x), std::fabs(pa.y), std::fabs(pb.x),
+    std::fabs(pb.y), std::fabs(at.x), std::fabs(at.y) });
+  if (!(dist2(pa, pb) <= std::pow(1e-12 * magnitude, 2) &&
+        dist2(pa, at) <= std::pow(1e-9 * magnitude, 2)))
+    return "";
+  const auto user = [&](int q) {
+    return "point " + std::to_string(firstInputPoint(pointOf, q)) + " at " +
+      formatPoint(frame.toUser(w.points[q]), format);
+  };
+  const double apart = std::ldexp(std::sqrt(dist2(pa, pb)), frame.exponent);
+  return "; the input points nearest there are " + user(std::min(a, b)) + " and " +
+    user(std::max(a, b)) + ", " + roughNumber(apart) + " apart";
+}
+
 std::string sharedEndNote(const Work& w, int a, int b, const Array<int>& pointOf,
   const Frame& frame, double reach, const PointFormat& format)
 {

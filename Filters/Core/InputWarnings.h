@@ -65,6 +65,13 @@ std::string closePointsWarning(const Array<ClosePair>& pairs, const Array<int>& 
 std::string sharedEndNote(const Work& w, int a, int b, const Array<int>& pointOf,
   const Frame& frame, double reach, const PointFormat& format);
 
+/// "; the input points nearest there are point A at (x, y) and point B at
+/// (x, y), D apart" for a stop at `at` (working coordinates) where points are
+/// too close; "" unless the pair nearest `at` is within 1e-12 of the
+/// coordinates' magnitude of each other and 1e-9 of it from `at`.
+std::string nearestPointsNote(const Work& w, const Point& at, const Array<int>& pointOf,
+  const Frame& frame, const PointFormat& format);
+
 /// The merge tolerance toleranceToTry suggests: 1e-9 of the input's extent.
 double toleranceSuggested(const Bounds& input);
 

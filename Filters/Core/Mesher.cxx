@@ -517,6 +517,8 @@ Result Mesher::execute()
     if (crossings)
       stop.reason.replace(
         at, inputPoints.size(), "input points, or points where input segments cross, are closer");
+    if (stop.remedy == Stop::Remedy::MergePoints && stop.located)
+      stop.reason += nearestPointsNote(w, stop.at, clean.pointOf, frame, options.pointFormat);
     if (stop.remedy == Stop::Remedy::MergePoints)
       stop.reason += std::string("; if ") + (crossings ? "points or crossings" : "input points") +
         " there are meant to be one, a " + tolerance + " joins them";

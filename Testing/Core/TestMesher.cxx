@@ -3806,3 +3806,20 @@ TEST(Stitch, SegmentsSharingAnEndTooCloseToSeparateSayWhatHelps)
   wider.points = { { 0, 0 }, { 1, 1e-3 }, { 0, 1e-3 }, { 1, 0 } };
   meshAndValidate(wider, "a wider angle");
 }
+
+TEST(Mesher, PointsTooCloseForDoublePrecisionAreNamed)
+{
+  // Found by an adversarial review: the error gave a place, not one of the
+  // input's points there, which the user then had to search the file for.
+  Pslg p;
+  p.points = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 }, { 0.5, 0.5 }, { 0.5000000000000001, 0.5 },
+    { 0.5, 0.5000000000000001 } };
+  p.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 } };
+  const Result r = mesh(p);
+  ASSERT_FALSE(r.ok);
+  EXPECT_TRUE(mentions({ r.error },
+    "; the input points nearest there are point 4 at (0.5, 0.5) and point 5 at "
+    "(0.5000000000000001, 0.5), 1.1e-16 apart; if input points there are meant to be one, a "
+    "merge tolerance"))
+    << r.error;
+}
