@@ -135,7 +135,8 @@ INPUT                  Triangle .poly (holes honoured) or .node file, or
                        tilted plane are meshed in it, others are an error)
   --region-areas       apply the maximum areas of a .poly's region lines to
                        their regions, as Triangle's -a (default: ignored,
-                       with a warning)
+                       with a warning); a line without one takes its
+                       attribute as the area, as in Triangle
   --no-holes           ignore the input's hole points, as Triangle's -O
                        (default: every region holding one is removed)
   --gap-ratio          refine the overlay to the paper's gap-ratio quality,
