@@ -51,6 +51,7 @@ double incircleFallback(const Point& a, const Point& b, const Point& c, const Po
 
 /// > 0 if a, b, c turn counter-clockwise, < 0 if clockwise, 0 if collinear.
 /// Inline filtered evaluation; the rare uncertain case goes to the exact fallback.
+/// NaN (no sign) when a coordinate is not finite, here and in every predicate.
 inline double orient2d(const Point& a, const Point& b, const Point& c)
 {
   const double acx = a.x - c.x, bcx = b.x - c.x;

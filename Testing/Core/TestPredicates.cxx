@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <random>
 #include <string>
 #include <utility>
@@ -541,3 +542,16 @@ TEST(Predicates, PermutationSymmetry)
 }
 
 } // namespace
+
+TEST(Predicates, NonFiniteCoordinatesGiveNoSign)
+{
+  // A mutation test: with the fallback's finiteness check removed, infinite
+  // input gave 0, "collinear", which no caller would question.
+  const double inf = std::numeric_limits<double>::infinity();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_TRUE(std::isnan(osm::orient2d({ inf, 0 }, { 1, 0 }, { 0, 1 })));
+  EXPECT_TRUE(std::isnan(osm::orient2d({ nan, 0 }, { 1, 0 }, { 0, 1 })));
+  EXPECT_TRUE(std::isnan(osm::orient2dAccurate({ 1e308, 0 }, { inf, 1 }, { 0, 0 })));
+  EXPECT_TRUE(std::isnan(osm::incircle({ inf, 0 }, { 1, 0 }, { 0, 1 }, { 0, 0 })));
+  EXPECT_TRUE(std::isnan(osm::incircle({ 0, 0 }, { 1, 0 }, { 0, 1 }, { 0.5, -inf })));
+}
