@@ -486,3 +486,16 @@ TEST(Interpolation, ASliverOfCollinearHullPoints)
     ASSERT_NEAR(valueAt(w[v], in, linear), linear(r.mesh.vertices[v]), 1e-12)
       << formatPoint(r.mesh.vertices[v]);
 }
+
+TEST(Interpolation, TermsWithoutWeightAreLeftOut)
+{
+  // A mutation test: zero and negative weights were kept as terms, in room
+  // for 6.
+  VertexTerms t;
+  t.add(3, 0.0);
+  t.add(4, -0.25);
+  t.add(5, 1.0);
+  ASSERT_EQ(t.count, 1);
+  EXPECT_EQ(t.point[0], 5);
+  EXPECT_EQ(t.weight[0], 1.0);
+}

@@ -105,3 +105,40 @@ TEST(LongEdges, WhatCannotBeSplitIsCountedWithTheLongestEdge)
   EXPECT_EQ(strict.split(1.0, 80.0).split, 0u);
   EXPECT_EQ(strict.triangles.size(), 2u);
 }
+
+// From a mutation test of LongEdges: the bound itself, a side that must wait
+// for a second pass, and the search for a split point within the angle bound.
+TEST(LongEdges, ASideAtTheBoundIsLeft)
+{
+  Pair at(1.0);
+  EXPECT_EQ(at.split(1.0).split, 0u);
+  EXPECT_EQ(at.triangles.size(), 2u);
+}
+
+TEST(LongEdges, ASideSplitAfterItsNeighbourIsSplitInALaterPass)
+{
+  // Two long sides in a chain: splitting one first leaves the other's
+  // triangle changed, so it waits for the next pass.
+  Array<Point> points{ { 0, 0 }, { 1.1, 0 }, { 0.55, 0.5 }, { 0.3, -0.9 }, { 1.2, -0.9 } };
+  Array<VertexOrigin> origin(5, VertexOrigin::Overlay);
+  Array<Triangle> triangles{ { 0, 1, 2 }, { 1, 0, 3 }, { 1, 3, 4 } };
+  Array<int> regionId{ 7, 7, 7 };
+  Array<double> regionMaxEdge(8, 0.0);
+  regionMaxEdge[7] = 1.0;
+  const LongEdges r = splitLongEdges(
+    points, origin, triangles, regionId, {}, regionMaxEdge, 170, RunContext::silent());
+  EXPECT_EQ(r.split, 2u);
+  EXPECT_EQ(r.remaining, 0u);
+}
+
+TEST(LongEdges, TheSplitPointIsSearchedFinelyEnoughForATightAngleBound)
+{
+  // Below the bound's 97 degrees only a point found by the finer steps keeps
+  // every new angle within it.
+  for (double maxAngle : { 93.0, 96.0 })
+  {
+    Pair p(1.1);
+    p.points[3] = { 0.495, -0.5 };
+    EXPECT_EQ(p.split(1.0, maxAngle).split, 1u) << maxAngle;
+  }
+}

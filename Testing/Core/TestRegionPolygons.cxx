@@ -111,3 +111,29 @@ TEST(RegionPolygons, WithoutLoopsNoRegionHasAPolygon)
   for (int o : of)
     EXPECT_EQ(o, -1);
 }
+
+TEST(RegionPolygons, ATieKeepsTheFirstLoopWhicheverWayItRuns)
+{
+  // A mutation test: the same square given twice went to the second copy
+  // when ties (equal area inside, equal own area) kept the last, and a
+  // clockwise copy beat a counter-clockwise one given first when the own
+  // area was signed.
+  Pslg pslg;
+  pslg.points = { { 0, 0 }, { 10, 0 }, { 10, 10 }, { 0, 10 } };
+  Result r;
+  r.mesh.vertices = pslg.points;
+  r.mesh.triangles = { { 0, 1, 2 }, { 0, 2, 3 } };
+  r.regionId = { 0, 0 };
+  const int ccw[] = { 0, 1, 2, 3 }, shifted[] = { 1, 2, 3, 0 }, cw[] = { 3, 2, 1, 0 };
+  for (const auto& [first, second] :
+    { std::pair{ ccw, shifted }, std::pair{ ccw, cw }, std::pair{ cw, ccw } })
+  {
+    PolygonLoops loops;
+    loops.add(first, 4);
+    loops.add(second, 4);
+    std::vector<int> of;
+    ASSERT_TRUE(innermostPolygons(pslg, r, loops, of, kNeverStop));
+    ASSERT_EQ(of.size(), 1u);
+    EXPECT_EQ(of[0], 0);
+  }
+}

@@ -69,6 +69,17 @@ TEST(SizeQueue, ExtremeKeys)
   EXPECT_EQ(q.pop(), 3);
   EXPECT_EQ(q.pop(), 2); // NaN and 0 share the smallest class, newest first
   EXPECT_EQ(q.pop(), 1);
+  // Pushed the other way round, so that newest-first within a class cannot
+  // give the same order (a mutation test): infinity has a class above the
+  // largest double's, and the smallest subnormal one above 0's.
+  q.push(std::numeric_limits<double>::infinity(), 6);
+  q.push(std::numeric_limits<double>::max(), 7);
+  q.push(std::numeric_limits<double>::denorm_min(), 8);
+  q.push(0.0, 9);
+  EXPECT_EQ(q.pop(), 6);
+  EXPECT_EQ(q.pop(), 7);
+  EXPECT_EQ(q.pop(), 8);
+  EXPECT_EQ(q.pop(), 9);
   EXPECT_TRUE(q.empty());
 }
 

@@ -249,10 +249,13 @@ TEST(Triangulation, InsertionPutsTheNewVertexAtIndex2)
       continue;
     const int v = T.addPoint(p);
     ASSERT_TRUE(T.insertIntoCavity(v, cavity, created));
-    for (int t : created)
+    for (std::size_t k = 0; k < created.size(); ++k)
     {
+      const int t = created[k], next = created[(k + 1) % created.size()];
       EXPECT_EQ(T.tri[t].v[2], v);
       EXPECT_GT(orient2d(T.vertex(t, 0), T.vertex(t, 1), T.vertex(t, 2)), 0);
+      // In counter-clockwise order around v, fans of 3 too (a mutation test).
+      EXPECT_EQ(T.tri[t].v[1], T.tri[next].v[0]) << "a fan of " << created.size();
     }
   }
   expectDelaunay(T);
@@ -290,4 +293,26 @@ TEST(Triangulation, LargeFanIsLinkedAroundTheNewVertexInOrder)
     EXPECT_EQ(T.tri[t].v[1], T.tri[next].v[0]);
   }
   expectDelaunay(T);
+}
+
+TEST(Triangulation, AFanOnTheHullIsInCounterClockwiseOrderToo)
+{
+  // A point on a hull edge: the fan around it is open, of 3 triangles here,
+  // and the order is not the cavity boundary's (a mutation test: left
+  // unsorted below 4 triangles, it came reversed).
+  Triangulation T;
+  for (const Point& p : { Point{ 0, 0 }, Point{ 2, 0 }, Point{ 0, 2 }, Point{ 2, 2 } })
+    T.addPoint(p);
+  const int t0 = T.newTriangle(0, 1, 2), t1 = T.newTriangle(1, 3, 2);
+  T.link(t0, t1);
+  const int v = T.addPoint({ 1, 0 });
+  Triangulation::Cavity cavity;
+  Array<int> created;
+  ASSERT_TRUE(T.cavityOf(T.points[v], T.locate(T.points[v], t0), cavity));
+  ASSERT_TRUE(T.insertIntoCavity(v, cavity, created));
+  ASSERT_EQ(created.size(), 3u);
+  for (std::size_t k = 0; k + 1 < created.size(); ++k)
+    EXPECT_EQ(T.tri[created[k]].v[1], T.tri[created[k + 1]].v[0]) << "fan position " << k;
+  for (int t : created)
+    EXPECT_GT(orient2d(T.vertex(t, 0), T.vertex(t, 1), T.vertex(t, 2)), 0);
 }
