@@ -323,10 +323,15 @@ TEST(Orient2d, ArbitrarySlopeLines)
 TEST(Orient2d, AccurateMagnitudeNearLines)
 {
   Rng rng(0xACC);
-  for (const Frame& f : orientFrames)
+  // And coordinates below 2^-1000, which the exact arithmetic lifts first.
+  std::vector<Frame> frames = orientFrames;
+  frames.push_back({ "scale 1e-306", 0.0, 1e-306, true });
+  for (const Frame& f : frames)
   {
-    if (f.scale > 1e150 || f.scale < 1e-200)
-      continue; // the determinant itself would overflow or underflow a double
+    if (f.scale > 1e150)
+      continue; // the determinant itself would overflow a double
+    // Below, it underflows to 0 or a subnormal, which the accurate value
+    // must be too (a mutation test: a wrong rescaling there gave 1e-262).
     int estimateFarOff = 0;
     for (int i = 0; i < 4000; ++i)
     {
