@@ -21,20 +21,36 @@ std::string segmentName(const Work& w, int s)
     : std::string("an edge of the convex hull");
 }
 
+namespace
+{
+
+/// The input point (a working vertex) nearest p other than `except`, or -1.
+/// A scan: the notes below run once, on the way out.
+int nearestInputPoint(const Work& w, const Array<int>& pointOf, const Point& p, int except)
+{
+  int nearest = -1;
+  double best = std::numeric_limits<double>::infinity();
+  for (int q : pointOf)
+    if (q >= 0 && q != except && dist2(p, w.points[q]) < best)
+      best = dist2(p, w.points[q]), nearest = q;
+  return nearest;
+}
+
+/// "point N at (x, y)": working vertex v as the user numbers and places it.
+std::string userPoint(
+  const Work& w, const Array<int>& pointOf, int v, const Frame& frame, const PointFormat& format)
+{
+  return "point " + std::to_string(firstInputPoint(pointOf, v)) + " at " +
+    formatPoint(frame.toUser(w.points[v]), format);
+}
+
+} // namespace
+
 std::string nearestPointsNote(const Work& w, const Point& at, const Array<int>& pointOf,
   const Frame& frame, const PointFormat& format)
 {
-  // Scans: this runs once, on the way out.
-  const auto nearestTo = [&](const Point& p, int except) {
-    int nearest = -1;
-    double best = std::numeric_limits<double>::infinity();
-    for (int q : pointOf)
-      if (q >= 0 && q != except && dist2(p, w.points[q]) < best)
-        best = dist2(p, w.points[q]), nearest = q;
-    return nearest;
-  };
-  const int a = nearestTo(at, -1);
-  const int b = a >= 0 ? nearestTo(w.points[a], a) : -1;
+  const int a = nearestInputPoint(w, pointOf, at, -1);
+  const int b = a >= 0 ? nearestInputPoint(w, pointOf, w.points[a], a) : -1;
   if (b < 0)
     return "";
   // Only a pair below what the error speaks of, at the place it names (points
@@ -45,10 +61,7 @@ std::string nearestPointsNote(const Work& w, const Point& at, const Array<int>& 
   if (!(dist2(pa, pb) <= std::pow(1e-12 * magnitude, 2) &&
         dist2(pa, at) <= std::pow(1e-9 * magnitude, 2)))
     return "";
-  const auto user = [&](int q) {
-    return "point " + std::to_string(firstInputPoint(pointOf, q)) + " at " +
-      formatPoint(frame.toUser(w.points[q]), format);
-  };
+  const auto user = [&](int q) { return userPoint(w, pointOf, q, frame, format); };
   const double apart = std::ldexp(std::sqrt(dist2(pa, pb)), frame.exponent);
   return "; the input points nearest there are " + user(std::min(a, b)) + " and " +
     user(std::max(a, b)) + ", " + roughNumber(apart) + " apart";
@@ -75,21 +88,13 @@ std::string sharedEndNote(const Work& w, int a, int b, const Array<int>& pointOf
   const double ux = u.x - p.x, uy = u.y - p.y, vx = v.x - p.x, vy = v.y - p.y;
   const double degrees =
     std::fabs(std::atan2(ux * vy - uy * vx, ux * vx + uy * vy)) * 180 / series::kPi;
-  // The nearest other input point (a scan: this runs once, on the way out).
-  int nearest = -1;
-  double best = std::numeric_limits<double>::infinity();
-  for (int q : pointOf)
-    if (q >= 0 && q != end && dist2(p, w.points[q]) < best)
-      best = dist2(p, w.points[q]), nearest = q;
-  const auto user = [&](int q) {
-    return "point " + std::to_string(firstInputPoint(pointOf, q)) + " at " +
-      formatPoint(frame.toUser(w.points[q]), format);
-  };
+  const int nearest = nearestInputPoint(w, pointOf, p, end);
+  const auto user = [&](int q) { return userPoint(w, pointOf, q, frame, format); };
   std::string note = "; " + segmentName(w, a) + " and " + segmentName(w, b) + " meet at " +
     user(end) + " at an angle of " + roughNumber(degrees) + " degrees";
   if (nearest >= 0)
     note += ", and " + user(nearest) + " lies " +
-      roughNumber(std::ldexp(std::sqrt(best), frame.exponent)) +
+      roughNumber(std::ldexp(std::sqrt(dist2(p, w.points[nearest])), frame.exponent)) +
       " from there: the mesh there is as fine as that distance, too fine to separate the two "
       "segments in double precision";
   return note +
