@@ -45,8 +45,7 @@
 namespace
 {
 
-const char* const HolePointsName = OverlayStitchArrayNames::HolePoints;
-const char* const RegionAttributesName = OverlayStitchArrayNames::RegionAttributes;
+namespace Names = OverlayStitchArrayNames;
 
 /// Exact coordinates of a point; -0.0 and +0.0 are the same point.
 using PointKey = std::array<double, 3>;
@@ -319,7 +318,7 @@ struct HoleSeed
 /// components, which the serial run ignores with a warning too.
 bool CollectHolePoints(vtkFieldData* field, std::vector<HoleSeed>& seeds, std::set<HoleSeed>& seen)
 {
-  vtkDataArray* holes = field ? field->GetArray(HolePointsName) : nullptr;
+  vtkDataArray* holes = field ? field->GetArray(Names::HolePoints) : nullptr;
   const int components = holes ? holes->GetNumberOfComponents() : 3;
   if (!holes || (components != 2 && components != 3))
   {
@@ -350,7 +349,7 @@ using RegionSeed = std::array<double, 4>;
 bool CollectRegionSeeds(
   vtkFieldData* field, std::vector<RegionSeed>& seeds, std::set<RegionSeed>& seen)
 {
-  vtkDataArray* regions = field ? field->GetArray(RegionAttributesName) : nullptr;
+  vtkDataArray* regions = field ? field->GetArray(Names::RegionAttributes) : nullptr;
   const int components = regions ? regions->GetNumberOfComponents() : 4;
   if (!regions || (components != 3 && components != 4))
   {
@@ -775,7 +774,7 @@ void OverlayStitchToSourceIds(vtkDataSetAttributes* in, const char* sourceIdName
   if (block)
   {
     vtkNew<vtkIdTypeArray> blockIds;
-    blockIds->SetName(OverlayStitchArrayNames::InputBlockId);
+    blockIds->SetName(Names::InputBlockId);
     blockIds->SetNumberOfTuples(n);
     for (vtkIdType i = 0; i < n; ++i)
     {
@@ -826,8 +825,8 @@ public:
     , PieceName(pieceName)
     , Invalid{ pieceName }
   {
-    this->Holes->SetName(HolePointsName);
-    this->Regions->SetName(RegionAttributesName);
+    this->Holes->SetName(Names::HolePoints);
+    this->Regions->SetName(Names::RegionAttributes);
     this->Regions->SetNumberOfComponents(4);
   }
 
@@ -1136,12 +1135,12 @@ void PieceCombination::MergeFieldData()
     this->AnyFloat = this->AnyFloat || field->GetArray(OverlayStitchFloatPointsName);
     this->CountsFromOne = this->CountsFromOne || OverlayStitchCountsFromOne(field);
     this->NoteRefused(field, p);
-    if (vtkAbstractArray* array = field->GetAbstractArray(HolePointsName))
+    if (vtkAbstractArray* array = field->GetAbstractArray(Names::HolePoints))
     {
       this->AnyHoles = true;
       if (!CollectHolePoints(field, this->Seeds, this->SeenSeeds))
       {
-        this->Notes.push_back({ { "field", HolePointsName },
+        this->Notes.push_back({ { "field", Names::HolePoints },
           "The field data array HolePoints of " + this->Label(p) + " has " +
             std::to_string(array->GetNumberOfComponents()) +
             " components (2 or 3 expected: x, y and perhaps z): ignored." });
@@ -1154,9 +1153,9 @@ void PieceCombination::MergeFieldData()
       const char* name = array ? array->GetName() : nullptr;
       if (name && !outField->GetAbstractArray(name) && !OverlayStitchIsInternalName(name))
       {
-        outField->AddArray(std::strcmp(name, HolePointsName) == 0 ? this->Holes.Get()
-            : std::strcmp(name, RegionAttributesName) == 0        ? this->Regions.Get()
-                                                                  : array);
+        outField->AddArray(std::strcmp(name, Names::HolePoints) == 0 ? this->Holes.Get()
+            : std::strcmp(name, Names::RegionAttributes) == 0        ? this->Regions.Get()
+                                                                     : array);
       }
     }
   }
@@ -1187,7 +1186,7 @@ void PieceCombination::MergeFieldData()
 /// another shape is noted and left out, as a serial run warns and ignores it.
 void PieceCombination::CollectRegions(vtkFieldData* field, std::size_t p)
 {
-  vtkAbstractArray* array = field->GetAbstractArray(RegionAttributesName);
+  vtkAbstractArray* array = field->GetAbstractArray(Names::RegionAttributes);
   if (!array)
   {
     return;
@@ -1195,7 +1194,7 @@ void PieceCombination::CollectRegions(vtkFieldData* field, std::size_t p)
   std::vector<RegionSeed> seeds;
   if (!CollectRegionSeeds(field, seeds, this->SeenRegions))
   {
-    this->Notes.push_back({ { "field", RegionAttributesName },
+    this->Notes.push_back({ { "field", Names::RegionAttributes },
       "The field data array RegionAttributes of " + this->Label(p) + " has " +
         std::to_string(array->GetNumberOfComponents()) +
         " components (4 expected: x, y, attribute, maximum area): ignored." });
@@ -1246,7 +1245,7 @@ void PieceCombination::SetHoleSeeds()
   const int components = xy > 0 && xy == static_cast<std::ptrdiff_t>(seeds.size()) ? 2 : 3;
   if (xy > 0 && components == 3)
   {
-    this->Notes.push_back({ { "field", HolePointsName },
+    this->Notes.push_back({ { "field", Names::HolePoints },
       "The field data arrays HolePoints give " + std::to_string(xy) +
         " seed(s) as (x, y) and others as (x, y, z): the (x, y) ones are taken at z = 0." });
     // Taken so, an (x, y) seed may repeat another piece's (x, y, 0).
@@ -1267,7 +1266,7 @@ void PieceCombination::SetHoleSeeds()
 //------------------------------------------------------------------------------
 bool OverlayStitchCountsFromOne(vtkFieldData* field)
 {
-  vtkDataArray* first = field ? field->GetArray(OverlayStitchArrayNames::FileFirstIndex) : nullptr;
+  vtkDataArray* first = field ? field->GetArray(Names::FileFirstIndex) : nullptr;
   return first && first->GetNumberOfTuples() == 1 && first->GetComponent(0, 0) == 1.0;
 }
 

@@ -58,6 +58,14 @@ inline std::string formatPoint(const Point& p, const PointFormat& format)
   return format ? format(p) : formatPoint(p);
 }
 
+/// "point N at (x, y)": input point n as the user numbers it, at the input's
+/// own coordinates (a working point scaled back may differ in its last digit).
+inline std::string namePoint(const Pslg& input, int n, const PointFormat& format)
+{
+  return "point " + std::to_string(n) + " at " +
+    formatPoint(input.points[static_cast<std::size_t>(n)], format);
+}
+
 } // namespace osm
 
 #endif

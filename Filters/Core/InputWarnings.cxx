@@ -38,16 +38,15 @@ int nearestInputPoint(const Work& w, const Array<int>& pointOf, const Point& p, 
 
 /// "point N at (x, y)": working vertex v as the user numbers and places it.
 std::string userPoint(
-  const Work& w, const Array<int>& pointOf, int v, const Frame& frame, const PointFormat& format)
+  const Pslg& input, const Array<int>& pointOf, int v, const PointFormat& format)
 {
-  return "point " + std::to_string(firstInputPoint(pointOf, v)) + " at " +
-    formatPoint(frame.toUser(w.points[v]), format);
+  return namePoint(input, firstInputPoint(pointOf, v), format);
 }
 
 } // namespace
 
-std::string nearestPointsNote(const Work& w, const Point& at, const Array<int>& pointOf,
-  const Frame& frame, const PointFormat& format)
+std::string nearestPointsNote(const Work& w, const Point& at, const Pslg& input,
+  const Array<int>& pointOf, const PointFormat& format)
 {
   const int a = nearestInputPoint(w, pointOf, at, -1);
   const int b = a >= 0 ? nearestInputPoint(w, pointOf, w.points[a], a) : -1;
@@ -61,13 +60,17 @@ std::string nearestPointsNote(const Work& w, const Point& at, const Array<int>& 
   if (!(dist2(pa, pb) <= std::pow(1e-12 * magnitude, 2) &&
         dist2(pa, at) <= std::pow(1e-9 * magnitude, 2)))
     return "";
-  const auto user = [&](int q) { return userPoint(w, pointOf, q, frame, format); };
-  const double apart = std::ldexp(std::sqrt(dist2(pa, pb)), frame.exponent);
+  const auto user = [&](int q) { return userPoint(input, pointOf, q, format); };
+  // Their distance as given, like their coordinates (hypot: no square to
+  // overflow or underflow at 1e200 or 1e-300).
+  const Point &ua = input.points[firstInputPoint(pointOf, a)],
+              &ub = input.points[firstInputPoint(pointOf, b)];
+  const double apart = std::hypot(ua.x - ub.x, ua.y - ub.y);
   return "; the input points nearest there are " + user(std::min(a, b)) + " and " +
     user(std::max(a, b)) + ", " + roughNumber(apart) + " apart";
 }
 
-std::string sharedEndNote(const Work& w, int a, int b, const Array<int>& pointOf,
+std::string sharedEndNote(const Work& w, int a, int b, const Pslg& input, const Array<int>& pointOf,
   const Frame& frame, double reach, const PointFormat& format)
 {
   const auto segments = static_cast<int>(w.segments.size());
@@ -89,7 +92,7 @@ std::string sharedEndNote(const Work& w, int a, int b, const Array<int>& pointOf
   const double degrees =
     std::fabs(std::atan2(ux * vy - uy * vx, ux * vx + uy * vy)) * 180 / series::kPi;
   const int nearest = nearestInputPoint(w, pointOf, p, end);
-  const auto user = [&](int q) { return userPoint(w, pointOf, q, frame, format); };
+  const auto user = [&](int q) { return userPoint(input, pointOf, q, format); };
   std::string note = "; " + segmentName(w, a) + " and " + segmentName(w, b) + " meet at " +
     user(end) + " at an angle of " + roughNumber(degrees) + " degrees";
   if (nearest >= 0)
@@ -151,10 +154,7 @@ std::string openOutlineWarning(
     if (degree[v] == 1 && isInput[v])
       ends.push_back(static_cast<int>(v));
   }
-  const auto user = [&](int v) { return firstInputPoint(pointOf, v); };
-  const auto name = [&](int v) {
-    return "point " + std::to_string(user(v)) + " at " + formatPoint(input.points[user(v)], format);
-  };
+  const auto name = [&](int v) { return userPoint(input, pointOf, v, format); };
   const std::string hull = ": the segments enclose no region, so the auto domain meshes the "
                            "convex hull of the points (the hull domain does so without this "
                            "warning)";
@@ -203,7 +203,8 @@ std::string openOutlineWarning(
   }
   if (bestA >= 0)
   {
-    const Point &p = input.points[user(bestA)], &q = input.points[user(bestB)];
+    const Point& p = input.points[firstInputPoint(pointOf, bestA)];
+    const Point& q = input.points[firstInputPoint(pointOf, bestB)];
     return "segment ends at " + name(bestA) + " and " + name(bestB) + " meet no other segment, " +
       formatNumber(std::hypot(p.x - q.x, p.y - q.y)) +
       " apart, and joined they would close a loop" + hull +
@@ -244,9 +245,8 @@ std::string nearMissWarning(const Work& w, const Walk& walk, const Array<Segment
   const std::string gap = formatNumber(std::ldexp(nearest->distance, frame.exponent));
   return std::to_string(count) +
     " segment end(s) stop a hair short of a segment they do not reach (within 1e-6 of the "
-    "extent, or, where every coordinate is a float, within float rounding), e.g. point " +
-    std::to_string(user) + " at " + formatPoint(input.points[user], format) + ", " + gap +
-    " from " + segmentName(w, nearest->segment) +
+    "extent, or, where every coordinate is a float, within float rounding), e.g. " +
+    namePoint(input, user, format) + ", " + gap + " from " + segmentName(w, nearest->segment) +
     ": they do not meet it, and regions they were meant to part are meshed as one; a merge "
     "tolerance above the gap joins them (osm-mesh --merge-tolerance, the filter's "
     "MergeTolerance)";
@@ -311,9 +311,9 @@ std::string closePointsWarning(const Array<ClosePair>& pairs, const Array<int>& 
     return "";
   return std::to_string(count) +
     " pair(s) of input points in the mesh lie a hair apart (within 1e-6 of the extent, or, where "
-    "every coordinate is a float, within float rounding), e.g. point " +
-    std::to_string(nearest->a) + " at " + formatPoint(input.points[nearest->a], format) +
-    " and point " + std::to_string(nearest->b) + ", " + formatNumber(nearest->distance) +
+    "every coordinate is a float, within float rounding), e.g. " +
+    namePoint(input, nearest->a, format) + " and point " + std::to_string(nearest->b) + ", " +
+    formatNumber(nearest->distance) +
     " apart: the mesh grades down to their distance around them; if they are meant as one "
     "point, a merge tolerance above it merges them (osm-mesh --merge-tolerance, the filter's "
     "MergeTolerance)";

@@ -62,15 +62,15 @@ std::string closePointsWarning(const Array<ClosePair>& pairs, const Array<int>& 
 /// which makes the mesh as fine as the angle cannot be resolved at, and what
 /// helps (the merge tolerance that bends one onto the other is that far);
 /// "" otherwise, where the usual remedy, a small merge tolerance, applies.
-std::string sharedEndNote(const Work& w, int a, int b, const Array<int>& pointOf,
+std::string sharedEndNote(const Work& w, int a, int b, const Pslg& input, const Array<int>& pointOf,
   const Frame& frame, double reach, const PointFormat& format);
 
 /// "; the input points nearest there are point A at (x, y) and point B at
 /// (x, y), D apart" for a stop at `at` (working coordinates) where points are
 /// too close; "" unless the pair nearest `at` is within 1e-12 of the
 /// coordinates' magnitude of each other and 1e-9 of it from `at`.
-std::string nearestPointsNote(const Work& w, const Point& at, const Array<int>& pointOf,
-  const Frame& frame, const PointFormat& format);
+std::string nearestPointsNote(const Work& w, const Point& at, const Pslg& input,
+  const Array<int>& pointOf, const PointFormat& format);
 
 /// The merge tolerance toleranceToTry suggests: 1e-9 of the input's extent.
 double toleranceSuggested(const Bounds& input);

@@ -171,8 +171,7 @@ std::string normalise(Work& w, const Pslg& input, const Array<int>& pointOf,
       const int user = firstInputPoint(pointOf, static_cast<int>(i));
       const Point& q = input.points[user];
       const double tiny = before.x != 0 && std::fabs(p.x) < 0x1p-200 ? q.x : q.y;
-      return "point " + std::to_string(user) + " at " + formatPoint(q, format) +
-        " has a coordinate (" + formatNumber(tiny) +
+      return namePoint(input, user, format) + " has a coordinate (" + formatNumber(tiny) +
         ") too small next to the largest coordinate (" + formatNumber(maxAbs) +
         ") for exact arithmetic in double precision (nonzero coordinates must be above 2^-200 "
         "of the largest): round it to 0";
@@ -518,12 +517,12 @@ Result Mesher::execute()
       stop.reason.replace(
         at, inputPoints.size(), "input points, or points where input segments cross, are closer");
     if (stop.remedy == Stop::Remedy::MergePoints && stop.located)
-      stop.reason += nearestPointsNote(w, stop.at, clean.pointOf, frame, options.pointFormat);
+      stop.reason += nearestPointsNote(w, stop.at, input, clean.pointOf, options.pointFormat);
     if (stop.remedy == Stop::Remedy::MergePoints)
       stop.reason += std::string("; if ") + (crossings ? "points or crossings" : "input points") +
         " there are meant to be one, a " + tolerance + " joins them";
     else if (const std::string shared = stop.remedy == Stop::Remedy::JoinSegments
-               ? sharedEndNote(w, stop.segments[0], stop.segments[1], clean.pointOf, frame,
+               ? sharedEndNote(w, stop.segments[0], stop.segments[1], input, clean.pointOf, frame,
                    std::max(options.mergeTolerance, toleranceSuggested(boundsOf(input.points))),
                    options.pointFormat)
                : "";

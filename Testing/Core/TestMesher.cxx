@@ -4,6 +4,7 @@
 
 #include "Clean.h"
 #include "Domain.h"
+#include "InputWarnings.h"
 #include "Overlay.h"
 #include "PolyReader.h"
 #include "Predicates.h"
@@ -3822,4 +3823,31 @@ TEST(Mesher, PointsTooCloseForDoublePrecisionAreNamed)
     "(0.5000000000000001, 0.5), 1.1e-16 apart; if input points there are meant to be one, a "
     "merge tolerance"))
     << r.error;
+}
+
+TEST(InputWarnings, TheNearestPointsNoteNamesOnlyAPairTooCloseAtThePlaceByTheirOwnCoordinates)
+{
+  // The working points are the input's less an origin: 0.3685 - 0.1 + 0.1 is
+  // 0.36849999999999994, and the note names the file's 0.3685.
+  Pslg input;
+  input.points = { { 0.3685, 0.5 }, { std::nextafter(0.3685, 1.0), 0.5 }, { 0, 0 } };
+  Frame frame;
+  frame.origin = { 0.1, 0 };
+  Work w;
+  for (const Point& p : input.points)
+    w.points.push_back({ p.x - frame.origin.x, p.y });
+  const Array<int> pointOf = { 0, 1, 2 };
+  ASSERT_NE(frame.toUser(w.points[0]).x, input.points[0].x); // the case it is about
+  EXPECT_EQ(nearestPointsNote(w, w.points[0], input, pointOf, {}),
+    "; the input points nearest there are point 0 at (0.3685, 0.5) and point 1 at "
+    "(0.36850000000000005, 0.5), 5.6e-17 apart");
+  // Left out: the pair is 1e-3 away from the place the error names.
+  EXPECT_EQ(nearestPointsNote(w, { w.points[0].x, w.points[0].y + 1e-3 }, input, pointOf, {}), "");
+  // Left out: a pair 9.3e-7 apart at 3.2e5 (an adversarial review's input,
+  // where crossings, not these points, were too close) is 2.9e-12 of the
+  // magnitude apart, above 1e-12.
+  input.points = { { 3.2e5, 0 }, { 3.2e5 + 9.3e-7, 0 }, { 0, 0 } };
+  frame.origin = { 0, 0 };
+  w.points = Array<Point>(input.points.begin(), input.points.end());
+  EXPECT_EQ(nearestPointsNote(w, w.points[0], input, pointOf, {}), "");
 }
