@@ -442,7 +442,6 @@ void FailIfNoFolderFor(const std::string& path)
     "' " + (exists ? "is not a directory" : "does not exist") + "; nothing is meshed or written)");
 }
 
-/// Parses the command line; returns false when --help or --version was answered.
 /// Where writing to path lands: absolute, normalised, through symbolic links
 /// (a dangling one too: it names the file a write creates).
 std::filesystem::path Resolved(const std::filesystem::path& path)
@@ -470,240 +469,260 @@ bool ListsNoVertices(const std::string& path)
   return osm::polyListsNoVertices(file);
 }
 
-/// Reads the command line into args; false after --help or --version. Past
-/// the options, the files are checked, and a check failing with --stats
-/// prints its JSON too (window->Stats).
-bool ParseArguments(int argc, char* argv[], Arguments& args, OsmOutputWindow* window)
+/// One command-line argument: "--name=value" split at its '=', and the
+/// argument after it taken as the value where the option needs one.
+class Option
 {
-  bool inputGiven = false;
-  double gamma = 0.0;
-  for (int i = 1; i < argc; ++i)
+public:
+  Option(int argc, char* argv[], int& i)
+    : Argc(argc)
+    , Argv(argv)
+    , I(i)
+    , Name(argv[i])
   {
-    std::string arg = argv[i];
-    std::string value;
-    bool hasValue = false;
-    if (arg.size() > 2 && arg.compare(0, 2, "--") == 0)
+    if (this->Name.size() > 2 && this->Name.compare(0, 2, "--") == 0)
     {
-      const std::size_t eq = arg.find('=');
+      const std::size_t eq = this->Name.find('=');
       if (eq != std::string::npos)
       {
-        value = arg.substr(eq + 1);
-        arg = arg.substr(0, eq);
-        hasValue = true;
+        this->Value = this->Name.substr(eq + 1);
+        this->Name = this->Name.substr(0, eq);
+        this->HasValue = true;
       }
-    }
-    auto needValue = [&]() -> std::string {
-      if (hasValue)
-      {
-        return value;
-      }
-      if (i + 1 >= argc)
-      {
-        Fail(arg + " needs a value (see --help)", 2);
-      }
-      // An option next is a value forgotten (--svg --stats), not a file name.
-      const std::string next = argv[i + 1];
-      if (next.size() > 2 && next.compare(0, 2, "--") == 0)
-      {
-        Fail(arg + " needs a value, not the option " + next + " (a file named so: " + arg + "=" +
-            next + " or ./" + next + ")",
-          2);
-      }
-      return argv[++i];
-    };
-    auto noValue = [&]() {
-      if (hasValue)
-      {
-        Fail(arg + " takes no value", 2);
-      }
-    };
-
-    if (arg == "-h" || arg == "--help")
-    {
-      noValue();
-      std::cout << Usage;
-      return false;
-    }
-    else if (arg == "--version")
-    {
-      noValue();
-      std::cout << "osm-mesh " << OSM_VERSION << "\n";
-      return false;
-    }
-    else if (arg == "-o" || arg == "--output")
-    {
-      // One mesh per run: a second -o wrote only the last file (a review).
-      const std::string earlier = args.output;
-      args.output = needValue();
-      if (!earlier.empty())
-      {
-        Fail("more than one output file: '" + earlier + "' and '" + args.output + "'", 2);
-      }
-      if (args.output.empty())
-      {
-        Fail(arg + ": empty file name", 2);
-      }
-    }
-    else if (arg == "--domain")
-    {
-      const std::string mode = needValue();
-      if (mode == "auto")
-      {
-        args.domain = vtkOverlayStitchMesher::DOMAIN_AUTO;
-      }
-      else if (mode == "enclosed")
-      {
-        args.domain = vtkOverlayStitchMesher::DOMAIN_ENCLOSED;
-      }
-      else if (mode == "hull")
-      {
-        args.domain = vtkOverlayStitchMesher::DOMAIN_HULL;
-      }
-      else if (mode == "box")
-      {
-        args.domain = vtkOverlayStitchMesher::DOMAIN_BOX;
-      }
-      else
-      {
-        Fail("--domain: expected auto, enclosed, hull or box, got '" + mode + "'", 2);
-      }
-    }
-    else if (arg == "--min-angle")
-    {
-      args.minAngle = ParseNumber(arg, needValue());
-      args.minAngleGiven = true;
-      if (args.minAngle < osm::kMinAngleDegLowest || args.minAngle > osm::kMinAngleDegHighest)
-      {
-        Fail("--min-angle must be between 1 and 35 degrees, got " + Number(args.minAngle), 2);
-      }
-    }
-    else if (arg == "--gamma")
-    {
-      gamma = ParseNumber(arg, needValue());
-      args.gammaGiven = true;
-    }
-    else if (arg == "--max-edge")
-    {
-      args.maxEdge = ParseNumber(arg, needValue());
-      if (args.maxEdge < 0.0)
-      {
-        Fail("--max-edge must be 0 (no limit) or positive, got " + Number(args.maxEdge), 2);
-      }
-    }
-    else if (arg == "--no-resolve")
-    {
-      noValue();
-      args.resolve = false;
-    }
-    else if (arg == "--project-xy")
-    {
-      noValue();
-      args.projectXY = true;
-    }
-    else if (arg == "--region-areas")
-    {
-      noValue();
-      args.regionAreas = true;
-    }
-    else if (arg == "--no-holes")
-    {
-      noValue();
-      args.holes = false;
-    }
-    else if (arg == "--gap-ratio")
-    {
-      noValue();
-      args.gapRatio = true;
-    }
-    else if (arg == "--no-point-data")
-    {
-      noValue();
-      args.pointData = false;
-    }
-    else if (arg == "--merge-tolerance")
-    {
-      args.mergeTolerance = ParseNumber(arg, needValue());
-      if (args.mergeTolerance < 0.0)
-      {
-        Fail("--merge-tolerance must be 0 or positive, got " + Number(args.mergeTolerance), 2);
-      }
-    }
-    else if (arg == "--max-steiner")
-    {
-      args.maxSteiner = ParseCount(arg, needValue());
-    }
-    else if (arg == "--stats")
-    {
-      noValue();
-      args.stats = true;
-    }
-    else if (arg == "--svg")
-    {
-      args.svg = needValue();
-      if (args.svg.empty())
-      {
-        Fail("--svg: empty file name", 2);
-      }
-    }
-    else if (arg.size() > 1 && arg[0] == '-')
-    {
-      Fail("unknown option '" + arg + "' (see --help)", 2);
-    }
-    else
-    {
-      if (inputGiven)
-      {
-        Fail("more than one input file: '" + args.input + "' and '" + arg + "'", 2);
-      }
-      args.input = arg;
-      inputGiven = true;
     }
   }
 
+  const std::string& name() const { return this->Name; }
+
+  std::string value()
+  {
+    if (this->HasValue)
+    {
+      return this->Value;
+    }
+    if (this->I + 1 >= this->Argc)
+    {
+      Fail(this->Name + " needs a value (see --help)", 2);
+    }
+    // An option next is a value forgotten (--svg --stats), not a file name.
+    const std::string next = this->Argv[this->I + 1];
+    if (next.size() > 2 && next.compare(0, 2, "--") == 0)
+    {
+      Fail(this->Name + " needs a value, not the option " + next +
+          " (a file named so: " + this->Name + "=" + next + " or ./" + next + ")",
+        2);
+    }
+    return this->Argv[++this->I];
+  }
+
+  void noValue() const
+  {
+    if (this->HasValue)
+    {
+      Fail(this->Name + " takes no value", 2);
+    }
+  }
+
+private:
+  int Argc;
+  char** Argv;
+  int& I;
+  std::string Name;
+  std::string Value;
+  bool HasValue = false;
+};
+
+int DomainNamed(const std::string& mode)
+{
+  if (mode == "auto")
+  {
+    return vtkOverlayStitchMesher::DOMAIN_AUTO;
+  }
+  if (mode == "enclosed")
+  {
+    return vtkOverlayStitchMesher::DOMAIN_ENCLOSED;
+  }
+  if (mode == "hull")
+  {
+    return vtkOverlayStitchMesher::DOMAIN_HULL;
+  }
+  if (mode == "box")
+  {
+    return vtkOverlayStitchMesher::DOMAIN_BOX;
+  }
+  Fail("--domain: expected auto, enclosed, hull or box, got '" + mode + "'", 2);
+}
+
+/// Sets the flag an option without a value names; false if it names none.
+bool ReadFlag(Option& option, Arguments& args)
+{
+  static const std::pair<const char*, std::pair<bool Arguments::*, bool>> Flags[] = {
+    { "--no-resolve", { &Arguments::resolve, false } },
+    { "--project-xy", { &Arguments::projectXY, true } },
+    { "--region-areas", { &Arguments::regionAreas, true } },
+    { "--no-holes", { &Arguments::holes, false } },
+    { "--gap-ratio", { &Arguments::gapRatio, true } },
+    { "--no-point-data", { &Arguments::pointData, false } },
+    { "--stats", { &Arguments::stats, true } },
+  };
+  for (const auto& [name, flag] : Flags)
+  {
+    if (option.name() == name)
+    {
+      option.noValue();
+      args.*flag.first = flag.second;
+      return true;
+    }
+  }
+  return false;
+}
+
+/// Reads an option that takes a value; false if it is none of them.
+bool ReadValueOption(Option& option, Arguments& args, double& gamma)
+{
+  const std::string& arg = option.name();
+  if (arg == "-o" || arg == "--output")
+  {
+    // One mesh per run: a second -o wrote only the last file (a review).
+    const std::string earlier = args.output;
+    args.output = option.value();
+    if (!earlier.empty())
+    {
+      Fail("more than one output file: '" + earlier + "' and '" + args.output + "'", 2);
+    }
+    if (args.output.empty())
+    {
+      Fail(arg + ": empty file name", 2);
+    }
+  }
+  else if (arg == "--domain")
+  {
+    args.domain = DomainNamed(option.value());
+  }
+  else if (arg == "--min-angle")
+  {
+    args.minAngle = ParseNumber(arg, option.value());
+    args.minAngleGiven = true;
+    if (args.minAngle < osm::kMinAngleDegLowest || args.minAngle > osm::kMinAngleDegHighest)
+    {
+      Fail("--min-angle must be between 1 and 35 degrees, got " + Number(args.minAngle), 2);
+    }
+  }
+  else if (arg == "--gamma")
+  {
+    gamma = ParseNumber(arg, option.value());
+    args.gammaGiven = true;
+  }
+  else if (arg == "--max-edge")
+  {
+    args.maxEdge = ParseNumber(arg, option.value());
+    if (args.maxEdge < 0.0)
+    {
+      Fail("--max-edge must be 0 (no limit) or positive, got " + Number(args.maxEdge), 2);
+    }
+  }
+  else if (arg == "--merge-tolerance")
+  {
+    args.mergeTolerance = ParseNumber(arg, option.value());
+    if (args.mergeTolerance < 0.0)
+    {
+      Fail("--merge-tolerance must be 0 or positive, got " + Number(args.mergeTolerance), 2);
+    }
+  }
+  else if (arg == "--max-steiner")
+  {
+    args.maxSteiner = ParseCount(arg, option.value());
+  }
+  else if (arg == "--svg")
+  {
+    args.svg = option.value();
+    if (args.svg.empty())
+    {
+      Fail("--svg: empty file name", 2);
+    }
+  }
+  else
+  {
+    return false;
+  }
+  return true;
+}
+
+/// Reads the options and the input file's name into args (--gamma's value
+/// into gamma); false after --help or --version.
+bool ReadOptions(int argc, char* argv[], Arguments& args, double& gamma)
+{
+  bool inputGiven = false;
+  for (int i = 1; i < argc; ++i)
+  {
+    Option option(argc, argv, i);
+    const std::string& arg = option.name();
+    if (arg == "-h" || arg == "--help" || arg == "--version")
+    {
+      option.noValue();
+      std::cout << (arg == "--version" ? "osm-mesh " OSM_VERSION "\n" : Usage);
+      return false;
+    }
+    if (ReadFlag(option, args) || ReadValueOption(option, args, gamma))
+    {
+      continue;
+    }
+    if (arg.size() > 1 && arg[0] == '-')
+    {
+      Fail("unknown option '" + arg + "' (see --help)", 2);
+    }
+    if (inputGiven)
+    {
+      Fail("more than one input file: '" + args.input + "' and '" + arg + "'", 2);
+    }
+    args.input = arg;
+    inputGiven = true;
+  }
   if (!inputGiven)
   {
     Fail("no input file (see --help)", 2);
   }
-  // A script reading --stats gets its JSON for an output it cannot write
-  // too (a review: a missing output folder printed none).
-  window->Stats = args.stats;
+  return true;
+}
+
+/// --gamma sets the minimum angle: theta1 = asin(1 / (2 gamma)).
+void SetMinAngleFromGamma(Arguments& args, double gamma)
+{
   if (args.minAngleGiven && args.gammaGiven)
   {
     Fail("--min-angle and --gamma set the same thing: give only one", 2);
   }
-  if (args.gammaGiven)
+  if (!args.gammaGiven)
   {
-    // theta1 = asin(1 / (2 gamma)) must lie in [1, 35] degrees.
-    const double lo = osm::gammaForMinAngle(osm::kMinAngleDegHighest);
-    const double hi = osm::gammaForMinAngle(osm::kMinAngleDegLowest);
-    if (!(gamma >= lo && gamma <= hi))
-    {
-      Fail("--gamma must be between " + Number(lo) + " and " + Number(hi) +
-          " (theta1 = asin(1/(2G)) from 35 to 1 degrees), got " + Number(gamma),
-        2);
-    }
-    args.minAngle = osm::minAngleForGamma(gamma);
-    // Rounding at the ends of the range must not fall outside the filter's clamp.
-    args.minAngle =
-      std::min(osm::kMinAngleDegHighest, std::max(osm::kMinAngleDegLowest, args.minAngle));
+    return;
   }
+  // theta1 must lie in [1, 35] degrees.
+  const double lo = osm::gammaForMinAngle(osm::kMinAngleDegHighest);
+  const double hi = osm::gammaForMinAngle(osm::kMinAngleDegLowest);
+  if (!(gamma >= lo && gamma <= hi))
+  {
+    Fail("--gamma must be between " + Number(lo) + " and " + Number(hi) +
+        " (theta1 = asin(1/(2G)) from 35 to 1 degrees), got " + Number(gamma),
+      2);
+  }
+  args.minAngle = osm::minAngleForGamma(gamma);
+  // Rounding at the ends of the range must not fall outside the filter's clamp.
+  args.minAngle =
+    std::min(osm::kMinAngleDegHighest, std::max(osm::kMinAngleDegLowest, args.minAngle));
+}
 
-  // Never overwrite the input (e.g. "osm-mesh points.node -o points.node").
+/// The files a run writes (a .node output's .ele, .edge and .poly beside
+/// it); sets args.polyIsInput.
+std::vector<std::string> FilesWritten(Arguments& args)
+{
   std::vector<std::string> written;
   if (Extension(args.output) == ".node")
   {
     const std::string base = args.output.substr(0, args.output.size() - 5);
     written = { base + ".node", base + ".ele", base + ".edge" };
-  }
-  else if (!args.output.empty())
-  {
-    written = { args.output };
-  }
-  if (Extension(args.output) == ".node")
-  {
     // Beside them the mesh's segments (Triangle's -p), unless that file is
     // the input: "osm-mesh square.poly -o square.node" keeps square.poly.
-    const std::string poly = args.output.substr(0, args.output.size() - 5) + ".poly";
+    const std::string poly = base + ".poly";
     std::error_code ec;
     args.polyIsInput = std::filesystem::equivalent(poly, args.input, ec) && !ec;
     if (!args.polyIsInput)
@@ -711,10 +730,21 @@ bool ParseArguments(int argc, char* argv[], Arguments& args, OsmOutputWindow* wi
       written.push_back(poly);
     }
   }
+  else if (!args.output.empty())
+  {
+    written = { args.output };
+  }
   if (!args.svg.empty())
   {
     written.push_back(args.svg);
   }
+  return written;
+}
+
+/// Never overwrite the input (e.g. "osm-mesh points.node -o points.node"),
+/// nor write one file twice.
+void FailIfWrittenTwiceOrRead(const Arguments& args, const std::vector<std::string>& written)
+{
   // A .poly file without vertices reads them from the .node beside it.
   std::vector<std::string> read = { args.input };
   if (Extension(args.input) == ".poly" && ListsNoVertices(args.input))
@@ -736,7 +766,6 @@ bool ParseArguments(int argc, char* argv[], Arguments& args, OsmOutputWindow* wi
           2);
       }
     }
-    std::error_code ec;
     const std::filesystem::path target = Resolved(path);
     if (std::find(targets.begin(), targets.end(), target) != targets.end())
     {
@@ -744,7 +773,11 @@ bool ParseArguments(int argc, char* argv[], Arguments& args, OsmOutputWindow* wi
     }
     targets.push_back(target);
   }
+}
 
+/// The input must be a regular file of a kind read, the output of a kind written.
+void FailIfUnknownKinds(const Arguments& args)
+{
   const std::string in = Extension(args.input);
   if (in != ".poly" && in != ".node" && in != ".vtp" && in != ".vtu" && in != ".vtk")
   {
@@ -772,6 +805,25 @@ bool ParseArguments(int argc, char* argv[], Arguments& args, OsmOutputWindow* wi
         "cannot write '" + args.output + "': the output must end in .vtp, .vtu, .vtk or .node", 2);
     }
   }
+}
+
+/// Reads the command line into args; false after --help or --version. Past
+/// the options, the files are checked, and a check failing with --stats
+/// prints its JSON too (window->Stats).
+bool ParseArguments(int argc, char* argv[], Arguments& args, OsmOutputWindow* window)
+{
+  double gamma = 0.0;
+  if (!ReadOptions(argc, argv, args, gamma))
+  {
+    return false;
+  }
+  // A script reading --stats gets its JSON for an output it cannot write
+  // too (a review: a missing output folder printed none).
+  window->Stats = args.stats;
+  SetMinAngleFromGamma(args, gamma);
+  const std::vector<std::string> written = FilesWritten(args);
+  FailIfWrittenTwiceOrRead(args, written);
+  FailIfUnknownKinds(args);
   for (const std::string& path : written)
   {
     FailIfNoFolderFor(path);
