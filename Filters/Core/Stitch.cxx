@@ -799,6 +799,128 @@ void listIntact(OverlayEdges& ov, const Array<std::uint8_t>& flags, const Array<
   known.nbr = std::move(nbrs);
 }
 
+/// The graph's overlay vertices (input or Steiner), with room for every
+/// stitch vertex and edge stitching adds, so that appending never copies.
+PlanarGraph startGraph(
+  Array<Point> points, const Array<char>& isInput, std::size_t overlayEdgeIds, const Walk& walk)
+{
+  PlanarGraph g;
+  // Each crossing may add a stitch vertex, and each overlay edge, crossing
+  // and piece at most two edges.
+  const std::size_t nc = walk.crossings.size();
+  const std::size_t overlayVertices = points.size();
+  g.points = std::move(points);
+  g.points.reserve(overlayVertices + nc);
+  g.origin.reserve(overlayVertices + nc);
+  g.origin.resize(overlayVertices);
+  g.stitchSegment.reserve(nc);
+  g.firstStitch = overlayVertices;
+  const std::size_t edgeBound = overlayEdgeIds / 2 + 2 * nc + walk.pieces.size();
+  g.edges.reserve(edgeBound);
+  g.constrained.reserve(edgeBound);
+  g.openSides.reserve(edgeBound);
+  for (std::size_t v = 0; v < g.points.size(); ++v)
+    g.origin[v] = isInput[v] ? VertexOrigin::Input : VertexOrigin::Overlay;
+  return g;
+}
+
+void addEdge(PlanarGraph& g, int a, int b, bool constrained, std::uint8_t open)
+{
+  g.edges.push_back({ a, b });
+  g.constrained.push_back(constrained);
+  g.openSides.push_back(open);
+}
+
+/// Per overlay edge id: HalfCrossed, HalfKept and HalfAlongInput, from the
+/// walk's crossings and pieces (a duplicate piece's left out); counts the
+/// crossings. With alongSegment, the segment along each edge that is a piece.
+Array<std::uint8_t> flagOverlayEdges(
+  const OverlayEdges& ov, const Walk& walk, Statistics& stats, Array<int>* alongSegment)
+{
+  Array<std::uint8_t> flags;
+  flags.assign(ov.idBound(), std::uint8_t{ 0 });
+  for (const Crossing& c : walk.crossings)
+  {
+    if (walk.pieces[c.piece].duplicate)
+      continue;
+    flagEdge(ov, flags, c.edge, c.good ? HalfCrossed | HalfKept : HalfCrossed);
+    ++(c.good ? stats.goodCrossings : stats.badCrossings);
+  }
+  stats.crossings = stats.goodCrossings + stats.badCrossings;
+  if (alongSegment)
+    alongSegment->assign(ov.idBound(), -1);
+  for (const Piece& p : walk.pieces)
+    if (p.overlayEdge >= 0 && !p.duplicate)
+    {
+      flagEdge(ov, flags, p.overlayEdge, HalfAlongInput);
+      if (alongSegment)
+        (*alongSegment)[ov.edgeId(p.overlayEdge / 3, p.overlayEdge % 3)] = p.segment;
+    }
+  return flags;
+}
+
+/// A kept crossed edge from ends[0] to ends[1]: one stitch vertex per
+/// crossing (order[first, next), in order along it) and the edges between.
+void stitchKeptEdge(PlanarGraph& g, const Walk& walk, const Array<int>& order, std::size_t first,
+  std::size_t next, const Segment& ends, Array<int>& stitchVertex)
+{
+  const double edgeLength = std::sqrt(dist2(g.points[ends[0]], g.points[ends[1]]));
+  int prev = ends[0];
+  int prevSegment = -1; // the segment of the crossing at prev, if any
+  for (std::size_t k = first; k < next; ++k)
+  {
+    const Crossing& c = walk.crossings[order[k]];
+    if (walk.pieces[c.piece].duplicate)
+      continue;
+    const int segment = walk.pieces[c.piece].segment;
+    if (!c.resolved)
+      throw Stop{ "a segment passes input points closer together than double precision "
+                  "resolves at the coordinates of both its ends (features below about "
+                  "1e-14 of them)",
+        true, c.p, { segment, -1 }, Stop::Remedy::MergePoints };
+    // Crossings within rounding of each other (or of the edge's ends) cannot
+    // be told apart: the segments meet at an angle below double precision.
+    if (tooClose(c.p, g.points[prev], edgeLength))
+      throw crossingTooClose(g, c.p, segment, prevSegment < 0 ? prev : -1, prevSegment);
+    if (tooClose(c.p, g.points[ends[1]], edgeLength))
+      throw crossingTooClose(g, c.p, segment, ends[1], -1);
+    prevSegment = segment;
+    const int v = static_cast<int>(g.points.size());
+    g.points.push_back(c.p);
+    g.origin.push_back(VertexOrigin::Stitch);
+    g.stitchSegment.push_back(segment);
+    stitchVertex[order[k]] = v;
+    addEdge(g, prev, v, false, OpenBoth);
+    prev = v;
+  }
+  addEdge(g, prev, ends[1], false, OpenBoth);
+}
+
+/// Input subsegments: each piece, split at its kept crossings. A piece along
+/// an uncrossed overlay edge is that edge, added already.
+void addSubsegments(PlanarGraph& g, const Walk& walk, const Array<std::uint8_t>& flags,
+  const Array<int>& stitchVertex, Array<Edge>* inspect)
+{
+  forEachPieceInSegmentOrder(walk, [&](int piece) {
+    const Piece& p = walk.pieces[piece];
+    if (p.duplicate || (p.overlayEdge >= 0 && !(flags[p.overlayEdge] & HalfCrossed)))
+      return;
+    int prev = p.v0;
+    for (int k = p.firstCrossing; k < p.firstCrossing + p.crossingCount; ++k)
+    {
+      if (stitchVertex[k] < 0)
+        continue;
+      addEdge(g, prev, stitchVertex[k], true, OpenBoth);
+      if (inspect)
+        inspect->push_back({ prev, stitchVertex[k], EdgeInput, p.segment });
+      prev = stitchVertex[k];
+    }
+    addEdge(g, prev, p.v1, true, OpenBoth);
+    if (inspect && p.overlayEdge < 0)
+      inspect->push_back({ prev, p.v1, EdgeInput, p.segment });
+  });
+}
+
 } // namespace
 
 PlanarGraph stitch(OverlayEdges ov, Array<Point> points, const Array<char>& isInput,
@@ -808,53 +930,14 @@ PlanarGraph stitch(OverlayEdges ov, Array<Point> points, const Array<char>& isIn
   // crossings split) counts afresh (a review: KeptEdges added up over rounds).
   stats.goodCrossings = stats.badCrossings = stats.uncrossedEdges = 0;
   stats.keptEdges = stats.discardedEdges = 0;
-  PlanarGraph g;
-  // Each crossing may add a stitch vertex, and each overlay edge, crossing
-  // and piece at most two edges: reserve so that appending never copies.
   const std::size_t ne = ov.idBound();
-  const std::size_t nc = walk.crossings.size();
   const std::size_t overlayVertices = points.size();
-  g.points = std::move(points);
-  g.points.reserve(overlayVertices + nc);
-  g.origin.reserve(overlayVertices + nc);
-  g.origin.resize(overlayVertices);
-  g.stitchSegment.reserve(nc);
-  g.firstStitch = overlayVertices;
-  const std::size_t edgeBound = ne / 2 + 2 * nc + walk.pieces.size();
-  g.edges.reserve(edgeBound);
-  g.constrained.reserve(edgeBound);
-  g.openSides.reserve(edgeBound);
-  for (std::size_t v = 0; v < g.points.size(); ++v)
-    g.origin[v] = isInput[v] ? VertexOrigin::Input : VertexOrigin::Overlay;
+  PlanarGraph g = startGraph(std::move(points), isInput, ne, walk);
   run.poll();
-  auto addEdge = [&](int a, int b, bool constrained, std::uint8_t open) {
-    g.edges.push_back({ a, b });
-    g.constrained.push_back(constrained);
-    g.openSides.push_back(open);
-  };
-
-  Array<std::uint8_t> flags;
-  flags.assign(ne, std::uint8_t{ 0 });
-  for (const Crossing& c : walk.crossings)
-  {
-    if (walk.pieces[c.piece].duplicate)
-      continue;
-    flagEdge(ov, flags, c.edge, c.good ? HalfCrossed | HalfKept : HalfCrossed);
-    ++(c.good ? stats.goodCrossings : stats.badCrossings);
-  }
-  stats.crossings = stats.goodCrossings + stats.badCrossings;
+  Array<int> alongSegment; // for inspection
+  const Array<std::uint8_t> flags =
+    flagOverlayEdges(ov, walk, stats, inspect ? &alongSegment : nullptr);
   run.poll();
-  // For inspection: the segment along each overlay edge that is a piece.
-  Array<int> alongSegment;
-  if (inspect)
-    alongSegment.assign(ne, -1);
-  for (const Piece& p : walk.pieces)
-    if (p.overlayEdge >= 0 && !p.duplicate)
-    {
-      flagEdge(ov, flags, p.overlayEdge, HalfAlongInput);
-      if (inspect)
-        alongSegment[ov.edgeId(p.overlayEdge / 3, p.overlayEdge % 3)] = p.segment;
-    }
   int intactCount = 0;
   const Array<int> intactIndex = numberIntact(flags, intactCount);
   // The faces still to trace lie on the sides of an edge whose triangle there
@@ -865,7 +948,6 @@ PlanarGraph stitch(OverlayEdges ov, Array<Point> points, const Array<char>& isIn
       (intactIndex[id / 3] < 0 ? OpenLeft : 0) | (u >= 0 && intactIndex[u] < 0 ? OpenRight : 0));
   };
 
-  // Kept crossed edges: one stitch vertex per crossing, in order along the edge.
   run.poll();
   const Array<int> order = crossingsByEdge(walk);
   run.poll();
@@ -889,42 +971,13 @@ PlanarGraph stitch(OverlayEdges ov, Array<Point> points, const Array<char>& isIn
       edgeFlags |= EdgeKept | (alongInput ? EdgeInput : 0);
       const std::uint8_t open = openSides(e);
       if (alongInput || open)
-        addEdge(ends[0], ends[1], alongInput, open);
+        addEdge(g, ends[0], ends[1], alongInput, open);
     }
     else if (flags[e] & HalfKept)
     {
-      const double edgeLength = std::sqrt(dist2(g.points[ends[0]], g.points[ends[1]]));
       ++stats.keptEdges;
       edgeFlags |= EdgeKept | EdgeCrossed;
-      int prev = ends[0];
-      int prevSegment = -1; // the segment of the crossing at prev, if any
-      for (std::size_t k = first; k < next; ++k)
-      {
-        const Crossing& c = walk.crossings[order[k]];
-        if (walk.pieces[c.piece].duplicate)
-          continue;
-        const int segment = walk.pieces[c.piece].segment;
-        if (!c.resolved)
-          throw Stop{ "a segment passes input points closer together than double precision "
-                      "resolves at the coordinates of both its ends (features below about "
-                      "1e-14 of them)",
-            true, c.p, { segment, -1 }, Stop::Remedy::MergePoints };
-        // Crossings within rounding of each other (or of the edge's ends) cannot
-        // be told apart: the segments meet at an angle below double precision.
-        if (tooClose(c.p, g.points[prev], edgeLength))
-          throw crossingTooClose(g, c.p, segment, prevSegment < 0 ? prev : -1, prevSegment);
-        if (tooClose(c.p, g.points[ends[1]], edgeLength))
-          throw crossingTooClose(g, c.p, segment, ends[1], -1);
-        prevSegment = segment;
-        const int v = static_cast<int>(g.points.size());
-        g.points.push_back(c.p);
-        g.origin.push_back(VertexOrigin::Stitch);
-        g.stitchSegment.push_back(segment);
-        stitchVertex[order[k]] = v;
-        addEdge(prev, v, false, OpenBoth);
-        prev = v;
-      }
-      addEdge(prev, ends[1], false, OpenBoth);
+      stitchKeptEdge(g, walk, order, first, next, ends, stitchVertex);
     }
     else
     {
@@ -936,27 +989,7 @@ PlanarGraph stitch(OverlayEdges ov, Array<Point> points, const Array<char>& isIn
   }
   listIntact(ov, flags, intactIndex, intactCount, walk, g, run);
   stats.stitchVertices = g.points.size() - overlayVertices;
-
-  // Input subsegments: each piece, split at its kept crossings. A piece along
-  // an uncrossed overlay edge is that edge, added above.
-  forEachPieceInSegmentOrder(walk, [&](int piece) {
-    const Piece& p = walk.pieces[piece];
-    if (p.duplicate || (p.overlayEdge >= 0 && !(flags[p.overlayEdge] & HalfCrossed)))
-      return;
-    int prev = p.v0;
-    for (int k = p.firstCrossing; k < p.firstCrossing + p.crossingCount; ++k)
-    {
-      if (stitchVertex[k] < 0)
-        continue;
-      addEdge(prev, stitchVertex[k], true, OpenBoth);
-      if (inspect)
-        inspect->push_back({ prev, stitchVertex[k], EdgeInput, p.segment });
-      prev = stitchVertex[k];
-    }
-    addEdge(prev, p.v1, true, OpenBoth);
-    if (inspect && p.overlayEdge < 0)
-      inspect->push_back({ prev, p.v1, EdgeInput, p.segment });
-  });
+  addSubsegments(g, walk, flags, stitchVertex, inspect);
   return g;
 }
 
