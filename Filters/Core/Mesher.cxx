@@ -219,6 +219,46 @@ void appendHullEdges(const Array<int>& hull, Array<Segment>& segments)
       segments.push_back({ hull[i], hull[(i + 1) % h] });
 }
 
+/// Working points back in the user's coordinates. Scaling back is exact
+/// unless a point falls among the subnormal numbers, where it would lose bits
+/// and could flip triangles: refused instead. Adding the origin back is exact
+/// for the input vertices (normalise) and rounds the others once, to the
+/// nearest point in the user's coordinates.
+class Unscaler
+{
+public:
+  explicit Unscaler(const Frame& frame)
+    : frame(frame)
+    , normalPowers(std::abs(frame.exponent) <= 1021)
+    , up(std::ldexp(1.0, normalPowers ? frame.exponent : 0))
+    , down(std::ldexp(1.0, normalPowers ? -frame.exponent : 0))
+  {}
+
+  Point operator()(const Point& p) const
+  {
+    const Point u = scaleBy(p, frame.exponent, up);
+    const Point back = scaleBy(u, -frame.exponent, down);
+    if (back.x != p.x || back.y != p.y)
+      throw Stop{ "the mesh needs points too close to zero for double precision at this "
+                  "scale (coordinates below about 1e-290)",
+        true, p };
+    return frame.addOrigin(u);
+  }
+
+private:
+  /// Multiplying by a normal power of two rounds exactly as ldexp does,
+  /// without a library call per coordinate; other exponents keep ldexp.
+  Point scaleBy(const Point& p, int e, double factor) const
+  {
+    return normalPowers ? Point{ p.x * factor, p.y * factor }
+                        : Point{ std::ldexp(p.x, e), std::ldexp(p.y, e) };
+  }
+
+  const Frame& frame;
+  const bool normalPowers;
+  const double up, down;
+};
+
 class Mesher
 {
 public:
@@ -267,6 +307,13 @@ private:
   Domain chooseDomain(const Work& w, Array<int>& hull);
   void buildOutput(const Work& w, const PlanarGraph& g, Completion& c, Carving& carve,
     const Overlay& overlay, Array<Edge>& edges, Domain domain);
+  Array<int> keepDomainTriangles(
+    const PlanarGraph& g, Completion& c, Carving& carve, const Unscaler& unscale);
+  void mapInputVertices(
+    const Work& w, const Overlay& overlay, const Array<int>& newIndex, Domain domain);
+  void checkOriginRounding();
+  void keepEdgesForInspection(const Work& w, const PlanarGraph& g, Array<Edge>& edges,
+    const Array<int>& newIndex, const Unscaler& unscale);
   OverlayOptions overlayOptionsFor(
     const Work& w, Domain domain, const Array<Segment>& segments, const Array<int>& hull);
   void splitRoundCrossings(Work& w, const Walk& walk);
@@ -1475,32 +1522,9 @@ std::string angleBoundWarning(const TriMesh& mesh, double boundDeg, const PointF
                 "input");
 }
 
-void Mesher::buildOutput(const Work& w, const PlanarGraph& g, Completion& c, Carving& carve,
-  const Overlay& overlay, Array<Edge>& edges, Domain domain)
+Array<int> Mesher::keepDomainTriangles(
+  const PlanarGraph& g, Completion& c, Carving& carve, const Unscaler& unscale)
 {
-  Statistics& st = res.stats;
-  // Scaling back is exact unless a point falls among the subnormal numbers,
-  // where it would lose bits and could flip triangles: refuse that instead.
-  // Multiplying by a normal power of two rounds exactly as ldexp does, without
-  // a library call per coordinate; other exponents keep ldexp.
-  const bool normalPowers = std::abs(exponent) <= 1021;
-  const double up = std::ldexp(1.0, normalPowers ? exponent : 0);
-  const double down = std::ldexp(1.0, normalPowers ? -exponent : 0);
-  auto scaleBy = [&](const Point& p, int e, double factor) {
-    return normalPowers ? Point{ p.x * factor, p.y * factor }
-                        : Point{ std::ldexp(p.x, e), std::ldexp(p.y, e) };
-  };
-  // Adding the origin back is exact for the input vertices (normalise) and
-  // rounds the others once, to the nearest point in the user's coordinates.
-  auto unscale = [&](Point p) {
-    const Point u = scaleBy(p, exponent, up);
-    const Point back = scaleBy(u, -exponent, down);
-    if (back.x != p.x || back.y != p.y)
-      throw Stop{ "the mesh needs points too close to zero for double precision at this "
-                  "scale (coordinates below about 1e-290)",
-        true, p };
-    return frame.addOrigin(u);
-  };
   Array<int> newIndex;
   newIndex.assign(g.points.size(), -1);
   // Upper bounds: room never touched costs nothing, growing copies.
@@ -1543,7 +1567,12 @@ void Mesher::buildOutput(const Work& w, const PlanarGraph& g, Completion& c, Car
     tris.shrink_to_fit();
     region.shrink_to_fit();
   }
-  assignRegionAttributes(carve);
+  return newIndex;
+}
+
+void Mesher::mapInputVertices(
+  const Work& w, const Overlay& overlay, const Array<int>& newIndex, Domain domain)
+{
   // Points created by splitting crossing segments are neither input nor Steiner.
   for (std::size_t i = 0; i < w.points.size(); ++i)
   {
@@ -1565,14 +1594,56 @@ void Mesher::buildOutput(const Work& w, const PlanarGraph& g, Completion& c, Car
   if (outside > 0)
     res.warnings.push_back(std::to_string(outside) +
       " input point(s) lie outside the meshed domain (outside every enclosed region or in a "
-      "hole) and are not in the mesh, e.g. point " +
-      std::to_string(example) + " at " + formatPoint(input.points[example], options.pointFormat) +
+      "hole) and are not in the mesh, e.g. " +
+      namePoint(input, example, options.pointFormat) +
       (domain == Domain::Enclosed ? "; the hull or box domain keeps those outside every region"
                                   : "") +
-      (domain == Domain::Enclosed && st.crossingsSplit > 0
+      (domain == Domain::Enclosed && res.stats.crossingsSplit > 0
           ? "; if segments meant to meet at one point cross apart and enclose a tiny region "
             "there, a merge tolerance joins their crossings"
           : ""));
+}
+
+void Mesher::checkOriginRounding()
+{
+  if (frame.origin.x == 0 && frame.origin.y == 0)
+    return;
+  const bool stretched = anyRoundedAbove(res.mesh, options.maxEdgeLength, originRounding());
+  if (stretched && !shrinkBound)
+  {
+    boundStretched = true;
+    throw Stop{ "adding the origin back stretched an edge past the size bound" };
+  }
+  if (stretched || res.stats.maxAngleDeg > res.stats.predictedMaxAngleDeg ||
+    anyTurnedOver(res.mesh))
+  {
+    roundedBadly = true;
+    throw Stop{ "adding the origin back rounded the mesh badly" };
+  }
+}
+
+void Mesher::keepEdgesForInspection(const Work& w, const PlanarGraph& g, Array<Edge>& edges,
+  const Array<int>& newIndex, const Unscaler& unscale)
+{
+  res.edgeVertices.reserve(g.points.size());
+  for (const Point& p : g.points)
+    res.edgeVertices.push_back(unscale(p));
+  res.edges = std::move(edges);
+  res.edgeVertexInMesh = newIndex;
+  for (Edge& e : res.edges) // walked segments to input segments
+    e.segment = e.segment >= 0 && e.segment < static_cast<int>(w.segmentOrigin.size())
+      ? w.segmentOrigin[e.segment]
+      : -1;
+}
+
+void Mesher::buildOutput(const Work& w, const PlanarGraph& g, Completion& c, Carving& carve,
+  const Overlay& overlay, Array<Edge>& edges, Domain domain)
+{
+  Statistics& st = res.stats;
+  const Unscaler unscale(frame);
+  const Array<int> newIndex = keepDomainTriangles(g, c, carve, unscale);
+  assignRegionAttributes(carve);
+  mapInputVertices(w, overlay, newIndex, domain);
   if (std::string close =
         closePointsWarning(closePairs, res.inputVertex, input, options.pointFormat);
       !close.empty())
@@ -1583,36 +1654,13 @@ void Mesher::buildOutput(const Work& w, const PlanarGraph& g, Completion& c, Car
   st.outputTriangles = res.mesh.triangles.size();
   run.report(0.6);
   angleExtremes(res.mesh, st.minAngleDeg, st.maxAngleDeg, run);
-  if (frame.origin.x != 0 || frame.origin.y != 0)
-  {
-    const bool stretched = anyRoundedAbove(res.mesh, options.maxEdgeLength, originRounding());
-    if (stretched && !shrinkBound)
-    {
-      boundStretched = true;
-      throw Stop{ "adding the origin back stretched an edge past the size bound" };
-    }
-    if (stretched || st.maxAngleDeg > st.predictedMaxAngleDeg || anyTurnedOver(res.mesh))
-    {
-      roundedBadly = true;
-      throw Stop{ "adding the origin back rounded the mesh badly" };
-    }
-  }
+  checkOriginRounding();
   if (st.maxAngleDeg > st.predictedMaxAngleDeg)
     res.warnings.push_back(
       angleBoundWarning(res.mesh, st.predictedMaxAngleDeg, options.pointFormat));
   run.report(0.85);
   if (options.keepEdges)
-  {
-    res.edgeVertices.reserve(g.points.size());
-    for (const Point& p : g.points)
-      res.edgeVertices.push_back(unscale(p));
-    res.edges = std::move(edges);
-    res.edgeVertexInMesh = newIndex;
-    for (Edge& e : res.edges) // walked segments to input segments
-      e.segment = e.segment >= 0 && e.segment < static_cast<int>(w.segmentOrigin.size())
-        ? w.segmentOrigin[e.segment]
-        : -1;
-  }
+    keepEdgesForInspection(w, g, edges, newIndex, unscale);
   for (Point& p : res.overlay.vertices)
     p = unscale(p);
 }
