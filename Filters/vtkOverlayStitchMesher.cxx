@@ -1107,6 +1107,25 @@ private:
   osm::Options MakeOptions(bool interpolate) const;
   std::optional<int> MeshPslg(bool interpolate);
   int FillOutputs(bool interpolate);
+  /// The input cells of the segments, where point or cell data are carried.
+  std::vector<vtkIdType> SegmentCells() const;
+  /// The Mesh output and its data, from lo to hi of the run; false if aborted.
+  bool FillMeshOutput(
+    bool interpolate, const std::vector<vtkIdType>& segmentCells, double lo, double hi);
+  void AddFieldCounts();
+  void FillEdgesOutput(const std::vector<vtkIdType>& segmentCells, double lo, double hi);
+  /// An output's own arrays, which an input array may not take the name of
+  /// (InputBlockId only for a composite input, which alone has it).
+  template <std::size_t N>
+  std::vector<std::string> OwnNames(const std::array<const char*, N>& own) const
+  {
+    std::vector<std::string> names(own.begin(), own.end());
+    if (this->Composite)
+    {
+      names.emplace_back(Names::InputBlockId);
+    }
+    return names;
+  }
   bool Aborted();
   void SayAborted();
   /// Where the output phase starts in the run's progress: the Edges and
@@ -1613,11 +1632,127 @@ void vtkOverlayStitchMesher::MeshRun::SayAborted()
 /// Phase "output": the three polydata, built in bulk, with the input's data
 /// carried; the abort flag is polled between them (an abort empties every
 /// output).
-int vtkOverlayStitchMesher::MeshRun::FillOutputs(bool interpolate)
+namespace
+{
+/// Reports the warnings of the input data carriers, and clears them.
+void ReportWarnings(vtkOverlayStitchMesher* self, std::vector<std::string>& warnings)
+{
+  for (const std::string& warning : warnings)
+  {
+    vtkWarningWithObjectMacro(self, << warning);
+  }
+  warnings.clear();
+}
+
+/// An output step's progress, from lo to hi of the whole run; true when an
+/// abort is requested.
+auto ProgressSteps(vtkOverlayStitchMesher* self, double lo, double hi)
+{
+  return [self, lo, hi](double fraction) {
+    self->UpdateProgress(lo + (hi - lo) * fraction);
+    return AbortRequested(self);
+  };
+}
+} // namespace
+
+std::vector<vtkIdType> vtkOverlayStitchMesher::MeshRun::SegmentCells() const
+{
+  std::vector<vtkIdType> cells;
+  if (this->Self->InterpolatePointData || (this->Self->PassCellData && this->Self->GenerateEdges))
+  {
+    cells.reserve(this->SegmentSources.size());
+    for (const SegmentSource& source : this->SegmentSources)
+    {
+      cells.push_back(source.Cell);
+    }
+  }
+  return cells;
+}
+
+bool vtkOverlayStitchMesher::MeshRun::FillMeshOutput(
+  bool interpolate, const std::vector<vtkIdType>& segmentCells, double lo, double hi)
 {
   vtkOverlayStitchMesher* self = this->Self;
   vtkPolyData* input = this->Input;
-  const osm::Result& result = this->Result;
+  std::vector<std::string> warnings;
+  vtkNew<vtkPointData> carried;
+  if (interpolate)
+  {
+    OverlayStitchInterpolatePointData(input->GetPointData(), input->GetCellData(), this->Pslg,
+      this->Result, segmentCells, this->OwnNames(Names::MeshPointArrays), carried,
+      ProgressSteps(self, lo, lo + 0.06), warnings);
+    ReportWarnings(self, warnings);
+    this->Reuse.reset();
+  }
+  if (this->Aborted())
+  {
+    return false;
+  }
+  // Carried point normals decide which way the triangles face (cell
+  // normals would count line cells' too, which reach no triangle).
+  const bool reversed =
+    interpolate && NormalsOppose(input->GetPointData()->GetNormals(), this->Result.mesh, this->Map);
+  FillMesh(
+    this->Result, this->Map, this->Mesh, ProgressSteps(self, lo + 0.06, lo + 0.09), reversed);
+  if (this->Aborted())
+  {
+    return false;
+  }
+  OverlayStitchToSourceIds(input->GetPointData(), OverlayStitchSourcePointIdName,
+    vtkIdTypeArray::SafeDownCast(this->Mesh->GetPointData()->GetArray(Names::InputPointId)),
+    this->Mesh->GetPointData());
+  if (self->PassCellData)
+  {
+    OverlayStitchPassPolygonData(input, this->Pslg, this->Result, this->Map,
+      this->OwnNames(Names::MeshCellArrays), this->Mesh->GetCellData(),
+      ProgressSteps(self, lo + 0.09, hi), warnings);
+    ReportWarnings(self, warnings);
+    if (this->Aborted())
+    {
+      return false;
+    }
+  }
+  OverlayStitchMovePointData(carried, this->Mesh->GetPointData());
+  this->AddFieldCounts();
+  return true;
+}
+
+void vtkOverlayStitchMesher::MeshRun::AddFieldCounts()
+{
+  vtkPolyData* mesh = this->Mesh;
+  auto addCount = [mesh](const char* name, double value) {
+    auto array = MakeArray<vtkDoubleArray>(name, 1);
+    array->SetValue(0, value);
+    mesh->GetFieldData()->AddArray(array);
+  };
+  addCount(Names::IgnoredCells,
+    static_cast<double>(this->Ignored.Total() + OverlayStitchIgnoredCells(this->Input)));
+  addCount(Names::InputHolePoints, static_cast<double>(this->InputHoles));
+  addCount(Names::InputPlaneFitted, this->Map.isFitted() ? 1.0 : 0.0);
+  addCount(Names::InputProjectedToXY, this->Map.isProjected() ? 1.0 : 0.0);
+}
+
+void vtkOverlayStitchMesher::MeshRun::FillEdgesOutput(
+  const std::vector<vtkIdType>& segmentCells, double lo, double hi)
+{
+  vtkOverlayStitchMesher* self = this->Self;
+  FillEdges(this->Result, this->Map, this->Edges, ProgressSteps(self, lo, lo + 0.1));
+  if (self->PassCellData && !AbortRequested(self))
+  {
+    std::vector<std::string> warnings;
+    OverlayStitchPassCellData(this->Input->GetCellData(), this->Input->GetNumberOfCells(),
+      this->Pslg, this->Result, segmentCells, this->OwnNames(Names::EdgesCellArrays),
+      this->Edges->GetCellData(), ProgressSteps(self, lo + 0.1, hi), warnings);
+    // The input's active cell scalars came along active; the Edges output
+    // opens colored by its classes all the same.
+    this->Edges->GetCellData()->SetActiveScalars(Names::EdgeClass);
+    ReportWarnings(self, warnings);
+  }
+}
+
+int vtkOverlayStitchMesher::MeshRun::FillOutputs(bool interpolate)
+{
+  vtkOverlayStitchMesher* self = this->Self;
   self->SetProgressText("output");
   // The bands: the Mesh and its data take 0.1, the Edges output 0.15, the
   // Overlay output the rest.
@@ -1628,89 +1763,11 @@ int vtkOverlayStitchMesher::MeshRun::FillOutputs(bool interpolate)
   {
     return 1;
   }
-  // The output steps: the input data carriers' warnings, and progress from lo
-  // to hi of the whole run, which an abort stops.
-  std::vector<std::string> warnings;
-  auto warn = [self, &warnings]() {
-    for (const std::string& warning : warnings)
-    {
-      vtkWarningWithObjectMacro(self, << warning);
-    }
-    warnings.clear();
-  };
-  auto outputSteps = [self](double lo, double hi) {
-    return [self, lo, hi](double fraction) {
-      self->UpdateProgress(lo + (hi - lo) * fraction);
-      return AbortRequested(self);
-    };
-  };
-  // An output's own arrays, which an input array may not take the name of
-  // (InputBlockId only for a composite input, which alone has it).
-  auto ownNames = [this](const auto& own) {
-    std::vector<std::string> names(own.begin(), own.end());
-    if (this->Composite)
-    {
-      names.emplace_back(Names::InputBlockId);
-    }
-    return names;
-  };
-  std::vector<vtkIdType> segmentCells;
-  if (self->InterpolatePointData || (self->PassCellData && self->GenerateEdges))
-  {
-    segmentCells.reserve(this->SegmentSources.size());
-    for (const SegmentSource& source : this->SegmentSources)
-    {
-      segmentCells.push_back(source.Cell);
-    }
-  }
-  vtkNew<vtkPointData> carried;
-  if (interpolate)
-  {
-    OverlayStitchInterpolatePointData(input->GetPointData(), input->GetCellData(), this->Pslg,
-      result, segmentCells, ownNames(Names::MeshPointArrays), carried,
-      outputSteps(start, start + 0.06), warnings);
-    warn();
-    this->Reuse.reset();
-  }
-  if (this->Aborted())
+  const std::vector<vtkIdType> segmentCells = this->SegmentCells();
+  if (!this->FillMeshOutput(interpolate, segmentCells, start, edges))
   {
     return 1;
   }
-  // Carried point normals decide which way the triangles face (cell
-  // normals would count line cells' too, which reach no triangle).
-  const bool reversed =
-    interpolate && NormalsOppose(input->GetPointData()->GetNormals(), result.mesh, this->Map);
-  FillMesh(result, this->Map, this->Mesh, outputSteps(start + 0.06, start + 0.09), reversed);
-  if (this->Aborted())
-  {
-    return 1;
-  }
-  OverlayStitchToSourceIds(input->GetPointData(), OverlayStitchSourcePointIdName,
-    vtkIdTypeArray::SafeDownCast(this->Mesh->GetPointData()->GetArray(Names::InputPointId)),
-    this->Mesh->GetPointData());
-  if (self->PassCellData)
-  {
-    OverlayStitchPassPolygonData(input, this->Pslg, result, this->Map,
-      ownNames(Names::MeshCellArrays), this->Mesh->GetCellData(), outputSteps(start + 0.09, edges),
-      warnings);
-    warn();
-    if (this->Aborted())
-    {
-      return 1;
-    }
-  }
-  OverlayStitchMovePointData(carried, this->Mesh->GetPointData());
-  vtkPolyData* mesh = this->Mesh;
-  auto addCount = [mesh](const char* name, double value) {
-    auto array = MakeArray<vtkDoubleArray>(name, 1);
-    array->SetValue(0, value);
-    mesh->GetFieldData()->AddArray(array);
-  };
-  addCount(Names::IgnoredCells,
-    static_cast<double>(this->Ignored.Total() + OverlayStitchIgnoredCells(input)));
-  addCount(Names::InputHolePoints, static_cast<double>(this->InputHoles));
-  addCount(Names::InputPlaneFitted, this->Map.isFitted() ? 1.0 : 0.0);
-  addCount(Names::InputProjectedToXY, this->Map.isProjected() ? 1.0 : 0.0);
   self->UpdateProgress(edges);
   if (this->Aborted())
   {
@@ -1718,17 +1775,7 @@ int vtkOverlayStitchMesher::MeshRun::FillOutputs(bool interpolate)
   }
   if (self->GenerateEdges)
   {
-    FillEdges(result, this->Map, this->Edges, outputSteps(edges, edges + 0.1));
-    if (self->PassCellData && !AbortRequested(self))
-    {
-      OverlayStitchPassCellData(input->GetCellData(), input->GetNumberOfCells(), this->Pslg, result,
-        segmentCells, ownNames(Names::EdgesCellArrays), this->Edges->GetCellData(),
-        outputSteps(edges + 0.1, overlay), warnings);
-      // The input's active cell scalars came along active; the Edges output
-      // opens colored by its classes all the same.
-      this->Edges->GetCellData()->SetActiveScalars(Names::EdgeClass);
-      warn();
-    }
+    this->FillEdgesOutput(segmentCells, edges, overlay);
   }
   self->UpdateProgress(overlay);
   if (this->Aborted())
@@ -1737,11 +1784,12 @@ int vtkOverlayStitchMesher::MeshRun::FillOutputs(bool interpolate)
   }
   if (self->GenerateOverlay)
   {
-    MakeTriangles(result.overlay, this->Map, this->Overlay, outputSteps(overlay, 1.0));
+    MakeTriangles(
+      this->Result.overlay, this->Map, this->Overlay, ProgressSteps(self, overlay, 1.0));
   }
   for (vtkPolyData* output : { this->Mesh, this->Edges, this->Overlay })
   {
-    PassFieldData(input->GetFieldData(), output);
+    PassFieldData(this->Input->GetFieldData(), output);
   }
   self->SetProgressText(nullptr);
   self->UpdateProgress(1.0);
