@@ -142,3 +142,58 @@ TEST(LongEdges, TheSplitPointIsSearchedFinelyEnoughForATightAngleBound)
     EXPECT_EQ(p.split(1.0, maxAngle).split, 1u) << maxAngle;
   }
 }
+
+TEST(LongEdges, NoNewTriangleIsFlatWhereTheSearchMeetsACorner)
+{
+  // c and d a quarter of |ab| above and below the midpoint of a-b: the
+  // search's first steps land exactly on them, where two fan triangles have
+  // no area (a mutation test: allowed there, d was taken, a second vertex on it).
+  Pair p(1.1);
+  p.points[2] = { 0.55, 0.275 };
+  p.points[3] = { 0.55, -0.275 };
+  EXPECT_EQ(p.split(1.0).split, 1u);
+  for (const Triangle& t : p.triangles)
+    EXPECT_GT(orient2d(p.points[t[0]], p.points[t[1]], p.points[t[2]]), 0);
+  for (int k = 0; k < 4; ++k)
+    EXPECT_NE(p.points.back(), p.points[k]);
+}
+
+TEST(LongEdges, WhatRemainsIsCountedInTheMeshAsLeft)
+{
+  // Twelve random points (a fuzz case) whose splits go on into the fourth
+  // and last pass: the count, the worst ratio and its place must be those of
+  // the mesh as left, not as the last pass found it (a mutation test: without
+  // the final scan, remaining was 5 and worst an edge already split).
+  Array<Point> points{ { 0.28913680080342807, 0.1250688484161914 },
+    { 0.49574918881220764, 0.15024463939389771 }, { 0.56269796725460508, 0.10272106645978708 },
+    { 0.19784425560464511, 0.38099418057140139 }, { 0.23963927326531345, 0.48311828149251312 },
+    { 0.31408787041582387, 0.4997381324730083 }, { 0.39162715967042688, 0.94070972532729147 },
+    { 0.55307869311773705, 0.8896070288816228 }, { 0.85781635922673227, 0.67711974602658298 },
+    { 0.97662333540188251, 0.60625703158588218 }, { 0.9635379332301286, 0.58189815412546919 },
+    { 0.71696131003677122, 0.040878518063870398 } };
+  Array<Triangle> triangles{ { 1, 0, 2 }, { 0, 1, 3 }, { 10, 2, 11 }, { 4, 5, 6 }, { 4, 3, 5 },
+    { 3, 1, 5 }, { 6, 5, 7 }, { 7, 5, 8 }, { 5, 1, 8 }, { 9, 8, 10 }, { 8, 1, 10 }, { 1, 2, 10 },
+    { 2, 0, 11 } };
+  Array<VertexOrigin> origin(points.size(), VertexOrigin::Overlay);
+  Array<int> regionId(triangles.size(), 0);
+  const double maxEdge = 0.43624650583114666;
+  Array<double> regionMaxEdge(1, maxEdge);
+  const LongEdges r = splitLongEdges(points, origin, triangles, regionId, {}, regionMaxEdge,
+    123.59861667517072, RunContext::silent());
+  EXPECT_EQ(r.split, 4u);
+  std::size_t remaining = 0;
+  double worst = 0;
+  for (const Triangle& t : triangles)
+  {
+    bool isLong = false;
+    for (int k = 0; k < 3; ++k)
+    {
+      const double l = std::sqrt(dist2(points[t[k]], points[t[(k + 1) % 3]]));
+      isLong = isLong || l > maxEdge;
+      worst = std::max(worst, l / maxEdge);
+    }
+    remaining += isLong ? 1 : 0;
+  }
+  EXPECT_EQ(r.remaining, remaining);
+  EXPECT_DOUBLE_EQ(r.worst, worst);
+}

@@ -560,3 +560,16 @@ TEST(Predicates, NonFiniteCoordinatesGiveNoSign)
   EXPECT_TRUE(std::isnan(osm::incircle({ inf, 0 }, { 1, 0 }, { 0, 1 }, { 0, 0 })));
   EXPECT_TRUE(std::isnan(osm::incircle({ 0, 0 }, { 1, 0 }, { 0, 1 }, { 0.5, -inf })));
 }
+
+TEST(Orient2d, SubnormalCoordinatesAreLiftedFirst)
+{
+  // Below 2^-1023 the factor to [1, 2) alone would be infinite: the exact
+  // arithmetic lifts such input by 2^600 first (a mutation test: without the
+  // lift every predicate gave NaN here).
+  const double d = std::numeric_limits<double>::denorm_min();
+  EXPECT_GT(osm::orient2d({ 0, 0 }, { 3 * d, 0 }, { 0, 5 * d }), 0);
+  EXPECT_LT(osm::orient2d({ 0, 0 }, { 0, 5 * d }, { 3 * d, 0 }), 0);
+  EXPECT_GT(osm::orient2dAccurate({ 0, 0 }, { 3 * d, 0 }, { 0, 5 * d }), 0);
+  EXPECT_GT(osm::incircle({ 0, 0 }, { 4 * d, 0 }, { 0, 4 * d }, { d, d }), 0);
+  EXPECT_LT(osm::incircle({ 0, 0 }, { 4 * d, 0 }, { 0, 4 * d }, { 5 * d, 5 * d }), 0);
+}

@@ -137,3 +137,29 @@ TEST(RegionPolygons, ATieKeepsTheFirstLoopWhicheverWayItRuns)
     EXPECT_EQ(of[0], 0);
   }
 }
+
+TEST(RegionPolygons, PollIsAskedEvery2To16LoopPoints)
+{
+  // 20,000 copies of one square: 80,000 loop points but few orientation
+  // tests, so only the poll by loop points can stop the work (a mutation
+  // test: without it poll was never asked).
+  Pslg pslg;
+  pslg.points = { { 0, 0 }, { 10, 0 }, { 10, 10 }, { 0, 10 } };
+  pslg.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 } };
+  Options o;
+  o.domain = Domain::Enclosed;
+  const Result result = mesh(pslg, o);
+  ASSERT_TRUE(result.ok) << result.error;
+  PolygonLoops loops;
+  const int square[] = { 0, 1, 2, 3 };
+  for (int k = 0; k < 20000; ++k)
+    loops.add(square, 4);
+  std::vector<int> of;
+  int polls = 0;
+  const auto count = [&](double) { return ++polls, false; };
+  ASSERT_TRUE(innermostPolygons(pslg, result, loops, of, count));
+  EXPECT_GE(polls, 1); // at loop 16,384 (the first to start at 2^16)
+  polls = 0;
+  EXPECT_FALSE(innermostPolygons(pslg, result, loops, of, [&](double) { return ++polls, true; }));
+  EXPECT_GE(polls, 1);
+}

@@ -316,3 +316,79 @@ TEST(Triangulation, AFanOnTheHullIsInCounterClockwiseOrderToo)
   for (int t : created)
     EXPECT_GT(orient2d(T.vertex(t, 0), T.vertex(t, 1), T.vertex(t, 2)), 0);
 }
+
+TEST(Triangulation, ACavityIsRefusedAtAVertexOfItsStart)
+{
+  // Two triangles over [-4, 4]^2 (squareOfSide8()). At (4, -4), a hull corner
+  // with a single triangle, insertion alone would not refuse the copy: it
+  // would replace that triangle by one around a second vertex there (a
+  // mutation test).
+  Triangulation T;
+  const int c0 = T.addPoint({ -4, -4 }), c1 = T.addPoint({ 4, -4 });
+  const int c2 = T.addPoint({ 4, 4 }), c3 = T.addPoint({ -4, 4 });
+  const int t0 = T.newTriangle(c0, c1, c2);
+  T.link(t0, T.newTriangle(c0, c2, c3));
+  Triangulation::Cavity cavity;
+  for (const Point& p : T.points)
+    EXPECT_FALSE(T.cavityOf(p, T.locate(p, t0), cavity)) << p.x << ", " << p.y;
+}
+
+TEST(Triangulation, AnOpenFanAfterALargeFanIsLinkedOnlyToItsOwnNeighbours)
+{
+  // Two fans of more than 16 triangles, linked through the per-vertex
+  // scratch: first a closed one around the centre of 20 points on a circle,
+  // one of them A; then an open one around O, on the hull edge AB of a half
+  // circle (touching the first only at A), whose last triangle ends at A. A
+  // scratch entry left over for A would link that triangle across the hull
+  // edge (A, O) (a mutation test).
+  const double pi = std::acos(-1.0);
+  Triangulation T;
+  const int A = T.addPoint({ -2, 0 }), B = T.addPoint({ 2, 0 });
+  const int n = 20; // half circle of radius 2 around O: A, B, Q1..Qn counter-clockwise
+  int q = T.addPoint({ 2 * std::cos(pi / (n + 1)), 2 * std::sin(pi / (n + 1)) });
+  const int half = T.newTriangle(A, B, q);
+  for (int k = 2, prev = half; k <= n; ++k)
+  {
+    const int next = T.addPoint({ 2 * std::cos(pi * k / (n + 1)), 2 * std::sin(pi * k / (n + 1)) });
+    const int t = T.newTriangle(A, q, next);
+    T.link(prev, t);
+    prev = t, q = next;
+  }
+  const int m = 20; // circle of radius 1 around (-3, 0), through A
+  int p = T.addPoint({ -3 + std::cos(2 * pi / m), std::sin(2 * pi / m) });
+  int circle = -1;
+  for (int k = 2, prev = -1; k < m; ++k)
+  {
+    const int next = T.addPoint({ -3 + std::cos(2 * pi * k / m), std::sin(2 * pi * k / m) });
+    const int t = T.newTriangle(A, p, next);
+    if (prev >= 0)
+      T.link(prev, t);
+    else
+      circle = t;
+    prev = t, p = next;
+  }
+  Triangulation::Cavity cavity;
+  Array<int> created;
+  const auto insert = [&](const Point& x, int from) {
+    const int start = T.locate(x, from);
+    ASSERT_GE(start, 0);
+    ASSERT_TRUE(T.cavityOf(x, start, cavity));
+    ASSERT_TRUE(T.insertIntoCavity(T.addPoint(x), cavity, created));
+  };
+  insert({ -3, 0 }, circle);
+  ASSERT_EQ(created.size(), std::size_t(m));
+  insert({ 0, 0 }, half);
+  ASSERT_EQ(created.size(), std::size_t(n + 1));
+  EXPECT_EQ(T.tri[created.front()].n[1], -1); // across (O, B): the hull
+  EXPECT_EQ(T.tri[created.back()].v[1], A);
+  EXPECT_EQ(T.tri[created.back()].n[0], -1); // across (A, O): the hull
+  // Every link is across a shared edge and returned.
+  for (int t = 0; t < T.slots(); ++t)
+    for (int i = 0; T.alive(t) && i < 3; ++i)
+      if (const int u = T.tri[t].n[i]; u >= 0)
+      {
+        EXPECT_GE(T.localIndex(u, T.tri[t].v[(i + 1) % 3]), 0) << "triangle " << t << " edge " << i;
+        EXPECT_GE(T.localIndex(u, T.tri[t].v[(i + 2) % 3]), 0) << "triangle " << t << " edge " << i;
+        EXPECT_TRUE(T.tri[u].n[0] == t || T.tri[u].n[1] == t || T.tri[u].n[2] == t);
+      }
+}
