@@ -122,64 +122,96 @@ void VertexTerms::add(int p, double w)
   weight[count++] = w;
 }
 
-bool visitInputWeights(const Pslg& input, const Result& result, const TermsVisitor& visit)
+namespace
 {
-  const RoundToNearest rounding;
-  const pages::Reuse reuse; // the scratch arrays in huge pages, freed ones used again
-  const Array<Point>& vertices = result.mesh.vertices;
-  const std::size_t n = vertices.size();
-  Array<int> inputPoint(n, -1);
+
+/// The terms of the mesh's vertices: input vertices and points on segments
+/// first, their own terms, kept as (input point or segment, position along
+/// it) for the others, which lie within the Delaunay triangle of those
+/// points that holds them.
+class InputWeights
+{
+public:
+  InputWeights(const Pslg& input, const Result& result);
+  bool visitKnown(const TermsVisitor& visit);
+  bool visitOthers(const TermsVisitor& visit) const;
+
+private:
+  Point scaled(const Point& p) const { return { p.x * scale, p.y * scale }; }
+  int segmentOf(std::size_t v) const;
+  int carried(int p) const;
+  void knownTerms(std::size_t k, VertexTerms& t) const;
+
+  const Pslg& input;
+  const Result& result;
+  Array<int> inputPoint; // per mesh vertex: the first input point there, or -1
+  double scale = 1;
+  Array<int> unknown;
+  Array<Point> knownPoints;
+  Array<int> knownSegment;  // per known point: its segment, or -1
+  Array<double> knownAlong; // its position along that segment, or its input point
+};
+
+InputWeights::InputWeights(const Pslg& input, const Result& result)
+  : input(input)
+  , result(result)
+  , inputPoint(result.mesh.vertices.size(), -1)
+  // Coordinates scaled by a power of two (exactly) to magnitudes about 1,
+  // so that no circumcircle test overflows, at 1e300 or 1e-300.
+  , scale(unitScale(input.points, result.mesh.vertices))
+{
   for (std::size_t i = 0; i < result.inputVertex.size(); ++i)
   {
     const int v = result.inputVertex[i];
     if (v >= 0 && inputPoint[v] < 0)
       inputPoint[v] = static_cast<int>(i);
   }
-  // Coordinates scaled by a power of two (exactly) to magnitudes about 1,
-  // so that no circumcircle test overflows, at 1e300 or 1e-300.
-  const double scale = unitScale(input.points, vertices);
-  auto scaled = [scale](const Point& p) { return Point{ p.x * scale, p.y * scale }; };
-  // The segment the mesher found a vertex on, if it is a segment of length.
-  const bool segmentsKnown = result.vertexSegment.size() == n;
-  auto segmentOf = [&](std::size_t v) {
-    const int s = segmentsKnown ? result.vertexSegment[v] : -1;
-    const int points = static_cast<int>(input.points.size());
-    if (s < 0 || s >= static_cast<int>(input.segments.size()))
-      return -1;
-    const Segment& e = input.segments[s];
-    return e[0] >= 0 && e[1] >= 0 && e[0] < points && e[1] < points &&
-        input.points[e[0]] != input.points[e[1]]
-      ? s
-      : -1;
-  };
+}
 
-  // Input vertices and points on segments: their own terms, visited at once
-  // and kept as (input point or segment, position along it) for the others.
-  Array<int> unknown;
-  Array<Point> knownPoints;
-  Array<int> knownSegment;  // per known point: its segment, or -1
-  Array<double> knownAlong; // its position along that segment, or its input point
-  // A segment's end merged into an earlier point (given twice, or within the
-  // merge tolerance) has that point's tuple at its vertex: the points along
-  // the segment take it too (a review: a field ran to the dropped copy's
-  // value, then jumped at the vertex), and are placed along the segment
-  // between the points kept (a merge within a tolerance moves its ends).
-  auto carried = [&](int p) {
-    const int v =
-      static_cast<std::size_t>(p) < result.inputVertex.size() ? result.inputVertex[p] : -1;
-    return v >= 0 && inputPoint[v] >= 0 ? inputPoint[v] : p;
-  };
-  auto knownTerms = [&](std::size_t k, VertexTerms& t) {
-    if (knownSegment[k] < 0)
-      t.add(static_cast<int>(knownAlong[k]), 1.0);
-    else
-    {
-      const Segment& e = input.segments[knownSegment[k]];
-      t.add(carried(e[0]), 1 - knownAlong[k]);
-      t.add(carried(e[1]), knownAlong[k]);
-    }
-  };
-  for (std::size_t v = 0; v < n; ++v)
+/// The segment the mesher found vertex v on, if it is a segment of length.
+int InputWeights::segmentOf(std::size_t v) const
+{
+  const bool segmentsKnown = result.vertexSegment.size() == result.mesh.vertices.size();
+  const int s = segmentsKnown ? result.vertexSegment[v] : -1;
+  const int points = static_cast<int>(input.points.size());
+  if (s < 0 || s >= static_cast<int>(input.segments.size()))
+    return -1;
+  const Segment& e = input.segments[s];
+  return e[0] >= 0 && e[1] >= 0 && e[0] < points && e[1] < points &&
+      input.points[e[0]] != input.points[e[1]]
+    ? s
+    : -1;
+}
+
+/// A segment's end merged into an earlier point (given twice, or within the
+/// merge tolerance) has that point's tuple at its vertex: the points along
+/// the segment take it too (a review: a field ran to the dropped copy's
+/// value, then jumped at the vertex), and are placed along the segment
+/// between the points kept (a merge within a tolerance moves its ends).
+int InputWeights::carried(int p) const
+{
+  const int v =
+    static_cast<std::size_t>(p) < result.inputVertex.size() ? result.inputVertex[p] : -1;
+  return v >= 0 && inputPoint[v] >= 0 ? inputPoint[v] : p;
+}
+
+void InputWeights::knownTerms(std::size_t k, VertexTerms& t) const
+{
+  if (knownSegment[k] < 0)
+    t.add(static_cast<int>(knownAlong[k]), 1.0);
+  else
+  {
+    const Segment& e = input.segments[knownSegment[k]];
+    t.add(carried(e[0]), 1 - knownAlong[k]);
+    t.add(carried(e[1]), knownAlong[k]);
+  }
+}
+
+/// Visits the input vertices and the points on segments; lists the others.
+bool InputWeights::visitKnown(const TermsVisitor& visit)
+{
+  const Array<Point>& vertices = result.mesh.vertices;
+  for (std::size_t v = 0; v < vertices.size(); ++v)
   {
     const Point p = scaled(vertices[v]);
     const int segment = inputPoint[v] >= 0 ? -1 : segmentOf(v);
@@ -202,10 +234,15 @@ bool visitInputWeights(const Pslg& input, const Result& result, const TermsVisit
     if (!visit(terms))
       return false;
   }
+  return true;
+}
+
+/// Visits the others: within the Delaunay triangle of the known points that
+/// holds them.
+bool InputWeights::visitOthers(const TermsVisitor& visit) const
+{
   if (unknown.empty())
     return true;
-
-  // The others: within the Delaunay triangle of the known points that holds them.
   Array<int> knownOf;
   Triangulation T;
   if (!knownPoints.empty())
@@ -227,25 +264,36 @@ bool visitInputWeights(const Pslg& input, const Result& result, const TermsVisit
   Array<Point> unknownPoints;
   unknownPoints.reserve(unknown.size());
   for (int v : unknown)
-    unknownPoints.push_back(scaled(vertices[v]));
+    unknownPoints.push_back(scaled(result.mesh.vertices[v]));
   int start = 0;
   while (start < T.slots() && !T.alive(start))
     ++start;
+  const auto terms = [this](std::size_t k, VertexTerms& t) { knownTerms(k, t); };
   for (int k : hilbertOrder(unknownPoints))
   {
-    VertexTerms terms;
-    terms.vertex = static_cast<std::size_t>(unknown[k]);
+    VertexTerms t;
+    t.vertex = static_cast<std::size_t>(unknown[k]);
     if (knownPoints.size() == 1) // no extent to pad: that point's value everywhere
-      knownTerms(0, terms);
+      knownTerms(0, t);
     else if (start < T.slots())
     {
       start = triangleHolding(T, unknownPoints[k], start);
-      termsIn(T, start, unknownPoints[k], knownOf, knownTerms, terms);
+      termsIn(T, start, unknownPoints[k], knownOf, terms, t);
     }
-    if (!visit(terms))
+    if (!visit(t))
       return false;
   }
   return true;
+}
+
+} // namespace
+
+bool visitInputWeights(const Pslg& input, const Result& result, const TermsVisitor& visit)
+{
+  const RoundToNearest rounding;
+  const pages::Reuse reuse; // the scratch arrays in huge pages, freed ones used again
+  InputWeights weights(input, result);
+  return weights.visitKnown(visit) && weights.visitOthers(visit);
 }
 
 } // namespace osm
