@@ -54,9 +54,10 @@ void AddHolePoints(const osm::PolyFile* file, vtkPolyData* output)
   output->GetFieldData()->AddArray(holes);
 }
 
-void FillOutput(const osm::PolyFile& file, vtkPolyData* output)
+/// The points, a vertex cell for each point on no segment (in point order),
+/// then a line cell per segment.
+void SetGeometry(const osm::Pslg& pslg, vtkPolyData* output)
 {
-  const osm::Pslg& pslg = file.pslg;
   const auto numberOfPoints = static_cast<vtkIdType>(pslg.points.size());
 
   vtkNew<vtkPoints> points;
@@ -94,7 +95,12 @@ void FillOutput(const osm::PolyFile& file, vtkPolyData* output)
   }
   output->SetVerts(verts);
   output->SetLines(lines);
+}
 
+/// PointMarker and the attributes, Attribute0, Attribute1, ...
+void AddPointArrays(const osm::PolyFile& file, vtkPolyData* output)
+{
+  const auto numberOfPoints = static_cast<vtkIdType>(file.pslg.points.size());
   // A file with segment markers but none on its vertices has vertex markers
   // 0 to Triangle, which then gives vertices their segments' markers.
   if (!file.pointMarkers.empty() || !file.segmentMarkers.empty())
@@ -115,7 +121,7 @@ void FillOutput(const osm::PolyFile& file, vtkPolyData* output)
   {
     numberOfAttributes = std::max(numberOfAttributes, a.size());
   }
-  if (file.pointAttributes.size() == pslg.points.size())
+  if (file.pointAttributes.size() == file.pslg.points.size())
   {
     for (std::size_t k = 0; k < numberOfAttributes; ++k)
     {
@@ -130,14 +136,17 @@ void FillOutput(const osm::PolyFile& file, vtkPolyData* output)
       output->GetPointData()->AddArray(attribute);
     }
   }
+}
 
+/// SegmentMarker, over every cell: the vertex cells (first) get marker 0.
+void AddSegmentMarkers(const osm::PolyFile& file, vtkPolyData* output)
+{
   if (!file.segmentMarkers.empty())
   {
-    // Cell data spans every cell: the vertex cells (first) get marker 0.
-    const vtkIdType numberOfVerts = verts->GetNumberOfCells();
+    const vtkIdType numberOfVerts = output->GetNumberOfVerts();
     vtkNew<vtkIntArray> markers;
     markers->SetName(OverlayStitchArrayNames::SegmentMarker);
-    markers->SetNumberOfTuples(numberOfVerts + lines->GetNumberOfCells());
+    markers->SetNumberOfTuples(numberOfVerts + output->GetNumberOfLines());
     for (vtkIdType c = 0; c < numberOfVerts; ++c)
     {
       markers->SetValue(c, 0);
@@ -148,7 +157,11 @@ void FillOutput(const osm::PolyFile& file, vtkPolyData* output)
     }
     output->GetCellData()->AddArray(markers);
   }
+}
 
+/// The holes, the file's first index and its regions, as field data.
+void AddFieldArrays(const osm::PolyFile& file, vtkPolyData* output)
+{
   AddHolePoints(&file, output);
 
   // The numbering the file used (0 or 1), so that tools can quote its numbers.
@@ -176,6 +189,14 @@ void FillOutput(const osm::PolyFile& file, vtkPolyData* output)
   {
     OverlayStitchAddSeedReference(output);
   }
+}
+
+void FillOutput(const osm::PolyFile& file, vtkPolyData* output)
+{
+  SetGeometry(file.pslg, output);
+  AddPointArrays(file, output);
+  AddSegmentMarkers(file, output);
+  AddFieldArrays(file, output);
 }
 
 } // namespace
