@@ -1312,6 +1312,13 @@ def group_realdata():
         check(s.get("MaxAngleDeg", 999) <= 170.0, n + ": no angle above 170 degrees",
               str(s.get("MaxAngleDeg")))
         validate(source, base + ".node", "--allow-missing", what=n + ": mesh valid")
+    # The adversarial review's case: a mesh made with a merge tolerance bends
+    # segments within it, which the validator allows when told.
+    img5 = os.path.join(ARGS.shared, "img5.poly")
+    if os.path.exists(img5):
+        mesh_ok(img5, "--merge-tolerance", "1e-3", "-o", out("img5-tol.node"))
+        validate(img5, out("img5-tol.node"), "--merge-tolerance", "1e-3",
+                 what="img5.poly with --merge-tolerance 1e-3: mesh valid within it")
 
 
 def on_segments(poly, a, b):
@@ -1401,6 +1408,19 @@ def group_matrix():
                    validate_extra=())
     matrix_row("near-duplicate-merged", near, "--merge-tolerance", "1e-6",
                stats={"DuplicatePointsMerged": 1}, warnings=["merged 1 duplicate point"])
+    # A point within the merge tolerance of a segment bends the segment
+    # through it: the validator told the tolerance accepts the bend, and
+    # refuses it when not told (an adversarial review: meshes made with a
+    # tolerance could not be validated).
+    bent = write("m-bent.poly", poly_text(square + [(5, 1e-4), (5, 5)], ring + [(4, 5)]))
+    matrix_row("point-bends-segment", bent, "--merge-tolerance", "1e-3",
+               warnings=["split segments 1 time(s)"],
+               validate_extra=("--merge-tolerance", "1e-3"))
+    p = subprocess.run([ARGS.helper, "validate", bent, out("matrix-point-bends-segment.node")],
+                       capture_output=True, text=True, timeout=600)
+    check(p.returncode != 0 and "segment 0 (input points 0, 1) is not a chain" in p.stdout,
+          "point-bends-segment: the validator without the tolerance refuses the bend",
+          p.stdout[-400:])
     matrix_row("zero-length", write("m-zero.poly", poly_text(square, ring + [(2, 2)])),
                stats={"ZeroLengthSegmentsDropped": 1}, warnings=["zero-length segment"],
                validate_extra=())

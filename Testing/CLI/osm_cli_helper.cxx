@@ -269,12 +269,46 @@ Mesh ReadMesh(const std::string& path)
   return mesh;
 }
 
+/// Per input point: the mesh vertex at its exact coordinates, or with a
+/// merge tolerance the nearest within it (a merge moves a point by up to
+/// that); -1 if none.
+std::vector<int> MatchInputPoints(const osm::Pslg& input, const Mesh& mesh, double tolerance)
+{
+  std::vector<std::pair<osm::Point, int>> byPoint;
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v)
+  {
+    byPoint.push_back({ mesh.vertices[v], static_cast<int>(v) });
+  }
+  std::sort(
+    byPoint.begin(), byPoint.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<int> vertexOf(input.points.size(), -1);
+  for (std::size_t i = 0; i < input.points.size(); ++i)
+  {
+    const osm::Point& p = input.points[i];
+    // By x, then y: the candidates within the tolerance lie from p.x - t on.
+    auto it = std::lower_bound(byPoint.begin(), byPoint.end(),
+      osm::Point{ p.x - tolerance, -std::numeric_limits<double>::infinity() },
+      [](const auto& a, const osm::Point& q) { return a.first < q; });
+    double best = tolerance * tolerance;
+    for (; it != byPoint.end() && it->first.x <= p.x + tolerance; ++it)
+    {
+      const double dx = it->first.x - p.x, dy = it->first.y - p.y;
+      if (dx * dx + dy * dy <= best && (vertexOf[i] < 0 || dx * dx + dy * dy < best))
+      {
+        best = dx * dx + dy * dy;
+        vertexOf[i] = it->second;
+      }
+    }
+  }
+  return vertexOf;
+}
+
 int Validate(int argc, char* argv[])
 {
   if (argc < 4)
   {
     Die("usage: validate INPUT MESH [--allow-missing] [--max-angle A] [--max-edge H] [--area A] "
-        "[--domain D]");
+        "[--domain D] [--merge-tolerance T]");
   }
   bool allowMissing = false;
   double expectedArea = -1.0;
@@ -298,6 +332,12 @@ int Validate(int argc, char* argv[])
     else if (arg == "--max-edge" && i + 1 < argc)
     {
       options.maxEdgeLength = std::atof(argv[++i]);
+    }
+    else if (arg == "--merge-tolerance" && i + 1 < argc)
+    {
+      // What the mesh was made with: points move and segments bend by up to it.
+      options.snapTolerance = options.chainOffset = std::atof(argv[++i]);
+      domain.snapTolerance = domain.chainOffset = options.snapTolerance;
     }
     else if (arg == "--area" && i + 1 < argc)
     {
@@ -329,7 +369,7 @@ int Validate(int argc, char* argv[])
       Die("unknown argument " + arg);
     }
   }
-  const osm::Pslg input = ReadInput(argv[2]);
+  osm::Pslg input = ReadInput(argv[2]);
   const Mesh mesh = ReadMesh(argv[3]);
   if (mesh.triangles.empty())
   {
@@ -337,28 +377,28 @@ int Validate(int argc, char* argv[])
     return 1;
   }
 
-  // Input points present in the mesh, found by their exact coordinates.
-  std::vector<std::pair<osm::Point, int>> byPoint;
-  for (std::size_t v = 0; v < mesh.vertices.size(); ++v)
-  {
-    byPoint.push_back({ mesh.vertices[v], static_cast<int>(v) });
-  }
-  std::sort(
-    byPoint.begin(), byPoint.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  // Input points present in the mesh, at the vertex found for each; moved
+  // there (a merge moves them), and each vertex listed once.
+  const std::vector<int> vertexOf = MatchInputPoints(input, mesh, options.snapTolerance);
   osm::Pslg present;
   std::vector<int> index(input.points.size(), -1);
+  std::vector<int> presentOf(mesh.vertices.size(), -1);
   for (std::size_t i = 0; i < input.points.size(); ++i)
   {
-    const osm::Point& p = input.points[i];
-    auto it = std::lower_bound(byPoint.begin(), byPoint.end(), p,
-      [](const auto& a, const osm::Point& q) { return a.first < q; });
-    if (it != byPoint.end() && it->first == p)
+    const int v = vertexOf[i];
+    if (v < 0)
     {
-      index[i] = static_cast<int>(present.points.size());
-      present.points.push_back(p);
+      continue;
     }
+    input.points[i] = mesh.vertices[v];
+    if (presentOf[v] < 0)
+    {
+      presentOf[v] = static_cast<int>(present.points.size());
+      present.points.push_back(mesh.vertices[v]);
+    }
+    index[i] = presentOf[v];
   }
-  const std::size_t missing = input.points.size() - present.points.size();
+  const auto missing = static_cast<std::size_t>(std::count(vertexOf.begin(), vertexOf.end(), -1));
   if (missing > 0 && !allowMissing)
   {
     std::cout << "FAIL: " << missing << " input point(s) are not mesh vertices\n";
@@ -366,7 +406,7 @@ int Validate(int argc, char* argv[])
   }
   for (const osm::Segment& s : input.segments)
   {
-    if (index[s[0]] >= 0 && index[s[1]] >= 0)
+    if (index[s[0]] >= 0 && index[s[1]] >= 0 && index[s[0]] != index[s[1]])
     {
       present.segments.push_back({ index[s[0]], index[s[1]] });
     }
@@ -375,7 +415,7 @@ int Validate(int argc, char* argv[])
   const osm::ValidationReport report =
     osm::validate(present, mesh.vertices, mesh.triangles, options);
   std::cout << (report.ok ? "ok" : "FAIL") << ": " << report.triangles << " triangles, "
-            << mesh.vertices.size() << " vertices, " << present.points.size() << " of "
+            << mesh.vertices.size() << " vertices, " << input.points.size() - missing << " of "
             << input.points.size() << " input points, " << present.segments.size()
             << " segments checked, angles " << report.minAngleDeg << " to " << report.maxAngleDeg
             << "\n";
