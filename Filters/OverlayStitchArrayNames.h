@@ -18,6 +18,17 @@ namespace OverlayStitchArrayNames
 constexpr const char* HolePoints = "HolePoints";
 constexpr const char* RegionAttributes = "RegionAttributes";
 constexpr const char* FileFirstIndex = "FileFirstIndex";
+// The seed arrays' shapes, by components: HolePoints (x, y) or (x, y, z);
+// RegionAttributes (x, y, attribute) or (x, y, attribute, maximum area).
+// Others are ignored with a warning.
+constexpr bool IsHolePointsShape(int components)
+{
+  return components == 2 || components == 3;
+}
+constexpr bool IsRegionAttributesShape(int components)
+{
+  return components == 3 || components == 4;
+}
 // The input's point and cell data: Triangle's vertex and segment markers.
 constexpr const char* PointMarker = "PointMarker";
 constexpr const char* SegmentMarker = "SegmentMarker";

@@ -320,7 +320,7 @@ bool CollectHolePoints(vtkFieldData* field, std::vector<HoleSeed>& seeds, std::s
 {
   vtkDataArray* holes = field ? field->GetArray(Names::HolePoints) : nullptr;
   const int components = holes ? holes->GetNumberOfComponents() : 3;
-  if (!holes || (components != 2 && components != 3))
+  if (!holes || !Names::IsHolePointsShape(components))
   {
     return !holes;
   }
@@ -351,7 +351,7 @@ bool CollectRegionSeeds(
 {
   vtkDataArray* regions = field ? field->GetArray(Names::RegionAttributes) : nullptr;
   const int components = regions ? regions->GetNumberOfComponents() : 4;
-  if (!regions || (components != 3 && components != 4))
+  if (!regions || !Names::IsRegionAttributesShape(components))
   {
     return !regions;
   }

@@ -276,11 +276,11 @@ vtkSmartPointer<vtkDataObject> OverlayStitchSeedsFollowingPoints(
   }
   vtkNew<vtkFieldData> moves;
   moves->ShallowCopy(field);
-  if (holes && (holes->GetNumberOfComponents() == 2 || holes->GetNumberOfComponents() == 3))
+  if (holes && OverlayStitchArrayNames::IsHolePointsShape(holes->GetNumberOfComponents()))
   {
     moves->AddArray(MappedHoles(holes, map));
   }
-  if (regions && (regions->GetNumberOfComponents() == 3 || regions->GetNumberOfComponents() == 4))
+  if (regions && OverlayStitchArrayNames::IsRegionAttributesShape(regions->GetNumberOfComponents()))
   {
     moves->AddArray(MappedRegions(regions, map));
   }

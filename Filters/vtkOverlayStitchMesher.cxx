@@ -597,7 +597,7 @@ std::string ReadRegionAttributes(vtkPolyData* input, const osm::PlaneMap& map, o
     return NotNumeric(input->GetFieldData(), Names::RegionAttributes);
   }
   const int components = regions->GetNumberOfComponents();
-  if (components != 3 && components != 4)
+  if (!Names::IsRegionAttributesShape(components))
   {
     return "The input's field data array RegionAttributes has " + std::to_string(components) +
       " components (4 expected: x, y, attribute, maximum area): ignored.";
@@ -1491,7 +1491,7 @@ std::optional<int> vtkOverlayStitchMesher::MeshRun::ReadHoleSeeds()
     return std::nullopt;
   }
   const int components = fieldHoles->GetNumberOfComponents();
-  if (components != 2 && components != 3)
+  if (!Names::IsHolePointsShape(components))
   {
     vtkWarningWithObjectMacro(
       self, << "The input's field data array HolePoints has " << components

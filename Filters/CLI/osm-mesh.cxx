@@ -1216,7 +1216,7 @@ void SeedsOf(vtkPointSet* input, bool useHoles, osm::NodeData& data)
   vtkDataObject* seeds = moved ? moved.GetPointer() : input;
   vtkFieldData* field = seeds ? seeds->GetFieldData() : nullptr;
   vtkDataArray* holes = field && useHoles ? field->GetArray(Names::HolePoints) : nullptr;
-  if (holes && (holes->GetNumberOfComponents() == 2 || holes->GetNumberOfComponents() == 3))
+  if (holes && Names::IsHolePointsShape(holes->GetNumberOfComponents()))
   {
     for (vtkIdType i = 0; i < holes->GetNumberOfTuples(); ++i)
     {
@@ -1225,7 +1225,7 @@ void SeedsOf(vtkPointSet* input, bool useHoles, osm::NodeData& data)
   }
   vtkDataArray* regions = field ? field->GetArray(Names::RegionAttributes) : nullptr;
   const int components = regions ? regions->GetNumberOfComponents() : 0;
-  if (components == 3 || components == 4)
+  if (Names::IsRegionAttributesShape(components))
   {
     for (vtkIdType i = 0; i < regions->GetNumberOfTuples(); ++i)
     {
